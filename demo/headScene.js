@@ -1,0 +1,59 @@
+// The demo's scene: the head, a shadow-casting spot light, soft ambient light, a camera framing the
+// face. Shared by the page, the figure renderer and the bench so they all show the same thing.
+import {
+  Color, HemisphereLight, PerspectiveCamera, Scene, SpotLight, Vector3,
+} from 'three';
+
+/** The scan is about 5 cm per world unit (REFERENCE §9): 8.55 units ≈ 43 cm across the shoulders. */
+export const HEAD_WORLD_UNIT_IN_MM = 50;
+
+/** Where the face is, in the scan's coordinates (Y up, facing +Z). */
+export const FACE_CENTRE = new Vector3(0, 0.6, 1.0);
+
+export function createHeadScene(headMesh) {
+  const scene = new Scene();
+  scene.background = new Color(0x101014);
+
+  headMesh.castShadow = true;
+  headMesh.receiveShadow = true;
+  scene.add(headMesh);
+
+  scene.add(new HemisphereLight(0xcfd8ff, 0x2a1f1a, 0.5));
+
+  // decay 0: irradiance = intensity · cos θ, so π gives a white Lambert surface radiance ≈ 1.
+  const light = new SpotLight(0xffffff, 2.6, 0, Math.PI / 7, 0.35, 0);
+  light.castShadow = true;
+  light.shadow.mapSize.set(1024, 1024);
+  light.shadow.camera.near = 5;
+  light.shadow.camera.far = 40;
+  light.shadow.bias = -0.0005;
+  light.shadow.normalBias = 0.02;
+  light.target.position.copy(FACE_CENTRE);
+  scene.add(light, light.target);
+
+  const camera = new PerspectiveCamera(25, 16 / 9, 1, 100);
+  camera.position.set(0, 0.8, 21);
+
+  const rig = { scene, camera, light, head: headMesh };
+  setLightDirection(rig, 30, 25);
+  return rig;
+}
+
+/**
+ * Places the light on a sphere around the face.
+ * @param {number} azimuthDeg around the vertical axis; 0 = camera side (+Z), 180 = behind the head
+ * @param {number} elevationDeg above the horizontal plane
+ * @param {number} [distance=18] world units from the face centre
+ */
+export function setLightDirection({ light }, azimuthDeg, elevationDeg, distance = 18) {
+  const az = (azimuthDeg * Math.PI) / 180;
+  const el = (elevationDeg * Math.PI) / 180;
+  light.position.set(
+    FACE_CENTRE.x + distance * Math.cos(el) * Math.sin(az),
+    FACE_CENTRE.y + distance * Math.sin(el),
+    FACE_CENTRE.z + distance * Math.cos(el) * Math.cos(az),
+  );
+  light.target.position.copy(FACE_CENTRE);
+  light.updateMatrixWorld();
+  light.target.updateMatrixWorld();
+}

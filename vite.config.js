@@ -1,0 +1,45 @@
+// One config, two builds:
+//   `vite build --mode lib`  → dist/three-separable-sss.js, the ES module users import (GLSL inlined,
+//                              three and gl-matrix left as imports)
+//   `vite build`             → dist/demo/, the static demo page
+//   `vite` (npm start)       → the demo and the test pages on a dev server
+import { defineConfig } from 'vite';
+import { fileURLToPath } from 'node:url';
+
+const root = fileURLToPath(new URL('.', import.meta.url));
+
+export default defineConfig(({ mode }) => {
+  if (mode === 'lib') {
+    return {
+      root,
+      publicDir: false,
+      build: {
+        outDir: 'dist',
+        emptyOutDir: true,
+        sourcemap: true,
+        minify: false,
+        lib: {
+          entry: 'src/index.js',
+          formats: ['es'],
+          fileName: () => 'three-separable-sss.js',
+        },
+        rollupOptions: {
+          external: [/^three(\/.*)?$/, /^gl-matrix(\/.*)?$/],
+        },
+      },
+    };
+  }
+  return {
+    root,
+    base: './',
+    publicDir: 'public',
+    build: {
+      outDir: 'dist/demo',
+      emptyOutDir: true,
+      sourcemap: true,
+    },
+    server: {
+      host: '127.0.0.1',
+    },
+  };
+});
