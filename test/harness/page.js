@@ -43,25 +43,42 @@ export async function openPage(path, { width = 320, height = 180, readyExpr = 'w
 }
 
 /**
- * Runs `fn(...args)` in the page; it must return a Float32Array (or an object whose `data` is one).
- * The bytes travel as base64 so NaN and Infinity survive (JSON would turn them into null).
- * @returns {Promise<Float32Array | object>}
+ * Runs `fn(...args)` in the page and returns its result, with every Float32Array in it (at any
+ * depth of plain objects) carried as base64 bytes so NaN and Infinity survive (JSON would turn
+ * them into null).
+ * @param {import('puppeteer').Page} page
+ * @param {Function} fn runs in the page: it cannot see this file's variables
  */
-export async function readFloats(page, fn, ...args) {
+export async function evaluateFloats(page, fn, ...args) {
   const packed = await page.evaluate(async (source, argList) => {
     // eslint-disable-next-line no-new-func
     const f = new Function(`return (${source})`)();
-    const result = await f(...argList);
-    const encode = (array) => {
-      const bytes = new Uint8Array(array.buffer, array.byteOffset, array.byteLength);
-      let binary = '';
-      for (let i = 0; i < bytes.length; i += 0x8000) binary += String.fromCharCode(...bytes.subarray(i, i + 0x8000));
-      return btoa(binary);
+    const encode = (value) => {
+      if (value instanceof Float32Array) {
+        const bytes = new Uint8Array(value.buffer, value.byteOffset, value.byteLength);
+        let binary = '';
+        for (let i = 0; i < bytes.length; i += 0x8000) binary += String.fromCharCode(...bytes.subarray(i, i + 0x8000));
+        return { __float32: btoa(binary) };
+      }
+      if (Array.isArray(value)) return value.map(encode);
+      if (value && typeof value === 'object') return Object.fromEntries(Object.entries(value).map(([k, v]) => [k, encode(v)]));
+      return value;
     };
-    if (result instanceof Float32Array) return { data: encode(result) };
-    return { ...result, data: encode(result.data) };
+    return encode(await f(...argList));
   }, fn.toString(), args);
-  const bytes = Buffer.from(packed.data, 'base64');
-  const data = new Float32Array(bytes.buffer, bytes.byteOffset, bytes.byteLength / 4);
-  return packed.data && Object.keys(packed).length === 1 ? data : { ...packed, data };
+  const decode = (value) => {
+    if (value && typeof value === 'object' && typeof value.__float32 === 'string') {
+      const bytes = Buffer.from(value.__float32, 'base64');
+      return new Float32Array(bytes.buffer.slice(bytes.byteOffset, bytes.byteOffset + bytes.byteLength));
+    }
+    if (Array.isArray(value)) return value.map(decode);
+    if (value && typeof value === 'object') return Object.fromEntries(Object.entries(value).map(([k, v]) => [k, decode(v)]));
+    return value;
+  };
+  return decode(packed);
+}
+
+/** Runs `lab.run(options)` in a page opened on test/pages/lab.html (see lab.js for the options). */
+export function runLab(page, options) {
+  return evaluateFloats(page, (o) => window.lab.run(o), options);
 }

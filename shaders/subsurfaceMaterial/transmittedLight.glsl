@@ -1,0 +1,22 @@
+	// Light arriving through the object from behind (Jimenez et al. 2010), added to the direct
+	// diffuse light before the blur. Three's own attenuation functions keep it consistent with the
+	// light's front-side contribution; the shadow does not apply (the light went through).
+	#ifdef SSS_TRANSMITTANCE
+	{
+		vec3 sssPosition = - vViewPosition;
+		#if SSS_LIGHT_TYPE == 0 // directional
+			vec3 sssToLight = sssLightDirectionView;
+			float sssAttenuation = 1.0;
+		#else // spot
+			vec3 sssLightVector = sssLightPositionView - sssPosition;
+			float sssLightDistance = length( sssLightVector );
+			vec3 sssToLight = sssLightVector / sssLightDistance;
+			float sssAttenuation = getSpotAttenuation( sssSpotConeCos, sssSpotPenumbraCos, dot( sssToLight, sssLightDirectionView ) )
+				* getDistanceAttenuation( sssLightDistance, sssLightCutoffDistance, sssLightDecay );
+		#endif
+		// Wrap lighting on the back side: saturate(0.3 + dot(-N, L)) (REFERENCE §5).
+		float sssWrap = saturate( 0.3 + dot( - nonPerturbedNormal, sssToLight ) );
+		reflectedLight.directDiffuse += sssLightColor * ( sssAttenuation * sssWrap )
+			* sssTransmittance( sssPosition, nonPerturbedNormal ) * BRDF_Lambert( material.diffuseColor );
+	}
+	#endif

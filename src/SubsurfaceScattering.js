@@ -1,0 +1,223 @@
+// The orchestrator: owns the stages and wires them into an EffectComposer, so a user writes
+//   const sss = new SubsurfaceScattering({ scene, camera, light, worldUnitInMm: 50 });
+//   sss.makeSubsurface(skinMaterial);
+//   sss.addTo(composer);            // instead of a RenderPass
+//   composer.addPass(new OutputPass());
+// Pipeline: light depth (stage 1) → scene split (2) → horizontal blur → vertical blur (3) → compose (4).
+import { HalfFloatType, Vector3 } from 'three';
+import { computeKernel, kernelRadiusMm } from './kernel.js';
+import { getProfile } from './profiles.js';
+import { checkNumber, checkOneOf } from './parameterChecks.js';
+import { describe } from './rendererSupport.js';
+import { LightDepthTarget } from './LightDepthTarget.js';
+import { ProfileLookup } from './ProfileLookup.js';
+import { makeSubsurface as hookMaterial, getSubsurface } from './subsurfaceMaterial.js';
+import { SubsurfaceScenePass } from './SubsurfaceScenePass.js';
+import { SubsurfaceBlurPass } from './SubsurfaceBlurPass.js';
+import { SubsurfaceComposePass } from './SubsurfaceComposePass.js';
+
+const _corner = new Vector3();
+
+/** How the blur weighs its taps (see the constructor). */
+export const METHODS = ['footprint', 'marginal', 'reference'];
+
+/** Below half a pixel a kernel cannot move light into another pixel (issue: "no work"). */
+export const MIN_KERNEL_PIXELS = 0.5;
+
+export class SubsurfaceScattering {
+  /**
+   * @param {object} options
+   * @param {import('three').Scene} options.scene
+   * @param {import('three').Camera} options.camera
+   * @param {import('three').SpotLight|import('three').DirectionalLight|null} [options.light=null]
+   *   the light shining through thin parts (transmittance); null: no transmittance
+   * @param {number} [options.worldUnitInMm=1000] millimetres per world unit (three.js: metres)
+   * @param {string|object} [options.profile='skin'] 'skin', 'skinBurley', 'marble', 'milk' or a profile
+   * @param {'footprint'|'marginal'|'reference'} [options.method='footprint'] how the blur weighs its taps:
+   *   'footprint' snaps the marginal kernel's footprints to pixels and weighs them exactly, per pixel;
+   *   'marginal' and 'reference' use computeKernel's fixed taps
+   * @param {number} [options.samples=17] taps per direction (a budget for 'footprint'), odd, 3..63
+   * @param {number[]} [options.strength] RGB, 0..1: mix with no scattering (reference model)
+   * @param {number[]} [options.falloff] RGB, (0, 10]: reference method only
+   * @param {'drop'|'lerp'|'off'} [options.followSurface='drop']
+   * @param {number} [options.depthThresholdMm=6] depth step (mm) treated as another surface
+   * @param {number} [options.lightDepthSize=1024] light depth map resolution, pixels
+   * @param {number} [options.type=HalfFloatType] HalfFloatType or FloatType light targets
+   */
+  constructor({
+    scene, camera, light = null, worldUnitInMm = 1000, profile = 'skin', method = 'footprint', samples = 17,
+    strength, falloff, followSurface = 'drop', depthThresholdMm = 6, lightDepthSize = 1024, type = HalfFloatType,
+  } = {}) {
+    if (!scene || scene.isScene !== true) throw new TypeError(`SubsurfaceScattering: scene must be a THREE.Scene, got ${describe(scene)}`);
+    if (!camera || camera.isCamera !== true) throw new TypeError(`SubsurfaceScattering: camera must be a THREE.Camera, got ${describe(camera)}`);
+    if (light !== null && !(light?.isSpotLight || light?.isDirectionalLight)) {
+      throw new TypeError(`SubsurfaceScattering: light must be a THREE.SpotLight, THREE.DirectionalLight or null, got ${describe(light)}`);
+    }
+    checkNumber('worldUnitInMm', worldUnitInMm, { min: 0, minExclusive: true, max: 1e9, unit: 'mm' });
+    checkNumber('depthThresholdMm', depthThresholdMm, { min: 0, minExclusive: true, max: 1e6, unit: 'mm' });
+    checkOneOf('followSurface', followSurface, ['drop', 'lerp', 'off']);
+    checkOneOf('method', method, METHODS);
+
+    this.scene = scene;
+    this.camera = camera;
+    this.worldUnitInMm = worldUnitInMm;
+    this.enabled = true;
+    this.method = method;
+    this._kernelOptions = { profile: getProfile(profile), samples, strength, falloff };
+    this.kernel = computeKernel(this._kernelArguments());
+    this.profileLookup = new ProfileLookup(this._kernelOptions.profile);
+    this.lightDepth = light ? new LightDepthTarget(light, { size: lightDepthSize }) : null;
+
+    this.scenePass = new SubsurfaceScenePass(scene, camera, { type, lightDepth: this.lightDepth });
+    const common = {
+      kernel: this.kernel,
+      mode: method === 'footprint' ? 'footprint' : 'taps',
+      profileLookup: this.profileLookup,
+      camera,
+      surfaceTexture: this.scenePass.surfaceTexture,
+      followSurface,
+      depthThresholdWorld: depthThresholdMm / worldUnitInMm,
+    };
+    this.horizontalPass = new SubsurfaceBlurPass({ ...common, direction: 'horizontal', diffuseTexture: this.scenePass.diffuseTexture });
+    this.verticalPass = new SubsurfaceBlurPass({ ...common, direction: 'vertical' });
+    this.composePass = new SubsurfaceComposePass({
+      lightTexture: this.scenePass.lightTexture,
+      surfaceTexture: this.scenePass.surfaceTexture,
+    });
+    this.depthThresholdMm = depthThresholdMm;
+    this.followSurface = followSurface;
+    /** Largest on-screen kernel radius estimated for the last frame, pixels. */
+    this.kernelPixels = 0;
+
+    // The scene pass runs first each frame: decide there whether the blur has any work to do.
+    const render = this.scenePass.render.bind(this.scenePass);
+    this.scenePass.render = (renderer, writeBuffer, readBuffer, deltaTime, maskActive) => {
+      render(renderer, writeBuffer, readBuffer, deltaTime, maskActive);
+      this._updateBlurWork();
+    };
+  }
+
+  /** The passes in composer order. */
+  get passes() {
+    return [this.scenePass, this.horizontalPass, this.verticalPass, this.composePass];
+  }
+
+  /**
+   * Adds the scene pass, both blurs and the compose pass to `composer` (in place of a RenderPass).
+   * @param {import('three/addons/postprocessing/EffectComposer.js').EffectComposer} composer
+   */
+  addTo(composer) {
+    if (!composer || typeof composer.addPass !== 'function') {
+      throw new TypeError(`SubsurfaceScattering.addTo: composer must be an EffectComposer, got ${describe(composer)}`);
+    }
+    for (const pass of this.passes) composer.addPass(pass);
+    return this;
+  }
+
+  /**
+   * Makes `material` scatter with this pipeline's profile, scale and light (see makeSubsurface).
+   * @param {import('three').MeshStandardMaterial} material
+   * @param {{ widthMm?: number, strength?: number, transmittance?: boolean, translucency?: number, shrinkMm?: number }} [options]
+   */
+  makeSubsurface(material, { widthMm = 1, strength = 1, transmittance = true, translucency = 0, shrinkMm = 0.6 } = {}) {
+    return hookMaterial(material, {
+      widthMm,
+      strength,
+      worldUnitInMm: this.worldUnitInMm,
+      transmittance: transmittance && this.lightDepth
+        ? { lightDepth: this.lightDepth, lookup: this.profileLookup, translucency, shrinkMm }
+        : null,
+    });
+  }
+
+  /** computeKernel's arguments for this pipeline's method ('footprint' builds on the marginal kernel). */
+  _kernelArguments(options = this._kernelOptions, method = this.method) {
+    return { ...options, method: method === 'reference' ? 'reference' : 'marginal' };
+  }
+
+  /**
+   * Rebuilds the kernel (and the profile tables when the profile changes). Changing the method
+   * between 'footprint' and the fixed-tap ones recompiles the blur shaders once.
+   * @param {{ profile?: string|object, method?: string, samples?: number, strength?: number[], falloff?: number[] }} options
+   */
+  setKernel({ method = this.method, ...options }) {
+    checkOneOf('method', method, METHODS);
+    const next = { ...this._kernelOptions, ...options };
+    if (options.profile !== undefined) next.profile = getProfile(options.profile);
+    const kernel = computeKernel(this._kernelArguments(next, method));
+    this._kernelOptions = next;
+    this.method = method;
+    this.kernel = kernel;
+    for (const pass of [this.horizontalPass, this.verticalPass]) {
+      pass.setMode(method === 'footprint' ? 'footprint' : 'taps');
+      pass.setKernel(kernel);
+    }
+    if (options.profile !== undefined) this.profileLookup.setProfile(next.profile);
+  }
+
+  /**
+   * @param {'drop'|'lerp'|'off'} mode
+   * @param {number} [depthThresholdMm]
+   */
+  setFollowSurface(mode, depthThresholdMm = this.depthThresholdMm) {
+    checkNumber('depthThresholdMm', depthThresholdMm, { min: 0, minExclusive: true, max: 1e6, unit: 'mm' });
+    for (const pass of [this.horizontalPass, this.verticalPass]) pass.setFollowSurface(mode, depthThresholdMm / this.worldUnitInMm);
+    this.followSurface = mode;
+    this.depthThresholdMm = depthThresholdMm;
+  }
+
+  /**
+   * Estimates the largest on-screen kernel radius (pixels) over the visible subsurface meshes, at
+   * the nearest corner of their bounding boxes (an upper bound); skips both blurs when it is under
+   * half a pixel.
+   */
+  _updateBlurWork() {
+    const camera = this.camera;
+    const size = this.scenePass.renderTarget;
+    const p = camera.projectionMatrix.elements;
+    const pixelsPerWorldAtUnitDepth = Math.max(p[0] * size.width, p[5] * size.height) / 2;
+    const radiusMm = kernelRadiusMm(this.kernel);
+    const perspective = camera.isPerspectiveCamera === true || p[15] === 0;
+    let pixels = 0;
+    for (const mesh of this.scenePass.subsurfaceMeshes) {
+      const geometry = mesh.geometry;
+      if (!geometry.boundingBox) geometry.computeBoundingBox();
+      let nearest = Infinity;
+      for (let corner = 0; corner < 8; corner++) {
+        const { min, max } = geometry.boundingBox;
+        _corner.set(corner & 1 ? max.x : min.x, corner & 2 ? max.y : min.y, corner & 4 ? max.z : min.z);
+        _corner.applyMatrix4(mesh.matrixWorld).applyMatrix4(camera.matrixWorldInverse);
+        nearest = Math.min(nearest, -_corner.z);
+      }
+      nearest = perspective ? Math.max(nearest, camera.near ?? 1e-6) : 1;
+      for (const m of Array.isArray(mesh.material) ? mesh.material : [mesh.material]) {
+        if (this.scenePass.categoryOf(m) !== 'subsurface') continue;
+        pixels = Math.max(pixels, (radiusMm * this._widthWorld(m) * pixelsPerWorldAtUnitDepth) / nearest);
+      }
+    }
+    this.kernelPixels = pixels;
+    const blur = this.enabled && pixels >= MIN_KERNEL_PIXELS;
+    this.horizontalPass.enabled = blur;
+    this.verticalPass.enabled = blur;
+    // Without the blurs, compose the unblurred diffuse light straight from the scene pass.
+    this.composePass.scatteredTexture = blur ? null : this.scenePass.diffuseTexture;
+  }
+
+  /** World units per kernel millimetre that `material` writes (width × strength). */
+  _widthWorld(material) {
+    const { sssWidthWorld, sssStrength } = getSubsurface(material).uniforms;
+    return sssWidthWorld.value * sssStrength.value;
+  }
+
+  /** @param {number} width device pixels @param {number} height device pixels */
+  setSize(width, height) {
+    for (const pass of this.passes) pass.setSize(width, height);
+  }
+
+  /** Frees every target, material, texture and quad the pipeline created. */
+  dispose() {
+    for (const pass of this.passes) pass.dispose();
+    this.lightDepth?.dispose();
+    this.profileLookup.dispose();
+  }
+}

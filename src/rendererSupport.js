@@ -1,0 +1,29 @@
+// What every GPU stage needs from the renderer, checked once with a message that says what is
+// missing: WebGL2 (multiple render targets, texelFetch) and renderable float/half-float colour
+// targets (light is HDR: 8-bit targets would clamp and band it).
+
+/**
+ * @param {import('three').WebGLRenderer} renderer
+ * @param {string} who the class or function asking, for the message
+ * @throws {TypeError} when `renderer` is not a WebGLRenderer
+ * @throws {Error} on WebGL1 or without EXT_color_buffer_float
+ */
+export function assertFloatRenderTargets(renderer, who) {
+  if (!renderer || renderer.isWebGLRenderer !== true || typeof renderer.getContext !== 'function') {
+    throw new TypeError(`${who}: renderer must be a THREE.WebGLRenderer, got ${describe(renderer)}`);
+  }
+  if (renderer.capabilities.isWebGL2 === false) {
+    throw new Error(`${who}: needs a WebGL2 context (multiple render targets); this renderer is WebGL1`);
+  }
+  if (!renderer.extensions.has('EXT_color_buffer_float')) {
+    throw new Error(`${who}: needs renderable float render targets (EXT_color_buffer_float), which this device lacks`);
+  }
+}
+
+/** A short description of a value for error messages. */
+export function describe(value) {
+  if (value === null) return 'null';
+  if (value === undefined) return 'undefined';
+  if (typeof value === 'object') return value.constructor?.name ?? 'object';
+  return `${typeof value} ${String(value)}`;
+}

@@ -1,0 +1,461 @@
+/**
+ * Float64 CPU oracle of the screen-space blur, independent of the GPU path.
+ *
+ * Image conventions (shared with the GPU tests):
+ * - images are row-major, rows bottom-up like GL: pixel (i, j), i = column, j = row, j = 0 is the bottom
+ *   row, index j·width + i; colours are 3 floats per pixel;
+ * - pixel (i, j) covers [i, i+1) × [j, j+1) in pixel coordinates, its centre is (i + 0.5, j + 0.5);
+ * - `depth` is the linear view depth (world units, > 0 on surfaces), `widthWorld` the world length of one
+ *   kernel millimetre at that pixel (0 = not a subsurface pixel);
+ * - `projectionScale` = [P0, P5], the projection matrix's x and y scales (three.js elements[0], [5]).
+ *
+ * SAMPLING MODEL of `separableBlurOracle` (the GPU shader implements the same; REFERENCE §4 with the
+ * aspect bug fixed and the mask and depth rules made explicit). One pass along axis a (horizontal: a = (1, 0),
+ * P = P0, resolution = width; vertical: a = (0, 1), P = P5, resolution = height); horizontal pass first,
+ * its output stored through `storeIntermediate` (e.g. half-float rounding), then the vertical pass on it:
+ *  1. centre pixel (i, j), p = (i + 0.5, j + 0.5); if widthWorld_c = 0 the output is the input.
+ *  2. stepPx = widthWorld_c · P / (2 · depth_c) · resolution: pixels per kernel-mm along a (a world length L
+ *     at view depth z spans L·P/z in NDC, which spans 2 over `resolution` pixels).
+ *  3. pixel skip: if stepPx · max_k |offset_k| < 0.5 the output is the centre colour (kernel below a pixel).
+ *  4. tap k ≥ 1 at p_k = p + a · offset_k · stepPx. Dropped if p_k lies outside [0, width) × [0, height).
+ *     It lies between texels along a (centres at integer + 0.5, clamp-to-edge). Each texel t counts with
+ *     keep_t = its bilinear weight b_t, times 0 off the mask (widthWorld_t = 0), times the follow-surface
+ *     factor below; the tap colour is Σ keep_t·colour_t / Σ keep_t and its kernel weight is scaled by
+ *     Σ keep_t (dropped when that is 0): no colour crosses the mask or a depth edge through filtering.
+ *  5. follow-surface per texel, dz = |depth_t − depth_c|, f = clamp(dz / depthThresholdWorld, 0, 1):
+ *     'drop': keep_t · (1 − f);  'lerp': colour_t = mix(colour_t, colour_c, f);  'off': none.
+ *  6. output = Σ weight · colour / Σ weight, per channel, the centre tap (w_0, colour_c) included.
+ *
+ * The older 'bilinear' tap filter (`tapFilter: 'bilinear'`) took a tap's mask and depth from the texel
+ * containing it but its colour from plain bilinear filtering, so a tap within half a texel of a depth edge
+ * blended up to half of the far side's colour (measured: 7 % of the far colour at a 17-tap skin depth edge,
+ * stepPx 1.5, 'drop'); it is kept to measure that leak, and the GPU does not use it.
+ *
+ * `denseConvolutionOracle` is the ground truth the separable blur approximates: the full 2D convolution of
+ * the piecewise-constant image (each pixel a constant square) with the radial profile, evaluated at
+ * pixel centres, with the same mask and depth rules.
+ * @module test/oracle/convolution
+ */
+
+import { vec2, vec3 } from 'gl-matrix';
+import { normalIntervalProbability, integrateAdaptive, getProfile } from '../../src/profiles.js';
+import { kernelRadiusMm } from '../../src/kernel.js';
+
+const FOLLOW_SURFACE_MODES = ['drop', 'lerp', 'off'];
+
+const newVec2 = () => new Float64Array(2); // gl-matrix's create() would give float32 storage
+const newVec3 = () => new Float64Array(3);
+
+function checkImageArgs({ width, height, diffuse, depth, widthWorld, projectionScale, followSurface, depthThresholdWorld }) {
+  if (!Number.isInteger(width) || !Number.isInteger(height) || width < 1 || height < 1) {
+    throw new RangeError(`width and height must be positive integers, got ${width} × ${height}`);
+  }
+  const n = width * height;
+  if (!diffuse || diffuse.length !== 3 * n) throw new RangeError(`diffuse must hold width·height·3 = ${3 * n} values`);
+  if (!depth || depth.length !== n) throw new RangeError(`depth must hold width·height = ${n} values`);
+  if (!widthWorld || widthWorld.length !== n) throw new RangeError(`widthWorld must hold width·height = ${n} values`);
+  if (!projectionScale || projectionScale.length !== 2) throw new TypeError('projectionScale must be [P0, P5]');
+  if (!FOLLOW_SURFACE_MODES.includes(followSurface)) {
+    throw new RangeError(`followSurface must be one of 'drop', 'lerp', 'off', got ${followSurface}`);
+  }
+  if (followSurface !== 'off' && !(depthThresholdWorld > 0)) {
+    throw new RangeError(`depthThresholdWorld must be > 0 with followSurface '${followSurface}', got ${depthThresholdWorld}`);
+  }
+}
+
+/**
+ * Bilinear sample of an RGB image at pixel coordinates (x, y): texel centres at integer + 0.5,
+ * clamp-to-edge addressing (what GL's LINEAR filter with CLAMP_TO_EDGE does).
+ * @param {Float64Array|Float32Array} image width·height·3, rows bottom-up
+ * @param {number} width
+ * @param {number} height
+ * @param {number} x
+ * @param {number} y
+ * @param {Float64Array} [out]
+ * @returns {Float64Array} [r, g, b]
+ */
+export function sampleBilinear(image, width, height, x, y, out = newVec3()) {
+  const u = x - 0.5;
+  const v = y - 0.5;
+  const i0 = Math.floor(u);
+  const j0 = Math.floor(v);
+  const fx = u - i0;
+  const fy = v - j0;
+  const ia = Math.min(Math.max(i0, 0), width - 1);
+  const ib = Math.min(Math.max(i0 + 1, 0), width - 1);
+  const ja = Math.min(Math.max(j0, 0), height - 1);
+  const jb = Math.min(Math.max(j0 + 1, 0), height - 1);
+  for (let c = 0; c < 3; c++) {
+    const bottom = image[(ja * width + ia) * 3 + c] * (1 - fx) + image[(ja * width + ib) * 3 + c] * fx;
+    const top = image[(jb * width + ia) * 3 + c] * (1 - fx) + image[(jb * width + ib) * 3 + c] * fx;
+    out[c] = bottom * (1 - fy) + top * fy;
+  }
+  return out;
+}
+
+/**
+ * The 'bilinearPerTexel' tap: the mask and depth rules applied to each texel of the bilinear footprint.
+ * Writes the tap colour into `out` and returns the kept fraction Σ_t b_t·keep_t (0: tap dropped).
+ * @returns {number}
+ */
+function perTexelTap({ width, height, depth, widthWorld, followSurface, depthThresholdWorld }, src, x, y, zc, centre, out) {
+  const u = x - 0.5;
+  const v = y - 0.5;
+  const i0 = Math.floor(u);
+  const j0 = Math.floor(v);
+  const fx = u - i0;
+  const fy = v - j0;
+  let kept = 0;
+  vec3.set(out, 0, 0, 0);
+  const texel = newVec3();
+  for (const [di, dj, b] of [
+    [0, 0, (1 - fx) * (1 - fy)],
+    [1, 0, fx * (1 - fy)],
+    [0, 1, (1 - fx) * fy],
+    [1, 1, fx * fy],
+  ]) {
+    if (b === 0) continue;
+    const ii = Math.min(Math.max(i0 + di, 0), width - 1);
+    const jj = Math.min(Math.max(j0 + dj, 0), height - 1);
+    const t = jj * width + ii;
+    if (widthWorld[t] === 0) continue;
+    vec3.set(texel, src[3 * t], src[3 * t + 1], src[3 * t + 2]);
+    let keep = b;
+    if (followSurface !== 'off') {
+      const f = Math.min(Math.max(Math.abs(depth[t] - zc) / depthThresholdWorld, 0), 1);
+      if (followSurface === 'drop') keep *= 1 - f;
+      else vec3.lerp(texel, texel, centre, f);
+    }
+    vec3.scaleAndAdd(out, out, texel, keep);
+    kept += keep;
+  }
+  if (kept > 0) vec3.scale(out, out, 1 / kept);
+  return kept;
+}
+
+/**
+ * One 1D pass of the sampling model (see the module header).
+ * @returns {Float64Array}
+ */
+function blurPass(args, src, axisIndex) {
+  const { width, height, depth, widthWorld, kernel, projectionScale, followSurface, depthThresholdWorld, tapFilter, footprint } = args;
+  const taps = kernel.length / 4;
+  const maxOffsetMm = kernelRadiusMm(kernel);
+  const P = projectionScale[axisIndex];
+  const resolution = axisIndex === 0 ? width : height;
+  const axis = axisIndex === 0 ? vec2.fromValues(1, 0) : vec2.fromValues(0, 1);
+  const out = new Float64Array(src.length);
+  const p = newVec2();
+  const pk = newVec2();
+  const centre = newVec3();
+  const colour = newVec3();
+  const weight = newVec3();
+  const sum = newVec3();
+  const weightSum = newVec3();
+  const term = newVec3();
+  for (let j = 0; j < height; j++) {
+    for (let i = 0; i < width; i++) {
+      const idx = j * width + i;
+      vec3.set(centre, src[3 * idx], src[3 * idx + 1], src[3 * idx + 2]);
+      const wc = widthWorld[idx];
+      const zc = depth[idx];
+      const stepPx = wc === 0 ? 0 : ((wc * P) / (2 * zc)) * resolution;
+      if (wc === 0 || stepPx * maxOffsetMm < 0.5) {
+        out.set(centre, 3 * idx);
+        continue;
+      }
+      vec2.set(p, i + 0.5, j + 0.5);
+      // One tap at `offsetPx` along the axis with kernel weight `w` (see the header, steps 4-5).
+      const addTap = (offsetPx, w) => {
+        vec2.scaleAndAdd(pk, p, axis, offsetPx);
+        if (!(pk[0] >= 0 && pk[0] < width && pk[1] >= 0 && pk[1] < height)) return;
+        vec3.copy(weight, w);
+        if (tapFilter === 'bilinearPerTexel') {
+          const keep = perTexelTap(args, src, pk[0], pk[1], zc, centre, colour);
+          if (keep === 0) return;
+          vec3.scale(weight, weight, keep);
+        } else {
+          const tidx = Math.floor(pk[1]) * width + Math.floor(pk[0]);
+          if (widthWorld[tidx] === 0) return;
+          sampleBilinear(src, width, height, pk[0], pk[1], colour);
+          if (followSurface !== 'off') {
+            const f = Math.min(Math.max(Math.abs(depth[tidx] - zc) / depthThresholdWorld, 0), 1);
+            if (followSurface === 'drop') vec3.scale(weight, weight, 1 - f);
+            else vec3.lerp(colour, colour, centre, f);
+          }
+        }
+        vec3.add(sum, sum, vec3.multiply(term, weight, colour));
+        vec3.add(weightSum, weightSum, weight);
+      };
+      if (!footprint) {
+        vec3.set(weightSum, kernel[0], kernel[1], kernel[2]);
+        vec3.multiply(sum, weightSum, centre);
+        for (let k = 1; k < taps; k++) addTap(kernel[4 * k + 3] * stepPx, kernel.subarray(4 * k, 4 * k + 3));
+      } else {
+        // 'footprint' (header): the centre pixel, then footprints snapped to pixels, then the tail.
+        const G = (xMm) => footprint.profile.marginalIntegral(0, xMm);
+        let below = G(0.5 / stepPx);
+        vec3.set(weightSum, 2 * below[0], 2 * below[1], 2 * below[2]);
+        vec3.multiply(sum, weightSum, centre);
+        let lastEdge = 0;
+        for (const edgeMm of footprint.edgesMm) {
+          if (below.every((g) => g > 0.5 - 1e-5)) break;
+          const edge = Math.max(Math.floor(edgeMm * stepPx + 0.5), lastEdge + 1);
+          const energy = G((edge + 0.5) / stepPx);
+          const w = energy.map((e, c) => e - below[c]);
+          const offsetPx = 0.5 * (lastEdge + 1 + edge);
+          addTap(offsetPx, w);
+          addTap(-offsetPx, w);
+          below = energy;
+          lastEdge = edge;
+        }
+        const tail = below.map((g) => 0.5 - g);
+        if (tail.some((t) => t > 1e-6)) {
+          const offsetPx = Math.max(footprint.tailOffsetMm * stepPx, lastEdge + 1);
+          addTap(offsetPx, tail);
+          addTap(-offsetPx, tail);
+        }
+      }
+      for (let c = 0; c < 3; c++) out[3 * idx + c] = sum[c] / weightSum[c];
+    }
+  }
+  return out;
+}
+
+/**
+ * The separable blur exactly as the GPU implements it (sampling model in the module header):
+ * horizontal pass, `storeIntermediate` on every stored value, vertical pass.
+ * @param {object} args
+ * @param {number} args.width
+ * @param {number} args.height
+ * @param {Float64Array} args.diffuse width·height·3, rows bottom-up
+ * @param {Float64Array} args.depth width·height linear view depth, world units
+ * @param {Float64Array} args.widthWorld width·height world units per kernel-mm, 0 = not subsurface
+ * @param {Float32Array} args.kernel from computeKernel
+ * @param {number[]} args.projectionScale [P0, P5]
+ * @param {'drop'|'lerp'|'off'} [args.followSurface='off']
+ * @param {number} [args.depthThresholdWorld] > 0 unless followSurface is 'off'
+ * @param {(x: number) => number} [args.storeIntermediate] applied to each value stored between the passes
+ * @param {{ profile: object, edgesMm: number[], tailOffsetMm: number }} [args.footprint] the GPU's 'footprint'
+ *   kernel mode instead of the kernel's fixed taps: per pixel, the centre pixel weighs 2·G(0.5 px), then
+ *   footprint j covers the pixels (lastEdge, edge_j] with edge_j = max(round(edgesMm_j · stepPx), lastEdge + 1),
+ *   weighs G(edge_j + 0.5 px) − G(lastEdge + 0.5 px) and is sampled at its middle; it stops once every
+ *   channel's G exceeds 0.5 − 1e-5; the tail 0.5 − G is sampled at max(tailOffsetMm · stepPx, lastEdge + 1).
+ *   G(x) = profile.marginalIntegral(0, x), in float64 (the GPU reads it from a table).
+ * @param {'bilinear'|'bilinearPerTexel'} [args.tapFilter='bilinearPerTexel'] 'bilinearPerTexel' is the GPU model
+ *   (header); 'bilinear' takes a tap's mask and depth from its nearest texel and its colour from plain
+ *   bilinear filtering, which lets colour leak across depth edges (kept to measure that leak)
+ * @returns {Float64Array} width·height·3
+ */
+export function separableBlurOracle(args) {
+  const full = { followSurface: 'off', storeIntermediate: (x) => x, tapFilter: 'bilinearPerTexel', ...args };
+  checkImageArgs(full);
+  if (!['bilinear', 'bilinearPerTexel'].includes(full.tapFilter)) {
+    throw new RangeError(`tapFilter must be one of 'bilinear', 'bilinearPerTexel', got ${full.tapFilter}`);
+  }
+  const horizontal = blurPass(full, full.diffuse, 0);
+  for (let n = 0; n < horizontal.length; n++) horizontal[n] = full.storeIntermediate(horizontal[n]);
+  return blurPass(full, horizontal, 1);
+}
+
+/**
+ * Per-pixel profile energies on a pixel lattice: entry (di, dj) = ∫∫ R over the pixel square centred at
+ * (di/sx, dj/sy) mm, for |di| ≤ rx, |dj| ≤ ry.
+ * - Gaussian sums: exact, the 2D Gaussian factorises, ∫∫ = Σ w · P_x · P_y with erf differences.
+ * - otherwise: Q(x, y) = ∫_0^x ∫_0^y R dA at the lattice corners, pixel = Q(x1,y1) − Q(x0,y1) − Q(x1,y0) + Q(x0,y0).
+ *   In polar coordinates about the origin, ∫_0^ρ R(r) r dr = cdf(ρ)/2π, so for a, b > 0
+ *   Q(a, b) = (1/2π) [∫_0^θ* cdf(a/cos θ) dθ + ∫_θ*^{π/2} cdf(b/sin θ) dθ], θ* = atan2(b, a):
+ *   smooth 1D integrals (adaptive Gauss-Legendre, 1e-14 absolute), no trouble with Burley's 1/r centre.
+ * @returns {Float64Array} (2rx+1)(2ry+1)·3, index ((dj + ry)(2rx+1) + di + rx)·3 + c
+ */
+function pixelEnergyTable(profile, sx, sy, rx, ry) {
+  const nx = 2 * rx + 1;
+  const ny = 2 * ry + 1;
+  const table = new Float64Array(nx * ny * 3);
+  if (profile.gaussians) {
+    const px = profile.gaussians.map((g) =>
+      Array.from({ length: nx }, (_, k) => normalIntervalProbability((k - rx - 0.5) / sx, (k - rx + 0.5) / sx, g.varianceMm2)),
+    );
+    const py = profile.gaussians.map((g) =>
+      Array.from({ length: ny }, (_, k) => normalIntervalProbability((k - ry - 0.5) / sy, (k - ry + 0.5) / sy, g.varianceMm2)),
+    );
+    for (let dj = 0; dj < ny; dj++) {
+      for (let di = 0; di < nx; di++) {
+        for (let c = 0; c < 3; c++) {
+          let e = 0;
+          profile.gaussians.forEach((g, n) => {
+            e += g.weights[c] * px[n][di] * py[n][dj];
+          });
+          table[(dj * nx + di) * 3 + c] = e;
+        }
+      }
+    }
+    return table;
+  }
+  const cdf = profile.cdf ?? ((r) => profile.transmittance(r).map((t) => 1 - t));
+  const options = { dim: 3, absTol: 1e-15, relTol: 1e-13 };
+  const qPositive = (a, b) => {
+    if (a === 0 || b === 0) return [0, 0, 0];
+    const thetaStar = Math.atan2(b, a);
+    const lower = integrateAdaptive((t) => cdf(a / Math.cos(t)), 0, thetaStar, options);
+    const upper = integrateAdaptive((t) => cdf(b / Math.sin(t)), thetaStar, Math.PI / 2, options);
+    return lower.map((v, c) => (v + upper[c]) / (2 * Math.PI));
+  };
+  // corners (k − 0.5)/s for k = −r..r+1; Q is odd in each coordinate
+  const cx = Array.from({ length: nx + 1 }, (_, k) => (k - rx - 0.5) / sx);
+  const cy = Array.from({ length: ny + 1 }, (_, k) => (k - ry - 0.5) / sy);
+  const Q = [];
+  for (let m = 0; m <= ny; m++) {
+    const row = [];
+    for (let k = 0; k <= nx; k++) {
+      const s = Math.sign(cx[k]) * Math.sign(cy[m]);
+      row.push(qPositive(Math.abs(cx[k]), Math.abs(cy[m])).map((v) => s * v));
+    }
+    Q.push(row);
+  }
+  for (let dj = 0; dj < ny; dj++) {
+    for (let di = 0; di < nx; di++) {
+      for (let c = 0; c < 3; c++) {
+        table[(dj * nx + di) * 3 + c] = Q[dj + 1][di + 1][c] - Q[dj + 1][di][c] - Q[dj][di + 1][c] + Q[dj][di][c];
+      }
+    }
+  }
+  return table;
+}
+
+/**
+ * Brute-force 2D convolution with the full radial profile (ground truth for the separable blur).
+ * For each subsurface pixel c: sx, sy = pixels per mm along x and y from c's depth and widthWorld (same
+ * scale formula as the separable model); every pixel whose centre lies within the radius holding
+ * `coverage` of the energy (largest channel, in mm) contributes its colour with weight = the profile's
+ * energy over that pixel's square (exact for Gaussian sums, 1e-14 quadrature otherwise; see
+ * pixelEnergyTable). Pixels outside the image or with widthWorld 0 are dropped; depth rules as the
+ * separable model ('drop' scales the weight by 1 − f, 'lerp' mixes the colour toward the centre's);
+ * the sum is renormalised per channel. Non-subsurface pixels are copied.
+ * @param {object} args
+ * @param {number} args.width
+ * @param {number} args.height
+ * @param {Float64Array} args.diffuse
+ * @param {Float64Array} args.depth
+ * @param {Float64Array} args.widthWorld
+ * @param {string|object} args.profile name or profile object
+ * @param {number[]} args.projectionScale [P0, P5]
+ * @param {number} [args.coverage=0.997]
+ * @param {'drop'|'lerp'|'off'} [args.followSurface='off']
+ * @param {number} [args.depthThresholdWorld]
+ * @returns {Float64Array} width·height·3
+ */
+export function denseConvolutionOracle(args) {
+  const full = { coverage: 0.997, followSurface: 'off', ...args };
+  checkImageArgs(full);
+  const { width, height, diffuse, depth, widthWorld, projectionScale, coverage, followSurface, depthThresholdWorld } = full;
+  const profile = getProfile(full.profile);
+  const radiusMm = Math.max(...profile.radiusMm(coverage));
+  const tables = new Map(); // one table per distinct pixel scale
+  const out = new Float64Array(diffuse.length);
+  const centre = newVec3();
+  const colour = newVec3();
+  const weight = newVec3();
+  const sum = newVec3();
+  const weightSum = newVec3();
+  const term = newVec3();
+  for (let j = 0; j < height; j++) {
+    for (let i = 0; i < width; i++) {
+      const idx = j * width + i;
+      vec3.set(centre, diffuse[3 * idx], diffuse[3 * idx + 1], diffuse[3 * idx + 2]);
+      const wc = widthWorld[idx];
+      if (wc === 0) {
+        out.set(centre, 3 * idx);
+        continue;
+      }
+      const zc = depth[idx];
+      const sx = ((wc * projectionScale[0]) / (2 * zc)) * width;
+      const sy = ((wc * projectionScale[1]) / (2 * zc)) * height;
+      const rx = Math.floor(radiusMm * sx);
+      const ry = Math.floor(radiusMm * sy);
+      const key = `${sx},${sy}`;
+      let table = tables.get(key);
+      if (!table) {
+        table = pixelEnergyTable(profile, sx, sy, rx, ry);
+        tables.set(key, table);
+      }
+      const nx = 2 * rx + 1;
+      vec3.set(sum, 0, 0, 0);
+      vec3.set(weightSum, 0, 0, 0);
+      for (let dj = -ry; dj <= ry; dj++) {
+        const jj = j + dj;
+        if (jj < 0 || jj >= height) continue;
+        for (let di = -rx; di <= rx; di++) {
+          const ii = i + di;
+          if (ii < 0 || ii >= width) continue;
+          const xMm = di / sx;
+          const yMm = dj / sy;
+          if (xMm * xMm + yMm * yMm > radiusMm * radiusMm) continue;
+          const tidx = jj * width + ii;
+          if (widthWorld[tidx] === 0) continue;
+          const t = ((dj + ry) * nx + di + rx) * 3;
+          vec3.set(weight, table[t], table[t + 1], table[t + 2]);
+          vec3.set(colour, diffuse[3 * tidx], diffuse[3 * tidx + 1], diffuse[3 * tidx + 2]);
+          if (followSurface !== 'off' && tidx !== idx) {
+            const f = Math.min(Math.max(Math.abs(depth[tidx] - zc) / depthThresholdWorld, 0), 1);
+            if (followSurface === 'drop') vec3.scale(weight, weight, 1 - f);
+            else vec3.lerp(colour, colour, centre, f);
+          }
+          vec3.add(sum, sum, vec3.multiply(term, weight, colour));
+          vec3.add(weightSum, weightSum, weight);
+        }
+      }
+      for (let c = 0; c < 3; c++) out[3 * idx + c] = sum[c] / weightSum[c];
+    }
+  }
+  return out;
+}
+
+/**
+ * Exact response of a straight step edge under a radial profile: the image is 1 on the side x < 0 and 0
+ * on x > 0 (edge along y); at signed distance xMm the output is ∫ I(x + t) a(t) dt = ∫_{t < −x} a(t) dt
+ * = marginalIntegral(x, ∞) (a is even).
+ * @param {string|object} profile
+ * @param {number} xMm
+ * @returns {number[]} [r, g, b]
+ */
+export function edgeResponse1D(profile, xMm) {
+  return getProfile(profile).marginalIntegral(xMm, Infinity);
+}
+
+/**
+ * The same step edge under a discrete 1D kernel with point taps: output(x) = Σ_{k: x + offset_k < 0} w_k
+ * (a tap exactly on the edge counts half).
+ * @param {Float32Array|number[]} kernel from computeKernel
+ * @param {number} xMm
+ * @returns {number[]} [r, g, b]
+ */
+export function kernelEdgeResponse1D(kernel, xMm) {
+  const out = [0, 0, 0];
+  for (let k = 0; k < kernel.length / 4; k++) {
+    const position = xMm + kernel[4 * k + 3];
+    const share = position < 0 ? 1 : position === 0 ? 0.5 : 0;
+    for (let c = 0; c < 3; c++) out[c] += share * kernel[4 * k + c];
+  }
+  return out;
+}
+
+/**
+ * Rounds a number to the nearest IEEE half float (round half to even, subnormals, overflow to ±Infinity):
+ * a `storeIntermediate` hook emulating a HalfFloatType render target between the passes.
+ * @param {number} x
+ * @returns {number}
+ */
+export function roundToHalfFloat(x) {
+  if (x === 0 || !Number.isFinite(x)) return x;
+  const a = Math.abs(x);
+  if (a >= 65520) return Math.sign(x) * Infinity; // 65504 is the largest half; ties at 65520 round up
+  let e = Math.floor(Math.log2(a));
+  if (2 ** e > a) e -= 1;
+  else if (2 ** (e + 1) <= a) e += 1;
+  const quantum = e < -14 ? 2 ** -24 : 2 ** (e - 10);
+  const v = a / quantum;
+  let r = Math.round(v);
+  if (r - v === 0.5 && r % 2 === 1) r -= 1; // Math.round rounds ties up: make them even
+  return Math.sign(x) * r * quantum;
+}

@@ -1,0 +1,70 @@
+/**
+ * Float64 CPU oracle of the transmittance stage (REFERENCE §5), independent of the GPU path.
+ * @module test/oracle/transmittance
+ */
+
+import { vec3, vec4 } from 'gl-matrix';
+import { checkNumber } from '../../src/parameterChecks.js';
+import { getProfile } from '../../src/profiles.js';
+
+/**
+ * Transmitted fraction through a slab: the profile's exact transmittance T(d) (energy outside radius d)
+ * at the scaled distance d = thickness · (1 − translucency) / widthMm (REFERENCE §5's scale with the
+ * exact profile integral instead of the reference's exp(−s²/v) form).
+ * @param {object} args
+ * @param {number} args.thicknessMm thickness in mm (≥ 0, Infinity allowed: nothing behind)
+ * @param {string|object} [args.profile='skin']
+ * @param {number} [args.widthMm=1] kernel width scale: 1 kernel-mm per widthMm mm
+ * @param {number} [args.translucency=0] in [0, 1]; 1 makes everything fully translucent
+ * @returns {number[]} [r, g, b]
+ */
+export function transmittanceOracle({ thicknessMm, profile = 'skin', widthMm = 1, translucency = 0 }) {
+  if (thicknessMm !== Infinity) checkNumber('thicknessMm', thicknessMm, { min: 0, unit: 'mm' });
+  checkNumber('widthMm', widthMm, { min: 0, minExclusive: true, unit: 'mm' });
+  checkNumber('translucency', translucency, { min: 0, max: 1 });
+  const p = getProfile(profile);
+  if (thicknessMm === Infinity) return translucency === 1 ? [1, 1, 1] : [0, 0, 0];
+  return p.transmittance((thicknessMm * (1 - translucency)) / widthMm);
+}
+
+/**
+ * Thickness seen by the light, from a linear light depth map (REFERENCE §5):
+ *   shrunk = point − normalize(normal) · shrinkWorld        (pushed inward along the vertex normal, against acne)
+ *   v = lightView · shrunk; its light depth = −v.z          (three.js cameras look down −z)
+ *   thickness = |lightDepth(shrunk) − mapDepth(at the shrunk point's projection)|.
+ * `mapDepth` is called with the light-view position (vec3) and, when `lightProjectionMatrix` is given, the
+ * map coordinates uv ∈ [0, 1]² of the projection; a stored 0 means "nothing rendered there" and gives
+ * Infinity, as does a projection outside the map.
+ * @param {object} args
+ * @param {ArrayLike<number>} args.lightViewMatrix mat4, world → light view (column-major, gl-matrix/three.js)
+ * @param {ArrayLike<number>} [args.lightProjectionMatrix] mat4, light view → clip
+ * @param {ArrayLike<number>} args.pointWorld vec3
+ * @param {ArrayLike<number>} args.normalWorld vec3, the vertex (not bump-mapped) normal
+ * @param {number} [args.shrinkWorld=0] inward push in world units (reference: 0.005 at 1 unit = 1/8 m)
+ * @param {(lightViewPosition: Float64Array, uv: Float64Array|null) => number} args.mapDepth linear depth stored in the map
+ * @returns {number} thickness in world units (Infinity when the map holds nothing)
+ */
+export function thicknessFromLightDepth({
+  lightViewMatrix,
+  lightProjectionMatrix,
+  pointWorld,
+  normalWorld,
+  shrinkWorld = 0,
+  mapDepth,
+}) {
+  checkNumber('shrinkWorld', shrinkWorld, { min: 0 });
+  if (typeof mapDepth !== 'function') throw new TypeError('mapDepth must be a function');
+  const normal = vec3.normalize(new Float64Array(3), normalWorld);
+  const shrunk = vec3.scaleAndAdd(new Float64Array(3), pointWorld, normal, -shrinkWorld);
+  const viewPosition = vec3.transformMat4(new Float64Array(3), shrunk, lightViewMatrix);
+  const lightDepth = -viewPosition[2];
+  let uv = null;
+  if (lightProjectionMatrix) {
+    const clip = vec4.transformMat4(new Float64Array(4), [viewPosition[0], viewPosition[1], viewPosition[2], 1], lightProjectionMatrix);
+    uv = new Float64Array([0.5 * (clip[0] / clip[3]) + 0.5, 0.5 * (clip[1] / clip[3]) + 0.5]);
+    if (!(uv[0] >= 0 && uv[0] <= 1 && uv[1] >= 0 && uv[1] <= 1)) return Infinity;
+  }
+  const stored = mapDepth(viewPosition, uv);
+  if (stored === 0) return Infinity;
+  return Math.abs(lightDepth - stored);
+}

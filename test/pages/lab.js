@@ -1,0 +1,194 @@
+// The browser side of the pixel tests: exposes three, the library and the test scenes on
+// `window.lab`. `lab.run(options)` builds a scene, renders it through the subsurface pipeline (or a
+// plain RenderPass) and returns float read-backs. Nothing here is part of the library.
+import * as THREE from 'three';
+import { EffectComposer } from 'three/addons/postprocessing/EffectComposer.js';
+import { RenderPass } from 'three/addons/postprocessing/RenderPass.js';
+import { ShaderPass } from 'three/addons/postprocessing/ShaderPass.js';
+import { OutputPass } from 'three/addons/postprocessing/OutputPass.js';
+import * as SSS from '/src/index.js';
+import { readRenderTargetFloats } from '/demo/readback.js';
+
+/** A renderer drawing into an offscreen canvas of `width` × `height` device pixels. */
+function createRenderer(width, height, parameters = {}) {
+  const renderer = new THREE.WebGLRenderer({ antialias: false, ...parameters });
+  renderer.setPixelRatio(1);
+  renderer.setSize(width, height, false);
+  return renderer;
+}
+
+/** A composer with half-float (or float) buffers and no OutputPass: linear HDR out. */
+function createComposer(renderer, { type = THREE.HalfFloatType } = {}) {
+  const size = renderer.getDrawingBufferSize(new THREE.Vector2());
+  const composer = new EffectComposer(renderer, new THREE.WebGLRenderTarget(size.x, size.y, { type }));
+  composer.renderToScreen = false;
+  return composer;
+}
+
+/** Reads one attachment of a render target as RGBA floats. */
+async function read(renderer, target, index = 0) {
+  return readRenderTargetFloats(renderer, target, index);
+}
+
+/** Deterministic pseudo-random numbers in [0, 1) (mulberry32). */
+function random(seed) {
+  let a = seed >>> 0;
+  return () => {
+    a = (a + 0x6d2b79f5) >>> 0;
+    let t = a;
+    t = Math.imul(t ^ (t >>> 15), t | 1);
+    t ^= t + Math.imul(t ^ (t >>> 7), t | 61);
+    return ((t ^ (t >>> 14)) >>> 0) / 4294967296;
+  };
+}
+
+/** A float DataTexture from f(x, y) → [r, g, b]; nearest filtering so edges stay hard. */
+function dataTexture(width, height, f) {
+  const data = new Float32Array(width * height * 4);
+  for (let y = 0; y < height; y++) {
+    for (let x = 0; x < width; x++) data.set([...f(x, y), 1], (y * width + x) * 4);
+  }
+  const texture = new THREE.DataTexture(data, width, height, THREE.RGBAFormat, THREE.FloatType);
+  texture.minFilter = texture.magFilter = THREE.NearestFilter;
+  texture.needsUpdate = true;
+  return texture;
+}
+
+/** Albedo patterns for the slab (texture over the whole slab). */
+const PATTERNS = {
+  uniform: () => null,
+  edgeX: ({ low = 0.05 }) => dataTexture(2, 1, (x) => (x === 0 ? [1, 1, 1] : [low, low, low])),
+  edgeY: ({ low = 0.05 }) => dataTexture(1, 2, (x, y) => (y === 0 ? [1, 1, 1] : [low, low, low])),
+  point: ({ cells = 255 }) => dataTexture(cells, cells, (x, y) => (x === cells >> 1 && y === cells >> 1 ? [1, 1, 1] : [0, 0, 0])),
+  noise: ({ cells = 48, seed = 7 }) => {
+    const r = random(seed);
+    return dataTexture(cells, cells, () => { const v = 0.1 + 0.9 * r(); return [v, v * 0.8, v * 0.6]; });
+  },
+  nan: ({ cells = 16 }) => dataTexture(cells, cells, (x, y) => (x === 5 && y === 7 ? [NaN, NaN, NaN] : x === 9 && y === 4 ? [Infinity, 1, 1] : [0.7, 0.5, 0.4])),
+};
+
+function camera16x9(aspect, fovY, distance) {
+  const camera = new THREE.PerspectiveCamera(fovY, aspect, 0.05, 200);
+  camera.position.set(0, 0, distance);
+  camera.lookAt(0, 0, 0);
+  camera.updateMatrixWorld();
+  return camera;
+}
+
+/** Builds the named scene. Every scene has a front directional light unless it says otherwise. */
+const SCENES = {
+  /** A flat slab facing the camera filling the view, albedo from `pattern`. */
+  slab(o) {
+    const scene = new THREE.Scene();
+    const camera = camera16x9(o.aspect, o.fovY, o.distance);
+    const material = new THREE.MeshStandardMaterial({ color: 0xffffff, roughness: 1, metalness: 0, map: PATTERNS[o.pattern ?? 'uniform'](o) });
+    const slab = new THREE.Mesh(new THREE.PlaneGeometry(o.slabSize, o.slabSize), material);
+    scene.add(slab);
+    const light = new THREE.DirectionalLight(0xffffff, o.intensity);
+    light.position.set(0, 0, 10);
+    scene.add(light, light.target);
+    return { scene, camera, subsurface: [material], light };
+  },
+  /** A near subsurface slab over the left half, a far subsurface slab `gapWorld` behind it. */
+  depthEdge(o) {
+    const base = SCENES.slab({ ...o, pattern: 'uniform' });
+    const near = new THREE.MeshStandardMaterial({ color: 0xffffff, roughness: 1 });
+    base.subsurface[0].color.setScalar(0.02); // the far slab is dark: what leaks onto it shows
+    base.subsurface[0].needsUpdate = true;
+    const slab = new THREE.Mesh(new THREE.PlaneGeometry(o.slabSize / 2, o.slabSize), near);
+    slab.position.set(-o.slabSize / 4, 0, o.gapWorld);
+    base.scene.add(slab);
+    base.subsurface.push(near);
+    return base;
+  },
+  /** A subsurface slab among ordinary materials: basic, standard, phong, lines; a coloured background. */
+  mixed(o) {
+    const base = SCENES.slab({ ...o, pattern: 'noise' });
+    const { scene } = base;
+    scene.background = new THREE.Color(0.2, 0.3, 0.5);
+    base.subsurface[0].map.repeat.set(1, 1);
+    // The subsurface slab (2 × 1.6 units of a 6.2 × 3.5 view) leaves background around it.
+    scene.children[0].scale.set(2 / o.slabSize, 1.6 / o.slabSize, 1);
+    const bright = o.brightness ?? 1;
+    const basic = new THREE.Mesh(new THREE.BoxGeometry(0.8, 0.8, 0.8), new THREE.MeshBasicMaterial({ color: new THREE.Color(bright, bright * 0.5, 0.1) }));
+    basic.position.set(-0.6, 0.1, 0.5);
+    const standard = new THREE.Mesh(new THREE.SphereGeometry(0.35, 24, 16), new THREE.MeshStandardMaterial({ color: 0x55aa33, roughness: 0.4 }));
+    standard.position.set(1.3, 0.2, 0.3);
+    const phong = new THREE.Mesh(new THREE.TorusGeometry(0.3, 0.1, 12, 24), new THREE.MeshPhongMaterial({ color: 0x3366ff, shininess: 60 }));
+    phong.position.set(-1.4, -0.2, 0.2);
+    const line = new THREE.Line(new THREE.BufferGeometry().setFromPoints([new THREE.Vector3(-1.6, -0.6, 0.6), new THREE.Vector3(1.6, 0.6, 0.6)]), new THREE.LineBasicMaterial({ color: 0xffff00 }));
+    scene.add(basic, standard, phong, line, new THREE.AmbientLight(0xffffff, 0.3));
+    return base;
+  },
+  /** A slab `thicknessMm` thick, lit from behind, seen from the front (transmittance). */
+  backlit(o) {
+    const scene = new THREE.Scene();
+    const camera = camera16x9(o.aspect, o.fovY, o.distance);
+    const material = new THREE.MeshStandardMaterial({ color: 0xffffff, roughness: 1, metalness: 0 });
+    const thickness = o.thicknessMm / o.worldUnitInMm;
+    const slab = new THREE.Mesh(new THREE.BoxGeometry(o.slabSize, o.slabSize, thickness), material);
+    scene.add(slab);
+    const light = new THREE.DirectionalLight(0xffffff, o.intensity);
+    light.position.set(0, 0, -10);
+    light.shadow.camera.left = light.shadow.camera.bottom = -o.slabSize;
+    light.shadow.camera.right = light.shadow.camera.top = o.slabSize;
+    light.shadow.camera.near = 1;
+    light.shadow.camera.far = 20;
+    scene.add(light, light.target);
+    return { scene, camera, subsurface: [material], light, thicknessWorld: thickness };
+  },
+};
+
+const DEFAULTS = {
+  width: 192, height: 108, fovY: 20, distance: 10, slabSize: 20, intensity: Math.PI,
+  worldUnitInMm: 10, widthMm: 1, pipeline: 'sss', type: 'half', reads: ['output'],
+};
+
+/**
+ * Builds `options.scene`, renders it once through the pipeline and reads back what `reads` asks for:
+ * 'output' (composer result), 'light', 'diffuse', 'surface' (scene pass attachments).
+ */
+async function run(options) {
+  const o = { ...DEFAULTS, ...options };
+  o.aspect = o.aspect ?? o.width / o.height;
+  const renderer = createRenderer(o.width, o.height);
+  const built = SCENES[o.scene](o);
+  const type = o.type === 'float' ? THREE.FloatType : THREE.HalfFloatType;
+  const composer = createComposer(renderer, { type });
+  const result = { width: o.width, height: o.height };
+  let sss = null;
+  if (o.pipeline === 'sss') {
+    sss = new SSS.SubsurfaceScattering({
+      scene: built.scene, camera: built.camera, worldUnitInMm: o.worldUnitInMm, type,
+      light: o.transmittance ? built.light : null,
+      ...(o.sss ?? {}),
+    });
+    for (const m of built.subsurface) sss.makeSubsurface(m, { widthMm: o.widthMm, ...(o.material ?? {}) });
+    sss.addTo(composer);
+  } else {
+    composer.addPass(new RenderPass(built.scene, built.camera));
+  }
+  composer.render();
+  const reads = { output: () => read(renderer, composer.readBuffer) };
+  if (sss) {
+    const t = sss.scenePass.renderTarget;
+    Object.assign(reads, { light: () => read(renderer, t, 0), diffuse: () => read(renderer, t, 1), surface: () => read(renderer, t, 2) });
+    const p = built.camera.projectionMatrix.elements;
+    Object.assign(result, {
+      kernel: sss.kernel, kernelPixels: sss.kernelPixels, blurEnabled: sss.horizontalPass.enabled,
+      method: sss.method, footprint: SSS.footprintsOf(sss.kernel), profile: sss.profileLookup.profile.name,
+      projectionScale: [p[0], p[5]], depthThresholdWorld: sss.horizontalPass.depthThresholdWorld,
+      thicknessWorld: built.thicknessWorld,
+    });
+  }
+  for (const name of o.reads) result[name] = await reads[name]();
+  result.glError = renderer.getContext().getError();
+  sss?.dispose();
+  composer.dispose();
+  renderer.dispose();
+  renderer.forceContextLoss();
+  return result;
+}
+
+window.lab = { THREE, SSS, EffectComposer, RenderPass, ShaderPass, OutputPass, createRenderer, createComposer, read, dataTexture, run };
+window.testReady = true;

@@ -1,0 +1,43 @@
+// The library as users get it: built by Vite's library mode (GLSL inlined), imported by plain Node
+// with no DOM, no globals added, and computeKernel reproducing the reference presets.
+import { describe, it, expect } from 'vitest';
+import { build } from 'vite';
+import { execFileSync } from 'node:child_process';
+import { rmSync } from 'node:fs';
+import { fileURLToPath } from 'node:url';
+
+const root = fileURLToPath(new URL('../..', import.meta.url));
+// Inside the repository so that bare imports (three, gl-matrix) resolve from its node_modules.
+const outDir = `${root}node_modules/.cache/sss-package-test`;
+
+describe('the built package', () => {
+  it('imports in plain Node without side effects and computes the reference kernels', async () => {
+    rmSync(outDir, { recursive: true, force: true });
+    await build({ root, configFile: `${root}vite.config.js`, mode: 'lib', logLevel: 'error', build: { outDir, emptyOutDir: true } });
+    const script = `
+      const before = new Set(Object.getOwnPropertyNames(globalThis));
+      const m = await import(${JSON.stringify(`${outDir}/three-separable-sss.js`)});
+      const added = Object.getOwnPropertyNames(globalThis).filter((k) => !before.has(k));
+      const k17 = m.computeKernel({ samples: 17, method: 'reference' });
+      console.log(JSON.stringify({
+        exports: Object.keys(m).sort(), added, typeofWindow: typeof window,
+        centre17: Array.from(k17.slice(0, 4)),
+        sizes: [11, 17, 25].map((n) => m.referenceKernel(n).length / 4),
+        chunk: m.transmittanceChunk.includes('sssTransmittance('),
+      }));`;
+    const out = JSON.parse(execFileSync(process.execPath, ['--input-type=module', '-e', script], { encoding: 'utf8' }));
+    expect(out.typeofWindow).toBe('undefined');
+    expect(out.added).toEqual([]);
+    for (const name of ['computeKernel', 'profiles', 'transmittance', 'LightDepthTarget', 'transmittanceChunk', 'makeSubsurface', 'SubsurfaceBlurPass', 'SubsurfaceScattering']) {
+      expect(out.exports).toContain(name);
+    }
+    expect(out.chunk).toBe(true);
+    expect(out.sizes).toEqual([11, 17, 25]);
+    // The reference's published 17-tap centre weight (REFERENCE §3), offset 0.
+    expect(out.centre17[0]).toBeCloseTo(0.536343, 6);
+    expect(out.centre17[1]).toBeCloseTo(0.624624, 6);
+    expect(out.centre17[2]).toBeCloseTo(0.748867, 6);
+    expect(out.centre17[3]).toBe(0);
+    rmSync(outDir, { recursive: true, force: true });
+  }, 120_000);
+});
