@@ -3,10 +3,10 @@
 import { ACESFilmicToneMapping, HalfFloatType, WebGLRenderer, WebGLRenderTarget } from 'three';
 import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
 import { EffectComposer } from 'three/addons/postprocessing/EffectComposer.js';
-import { RenderPass } from 'three/addons/postprocessing/RenderPass.js';
 import { OutputPass } from 'three/addons/postprocessing/OutputPass.js';
+import { SubsurfaceScattering } from '../src/index.js';
 import { loadHead } from './headModel.js';
-import { createHeadScene, FACE_CENTRE } from './headScene.js';
+import { createHeadScene, FACE_CENTRE, HEAD_WORLD_UNIT_IN_MM } from './headScene.js';
 import { readRenderTargetFloats } from './readback.js';
 
 const params = new URLSearchParams(location.search);
@@ -48,9 +48,15 @@ async function start() {
   controls.enableDamping = true;
   controls.update();
 
+  // Skin at its physical scale (1 profile mm = 1 mm), light through the ears from the spot light.
+  const sss = new SubsurfaceScattering({
+    scene, camera, light: rig.light, worldUnitInMm: HEAD_WORLD_UNIT_IN_MM, profile: 'skin', samples: 17,
+  });
+  sss.makeSubsurface(head.mesh.material, { widthMm: 1, translucency: 0 });
+
   // Linear HDR all the way to OutputPass (tone mapping + sRGB last).
   const composer = new EffectComposer(renderer, new WebGLRenderTarget(1, 1, { type: HalfFloatType }));
-  composer.addPass(new RenderPass(scene, camera));
+  sss.addTo(composer);
   const outputPass = new OutputPass();
   composer.addPass(outputPass);
 
@@ -75,7 +81,7 @@ async function start() {
   composer.render();
 
   window.demo = {
-    rig, renderer, composer, head,
+    rig, renderer, composer, head, sss,
     /** The face centre, world units: where tests look for a lit face. */
     facePoint: FACE_CENTRE,
     isStandIn: head.isStandIn,
