@@ -18,6 +18,20 @@ function rangeWhere(f) {
   return x;
 }
 
+/** Smallest x (mm) with 2 ∫_x^∞ marginal < tail in every channel (bisection). */
+function radiusHolding(profile, tail) {
+  const outside = (x) => 2 * Math.max(...profile.marginalIntegral(x, Infinity));
+  let lo = 0;
+  let hi = 0.25;
+  while (outside(hi) >= tail && hi < 1e5) hi *= 2;
+  for (let i = 0; i < 40; i++) {
+    const mid = (lo + hi) / 2;
+    if (outside(mid) >= tail) lo = mid;
+    else hi = mid;
+  }
+  return hi;
+}
+
 export class ProfileLookup {
   /**
    * @param {string | object} [profile='skin'] a profile name or object (see `profiles`)
@@ -37,6 +51,9 @@ export class ProfileLookup {
     this.profile = p;
     this.transmittanceRangeMm = rangeWhere((d) => p.transmittance(d));
     this.marginalRangeMm = rangeWhere((x) => p.marginalIntegral(x, Infinity));
+    // Radius holding all but 1 % of every channel's marginal energy (both sides): what the blur
+    // must resolve pixel by pixel for the 'footprint' method to be exact within about 1 %.
+    this.marginalRadiusMm = radiusHolding(p, 0.01);
     const { data, width } = this.texture.image;
     for (let i = 0; i < width; i++) {
       const u = (i / (width - 1)) ** 2;

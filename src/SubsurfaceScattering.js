@@ -21,6 +21,13 @@ const _corner = new Vector3();
 /** How the blur weighs its taps (see the constructor). */
 export const METHODS = ['footprint', 'marginal', 'reference'];
 
+/**
+ * Tap budgets 'auto' chooses from: each is compiled once, so few levels keep shader switches rare.
+ * The smallest is used whose (samples - 3) / 2 single-pixel footprints per side reach the radius
+ * holding 99 % of the marginal's energy on screen (the footprint method is then exact within ~1 %).
+ */
+export const AUTO_SAMPLES = [5, 9, 13, 17, 25, 33, 45, 63];
+
 /** Below half a pixel a kernel cannot move light into another pixel (issue: "no work"). */
 export const MIN_KERNEL_PIXELS = 0.5;
 
@@ -36,7 +43,8 @@ export class SubsurfaceScattering {
    * @param {'footprint'|'marginal'|'reference'} [options.method='footprint'] how the blur weighs its taps:
    *   'footprint' snaps the marginal kernel's footprints to pixels and weighs them exactly, per pixel;
    *   'marginal' and 'reference' use computeKernel's fixed taps
-   * @param {number} [options.samples=17] taps per direction (a budget for 'footprint'), odd, 3..63
+   * @param {number|'auto'} [options.samples=17] taps per direction (a budget for 'footprint'), odd,
+   *   3..63; 'auto' picks, each frame, the fewest that resolve the on-screen kernel (see AUTO_SAMPLES)
    * @param {number[]} [options.strength] RGB, 0..1: mix with no scattering (reference model)
    * @param {number[]} [options.falloff] RGB, (0, 10]: reference method only
    * @param {'drop'|'lerp'|'off'} [options.followSurface='drop']
@@ -57,6 +65,8 @@ export class SubsurfaceScattering {
     checkNumber('depthThresholdMm', depthThresholdMm, { min: 0, minExclusive: true, max: 1e6, unit: 'mm' });
     checkOneOf('followSurface', followSurface, ['drop', 'lerp', 'off']);
     checkOneOf('method', method, METHODS);
+    this.autoSamples = samples === 'auto';
+    if (this.autoSamples) samples = 17;
 
     this.scene = scene;
     this.camera = camera;
@@ -83,7 +93,11 @@ export class SubsurfaceScattering {
     this.composePass = new SubsurfaceComposePass({
       lightTexture: this.scenePass.lightTexture,
       surfaceTexture: this.scenePass.surfaceTexture,
+      unscatteredTexture: this.scenePass.diffuseTexture,
     });
+    /** The hooks of the materials made subsurface through this pipeline, with their options. */
+    this.materials = new Map();
+    this.transmittance = light !== null;
     this.depthThresholdMm = depthThresholdMm;
     this.followSurface = followSurface;
     /** Largest on-screen kernel radius estimated for the last frame, pixels. */
@@ -119,15 +133,47 @@ export class SubsurfaceScattering {
    * @param {import('three').MeshStandardMaterial} material
    * @param {{ widthMm?: number, strength?: number, transmittance?: boolean, translucency?: number, shrinkMm?: number }} [options]
    */
-  makeSubsurface(material, { widthMm = 1, strength = 1, transmittance = true, translucency = 0, shrinkMm = 0.6 } = {}) {
-    return hookMaterial(material, {
-      widthMm,
-      strength,
+  makeSubsurface(material, options = {}) {
+    const o = { widthMm: 1, strength: 1, transmittance: true, translucency: 0, shrinkMm: 0.6, ...this.materials.get(material)?.options, ...options };
+    const hook = hookMaterial(material, {
+      widthMm: o.widthMm,
+      strength: o.strength,
       worldUnitInMm: this.worldUnitInMm,
-      transmittance: transmittance && this.lightDepth
-        ? { lightDepth: this.lightDepth, lookup: this.profileLookup, translucency, shrinkMm }
+      transmittance: o.transmittance && this.transmittance && this.lightDepth
+        ? { lightDepth: this.lightDepth, lookup: this.profileLookup, translucency: o.translucency, shrinkMm: o.shrinkMm }
         : null,
     });
+    hook.debugOutput = this._debugOutput();
+    this.materials.set(material, { hook, options: o });
+    return hook;
+  }
+
+  /** Turns transmittance on or off for every material of this pipeline (recompiles them once). */
+  setTransmittance(enabled) {
+    if (typeof enabled !== 'boolean') throw new TypeError(`setTransmittance: enabled must be a boolean, got ${describe(enabled)}`);
+    if (enabled && !this.lightDepth) throw new Error('setTransmittance: this pipeline has no light (pass `light` to the constructor)');
+    this.transmittance = enabled;
+    this.scenePass.lightDepth = enabled ? this.lightDepth : null; // no light pass when unused
+    for (const material of this.materials.keys()) this.makeSubsurface(material);
+  }
+
+  /**
+   * Shows the final image or one ingredient (see DEBUG_VIEWS of SubsurfaceComposePass): 'final',
+   * 'diffuse', 'specular', 'depth', 'mask', 'thickness', 'transmittance'.
+   */
+  setDebugView(view, options) {
+    this.composePass.setDebugView(view, options);
+    for (const { hook } of this.materials.values()) hook.debugOutput = this._debugOutput();
+  }
+
+  _debugOutput() {
+    const view = this.composePass.debugView;
+    return view === 'thickness' || view === 'transmittance' ? view : 'diffuse';
+  }
+
+  /** Fraction of the width, from the left, shown without scattering (0..1; 0 = none). */
+  setSplit(fraction) {
+    this.composePass.setSplit(fraction);
   }
 
   /** computeKernel's arguments for this pipeline's method ('footprint' builds on the marginal kernel). */
@@ -138,10 +184,19 @@ export class SubsurfaceScattering {
   /**
    * Rebuilds the kernel (and the profile tables when the profile changes). Changing the method
    * between 'footprint' and the fixed-tap ones recompiles the blur shaders once.
-   * @param {{ profile?: string|object, method?: string, samples?: number, strength?: number[], falloff?: number[] }} options
+   * @param {{ profile?: string|object, method?: string, samples?: number|'auto', strength?: number[], falloff?: number[] }} options
    */
-  setKernel({ method = this.method, ...options }) {
+  setKernel({ method = this.method, samples, ...options }) {
     checkOneOf('method', method, METHODS);
+    if (samples === 'auto') this.autoSamples = true;
+    else if (samples !== undefined) {
+      this.autoSamples = false;
+      options.samples = samples;
+    }
+    this._applyKernel(options, method);
+  }
+
+  _applyKernel(options, method = this.method) {
     const next = { ...this._kernelOptions, ...options };
     if (options.profile !== undefined) next.profile = getProfile(options.profile);
     const kernel = computeKernel(this._kernelArguments(next, method));
@@ -153,6 +208,11 @@ export class SubsurfaceScattering {
       pass.setKernel(kernel);
     }
     if (options.profile !== undefined) this.profileLookup.setProfile(next.profile);
+  }
+
+  /** The kernel's current settings: { profile, samples, strength, falloff }, plus method. */
+  get kernelOptions() {
+    return { ...this._kernelOptions, method: this.method };
   }
 
   /**
@@ -176,9 +236,8 @@ export class SubsurfaceScattering {
     const size = this.scenePass.renderTarget;
     const p = camera.projectionMatrix.elements;
     const pixelsPerWorldAtUnitDepth = Math.max(p[0] * size.width, p[5] * size.height) / 2;
-    const radiusMm = kernelRadiusMm(this.kernel);
     const perspective = camera.isPerspectiveCamera === true || p[15] === 0;
-    let pixels = 0;
+    let pixelsPerMm = 0;
     for (const mesh of this.scenePass.subsurfaceMeshes) {
       const geometry = mesh.geometry;
       if (!geometry.boundingBox) geometry.computeBoundingBox();
@@ -192,15 +251,24 @@ export class SubsurfaceScattering {
       nearest = perspective ? Math.max(nearest, camera.near ?? 1e-6) : 1;
       for (const m of Array.isArray(mesh.material) ? mesh.material : [mesh.material]) {
         if (this.scenePass.categoryOf(m) !== 'subsurface') continue;
-        pixels = Math.max(pixels, (radiusMm * this._widthWorld(m) * pixelsPerWorldAtUnitDepth) / nearest);
+        pixelsPerMm = Math.max(pixelsPerMm, (this._widthWorld(m) * pixelsPerWorldAtUnitDepth) / nearest);
       }
     }
+    if (this.autoSamples) this._chooseSamples(pixelsPerMm);
+    const pixels = kernelRadiusMm(this.kernel) * pixelsPerMm;
     this.kernelPixels = pixels;
     const blur = this.enabled && pixels >= MIN_KERNEL_PIXELS;
     this.horizontalPass.enabled = blur;
     this.verticalPass.enabled = blur;
     // Without the blurs, compose the unblurred diffuse light straight from the scene pass.
     this.composePass.scatteredTexture = blur ? null : this.scenePass.diffuseTexture;
+  }
+
+  /** 'auto' samples: the fewest AUTO_SAMPLES resolving the on-screen kernel pixel by pixel. */
+  _chooseSamples(pixelsPerMm) {
+    const radiusPx = this.profileLookup.marginalRadiusMm * pixelsPerMm;
+    const samples = AUTO_SAMPLES.find((n) => (n - 3) / 2 >= radiusPx) ?? AUTO_SAMPLES[AUTO_SAMPLES.length - 1];
+    if (samples !== this._kernelOptions.samples) this._applyKernel({ samples });
   }
 
   /** World units per kernel millimetre that `material` writes (width × strength). */

@@ -12,7 +12,7 @@ import clearcoatGlsl from '../shaders/subsurfaceMaterial/clearcoat.glsl?raw';
 import outputGlsl from '../shaders/subsurfaceMaterial/output.glsl?raw';
 import profileLookupGlsl from '../shaders/profileLookup.glsl?raw';
 import transmittanceGlsl from '../shaders/transmittance.glsl?raw';
-import { checkNumber } from './parameterChecks.js';
+import { checkNumber, checkOneOf } from './parameterChecks.js';
 import { describe } from './rendererSupport.js';
 import { LightDepthTarget } from './LightDepthTarget.js';
 import { ProfileLookup } from './ProfileLookup.js';
@@ -32,6 +32,7 @@ export const transmittanceChunk = `${profileLookupGlsl}\n${transmittanceGlsl}`;
 export const SUBSURFACE_TARGET_FLAG = 'isSubsurfaceTarget';
 
 const hooks = new WeakMap();
+const DEBUG_OUTPUTS = ['diffuse', 'transmittance', 'thickness'];
 
 const _position = new Vector3();
 const _direction = new Vector3();
@@ -125,6 +126,7 @@ export function makeSubsurface(material, options = {}) {
     sssDepthOnly: { value: false },
     sssWidthWorld: { value: 0 },
     sssStrength: { value: 1 },
+    sssDebugOutput: { value: 0 },
     sssLightColor: { value: new Vector3() },
     sssLightPositionView: { value: new Vector3() },
     sssLightDirectionView: { value: new Vector3() },
@@ -137,6 +139,13 @@ export function makeSubsurface(material, options = {}) {
     material,
     uniforms,
     options: { widthMm: 1, strength: 1, worldUnitInMm: 1000, transmittance: null },
+    /** What the diffuse target receives: 'diffuse' (normal), 'transmittance' or 'thickness' (debug views). */
+    set debugOutput(mode) {
+      uniforms.sssDebugOutput.value = DEBUG_OUTPUTS.indexOf(checkOneOf('debugOutput', mode, DEBUG_OUTPUTS));
+    },
+    get debugOutput() {
+      return DEBUG_OUTPUTS[uniforms.sssDebugOutput.value];
+    },
     transmittance: null,
     update,
     dispose,

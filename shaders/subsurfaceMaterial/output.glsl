@@ -3,6 +3,8 @@
 	#ifdef USE_FOG
 		sssDiffuse *= 1.0 - fogFactor;
 	#endif
+	if ( sssDebugOutput == 1 ) sssDiffuse = sssTransmitted;
+	if ( sssDebugOutput == 2 ) sssDiffuse = vec3( sssThicknessMm );
 	// A non-finite value would spread through the blur: keep it out.
 	if ( any( isnan( sssDiffuse ) ) || any( isinf( sssDiffuse ) ) ) sssDiffuse = vec3( 0.0 );
 	sssDiffuseOutput = vec4( max( sssDiffuse, vec3( 0.0 ) ), 1.0 );

@@ -7,6 +7,7 @@ uniform bool sssSplit;      // true only while drawn into the subsurface multi-t
 uniform bool sssDepthOnly;  // true in the scene pass's first call: lay down depth, shade nothing
 uniform float sssWidthWorld; // widthMm / worldUnitInMm: world units per profile millimetre
 uniform float sssStrength;   // 0..1, scales the width (0 = no scattering)
+uniform int sssDebugOutput;  // what location 1 holds: 0 diffuse light, 1 transmitted light only, 2 thickness (mm)
 
 #ifdef SSS_TRANSMITTANCE
 	uniform vec3 sssLightColor;          // colour * intensity

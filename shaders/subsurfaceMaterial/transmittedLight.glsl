@@ -1,6 +1,8 @@
 	// Light arriving through the object from behind (Jimenez et al. 2010), added to the direct
 	// diffuse light before the blur. Three's own attenuation functions keep it consistent with the
 	// light's front-side contribution; the shadow does not apply (the light went through).
+	vec3 sssTransmitted = vec3( 0.0 ); // kept for the debug views
+	float sssThicknessMm = 0.0;
 	#ifdef SSS_TRANSMITTANCE
 	{
 		vec3 sssPosition = - vViewPosition;
@@ -16,7 +18,10 @@
 		#endif
 		// Wrap lighting on the back side: saturate(0.3 + dot(-N, L)) (REFERENCE §5).
 		float sssWrap = saturate( 0.3 + dot( - nonPerturbedNormal, sssToLight ) );
-		reflectedLight.directDiffuse += sssLightColor * ( sssAttenuation * sssWrap )
-			* sssTransmittance( sssPosition, nonPerturbedNormal ) * BRDF_Lambert( material.diffuseColor );
+		float sssThickness = sssThicknessWorld( sssPosition, nonPerturbedNormal );
+		sssThicknessMm = sssThickness * sssThicknessToProfileMm;
+		sssTransmitted = sssLightColor * ( sssAttenuation * sssWrap )
+			* sssTransmittanceProfile( sssThickness ) * BRDF_Lambert( material.diffuseColor );
+		reflectedLight.directDiffuse += sssTransmitted;
 	}
 	#endif
