@@ -7,8 +7,11 @@ import {
 /** The scan is about 5 cm per world unit (REFERENCE §9): 8.55 units ≈ 43 cm across the shoulders. */
 export const HEAD_WORLD_UNIT_IN_MM = 50;
 
-/** Where the face is, in the scan's coordinates (Y up, facing +Z). */
-export const FACE_CENTRE = new Vector3(0, 0.6, 1.0);
+/** A point on the face (right cheek beside the nose), in the scan's coordinates (Y up, facing +Z). */
+export const FACE_CENTRE = new Vector3(0.6, 1.0, 2.1);
+
+/** The middle of the head: what the camera orbits and the light aims at. */
+export const HEAD_CENTRE = new Vector3(0, 1.3, 0.4);
 
 export function createHeadScene(headMesh) {
   const scene = new Scene();
@@ -28,19 +31,20 @@ export function createHeadScene(headMesh) {
   light.shadow.camera.far = 40;
   light.shadow.bias = -0.0005;
   light.shadow.normalBias = 0.02;
-  light.target.position.copy(FACE_CENTRE);
+  light.target.position.copy(HEAD_CENTRE);
   scene.add(light, light.target);
 
   const camera = new PerspectiveCamera(25, 16 / 9, 1, 100);
-  camera.position.set(0, 0.8, 21);
+  camera.position.set(0, 1.0, 21);
+  camera.lookAt(0, 0.9, 0);
 
-  const rig = { scene, camera, light, head: headMesh };
+  const rig = { scene, camera, light, head: headMesh, facePoint: FACE_CENTRE };
   setLightDirection(rig, 30, 25);
   return rig;
 }
 
 /**
- * Places the light on a sphere around the face.
+ * Places the light on a sphere around the head.
  * @param {number} azimuthDeg around the vertical axis; 0 = camera side (+Z), 180 = behind the head
  * @param {number} elevationDeg above the horizontal plane
  * @param {number} [distance=18] world units from the face centre
@@ -49,11 +53,11 @@ export function setLightDirection({ light }, azimuthDeg, elevationDeg, distance 
   const az = (azimuthDeg * Math.PI) / 180;
   const el = (elevationDeg * Math.PI) / 180;
   light.position.set(
-    FACE_CENTRE.x + distance * Math.cos(el) * Math.sin(az),
-    FACE_CENTRE.y + distance * Math.sin(el),
-    FACE_CENTRE.z + distance * Math.cos(el) * Math.cos(az),
+    HEAD_CENTRE.x + distance * Math.cos(el) * Math.sin(az),
+    HEAD_CENTRE.y + distance * Math.sin(el),
+    HEAD_CENTRE.z + distance * Math.cos(el) * Math.cos(az),
   );
-  light.target.position.copy(FACE_CENTRE);
+  light.target.position.copy(HEAD_CENTRE);
   light.updateMatrixWorld();
   light.target.updateMatrixWorld();
 }

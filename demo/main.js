@@ -1,58 +1,68 @@
-// Demo page bootstrap: renderer, composer, controls, resize, loading progress and the test API
-// (window.demo) that the browser tests and the figure renderer drive.
+// Demo page bootstrap: renderer, head, subsurface pipeline, controls, URL state, timings, and the
+// test API (window.demo) that the browser tests and the figure renderer drive.
 import { ACESFilmicToneMapping, HalfFloatType, WebGLRenderer, WebGLRenderTarget } from 'three';
 import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
 import { EffectComposer } from 'three/addons/postprocessing/EffectComposer.js';
 import { OutputPass } from 'three/addons/postprocessing/OutputPass.js';
-import { SubsurfaceScattering } from '../src/index.js';
+import { SubsurfaceScattering, getProfile } from '../src/index.js';
 import { loadHead } from './headModel.js';
-import { createHeadScene, FACE_CENTRE, HEAD_WORLD_UNIT_IN_MM } from './headScene.js';
+import { createHeadScene, setLightDirection, HEAD_WORLD_UNIT_IN_MM } from './headScene.js';
 import { readRenderTargetFloats } from './readback.js';
+import { defaultState, parseHash, formatHash } from './state.js';
+import { figureState } from './figures.js';
+import { createControls } from './controls.js';
+import { PassTimings } from './passTimings.js';
+import { drawKernel } from './kernelPlot.js';
 
 const params = new URLSearchParams(location.search);
+/** Camera position and orbit target when the state names none: head and shoulders, facing us. */
+const DEFAULT_CAMERA = [0, 1.0, 21, 0, 0.9, 0];
 const container = document.getElementById('viewport');
 const notice = document.getElementById('notice');
+const hashNotice = document.getElementById('hash-notice');
 const progress = document.getElementById('progress');
+const kernelCanvas = document.getElementById('kernel-plot');
 
-function showNotice(html) {
-  notice.innerHTML = html;
-  notice.hidden = false;
+function showNotice(element, html) {
+  element.innerHTML = html;
+  element.hidden = false;
+}
+
+/** Reads the hash into a full state: defaults, then the figure preset, then explicit keys. */
+function stateFromHash(hash) {
+  const { values, problems } = parseHash(hash);
+  const state = defaultState();
+  if (values.figure) Object.assign(state, figureState(values.figure, 'after'));
+  Object.assign(state, values);
+  return { state, problems };
 }
 
 async function start() {
   const renderer = new WebGLRenderer({ antialias: false, powerPreference: 'high-performance' });
   if (!renderer.capabilities.isWebGL2) throw new Error('This demo needs WebGL2.');
-  renderer.setPixelRatio(Math.min(window.devicePixelRatio, 2));
   renderer.setSize(container.clientWidth, container.clientHeight);
   renderer.shadowMap.enabled = true;
   renderer.toneMapping = ACESFilmicToneMapping; // applied by OutputPass, last
   container.appendChild(renderer.domElement);
 
-  const head = await loadHead({
-    forceStandIn: params.has('standIn'),
-    onProgress: (f) => { progress.value = f; },
-  });
+  const head = await loadHead({ forceStandIn: params.has('standIn'), onProgress: (f) => { progress.value = f; } });
   progress.hidden = true;
   if (head.isStandIn) {
-    showNotice(
+    showNotice(notice,
       `Showing a procedural stand-in bust: the head scan files are missing (${head.missing.join(', ')}); ${head.reason}. ` +
       'Run <code>npm run assets</code> with the files in <code>public/assets/LeePerrySmith/</code>, ' +
-      'or set <code>SSS_ASSETS_DIR</code> to a folder holding them, or run it online to download them.',
-    );
+      'or set <code>SSS_ASSETS_DIR</code> to a folder holding them, or run it online to download them.');
   }
 
   const rig = createHeadScene(head.mesh);
-  const { scene, camera } = rig;
+  const { scene, camera, light } = rig;
+  const material = head.mesh.material;
   const controls = new OrbitControls(camera, renderer.domElement);
-  controls.target.copy(FACE_CENTRE);
   controls.enableDamping = true;
-  controls.update();
 
   // Skin at its physical scale (1 profile mm = 1 mm), light through the ears from the spot light.
-  const sss = new SubsurfaceScattering({
-    scene, camera, light: rig.light, worldUnitInMm: HEAD_WORLD_UNIT_IN_MM, profile: 'skin', samples: 17,
-  });
-  sss.makeSubsurface(head.mesh.material, { widthMm: 1, translucency: 0 });
+  const sss = new SubsurfaceScattering({ scene, camera, light, worldUnitInMm: HEAD_WORLD_UNIT_IN_MM, samples: 'auto' });
+  sss.makeSubsurface(material);
 
   // Linear HDR all the way to OutputPass (tone mapping + sRGB last).
   const composer = new EffectComposer(renderer, new WebGLRenderTarget(1, 1, { type: HalfFloatType }));
@@ -60,34 +70,152 @@ async function start() {
   const outputPass = new OutputPass();
   composer.addPass(outputPass);
 
+  const timings = new PassTimings(renderer);
+  timings.wrap(sss.scenePass, 'scene');
+  timings.wrap(sss.horizontalPass, 'blurH');
+  timings.wrap(sss.verticalPass, 'blurV');
+  timings.wrap(sss.composePass, 'compose');
+
+  const initial = stateFromHash(location.hash);
+  const state = initial.state;
+  let problems = initial.problems;
+
   function resize() {
     const w = Math.max(1, container.clientWidth);
     const h = Math.max(1, container.clientHeight);
     camera.aspect = w / h;
     camera.updateProjectionMatrix();
+    renderer.setPixelRatio(Math.min(window.devicePixelRatio, 2) * state.resolutionScale);
     renderer.setSize(w, h);
     composer.setPixelRatio(renderer.getPixelRatio());
     composer.setSize(w, h);
   }
+
+  // How each key reaches the scene and the pipeline.
+  const kernelKeys = ['profile', 'method', 'samples', 'strength', 'falloff'];
+  const apply = {
+    sss: () => { sss.enabled = state.sss; },
+    kernel: () => sss.setKernel({
+      profile: state.profile, method: state.method, samples: state.samples,
+      strength: [...state.strength], falloff: [...state.falloff],
+    }),
+    material: () => sss.makeSubsurface(material, { widthMm: state.width, translucency: state.translucency, shrinkMm: state.shrink }),
+    followSurface: () => sss.setFollowSurface(state.followSurface, state.depthThreshold),
+    transmittance: () => sss.setTransmittance(state.transmittance),
+    lightDepthSize: () => sss.lightDepth.setSize(state.lightDepthSize),
+    specular: () => { material.specularIntensity = state.specular; material.roughness = state.roughness; },
+    light: () => {
+      setLightDirection(rig, state.lightAzimuth, state.lightElevation);
+      light.intensity = state.lightIntensity;
+      light.color.set(state.lightColor);
+    },
+    split: () => sss.setSplit(state.split),
+    view: () => {
+      sss.setDebugView(state.view === 'kernel' ? 'final' : state.view, { depthRange: 30 });
+      kernelCanvas.hidden = state.view !== 'kernel';
+      if (state.view === 'kernel') drawKernel(kernelCanvas, sss.kernel, state.method === 'reference' ? null : getProfile(state.profile));
+    },
+    resolutionScale: resize,
+    camera: () => {
+      const [x, y, z, tx, ty, tz] = state.camera ?? DEFAULT_CAMERA;
+      camera.position.set(x, y, z);
+      controls.target.set(tx, ty, tz);
+      controls.update();
+    },
+  };
+  const groupOf = (key) => {
+    if (kernelKeys.includes(key)) return 'kernel';
+    if (['width', 'translucency', 'shrink'].includes(key)) return 'material';
+    if (key === 'depthThreshold') return 'followSurface';
+    if (key === 'roughness') return 'specular';
+    if (key.startsWith('light') && key !== 'lightDepthSize') return 'light';
+    return key;
+  };
+  function applyAll() {
+    for (const group of Object.keys(apply)) apply[group]();
+  }
+
+  function writeHash() {
+    const hash = formatHash(state);
+    history.replaceState(null, '', hash ? `#${hash}` : location.pathname + location.search);
+  }
+
+  function onChange(key) {
+    if (key !== 'figure' && key !== 'camera') state.figure = null;
+    apply[groupOf(key)]?.();
+    if (key === 'view' || kernelKeys.includes(key)) apply.view();
+    writeHash();
+  }
+
+  function onFigure(id, side) {
+    Object.assign(state, figureState(id, side));
+    applyAll();
+    panel.refresh();
+    writeHash();
+  }
+
+  function showProblems() {
+    if (problems.length) showNotice(hashNotice, problems.map((p) => `<div>${p.replace(/</g, '&lt;')}</div>`).join(''));
+    else hashNotice.hidden = true;
+  }
+
+  const panel = createControls(state, { onChange, onFigure, timings: () => timings.summary() });
+  applyAll();
+  showProblems();
+  controls.addEventListener('end', () => {
+    state.camera = [...camera.position.toArray(), ...controls.target.toArray()].map((v) => Math.round(v * 1000) / 1000);
+    state.figure = null;
+    writeHash();
+  });
+  // An edited or pasted hash: start again from it (the panel is bound to `state`, so keep the object).
+  window.addEventListener('hashchange', () => {
+    const next = stateFromHash(location.hash);
+    for (const key of Object.keys(state)) delete state[key];
+    Object.assign(state, next.state);
+    problems = next.problems;
+    applyAll();
+    panel.refresh();
+    showProblems();
+  });
   new ResizeObserver(resize).observe(container);
   resize();
 
   let animate = !params.has('still');
-  renderer.setAnimationLoop(() => {
-    if (!animate) return;
+  let lastTimingsUpdate = 0;
+  function frame() {
     controls.update();
+    const t0 = performance.now();
     composer.render();
-  });
-  composer.render();
+    timings.frame(performance.now() - t0);
+    if (t0 - lastTimingsUpdate > 500) {
+      panel.showTimings();
+      lastTimingsUpdate = t0;
+    }
+  }
+  renderer.setAnimationLoop(() => { if (animate) frame(); });
+  frame();
 
   window.demo = {
-    rig, renderer, composer, head, sss,
-    /** The face centre, world units: where tests look for a lit face. */
-    facePoint: FACE_CENTRE,
+    rig, renderer, composer, head, sss, state, panel,
     isStandIn: head.isStandIn,
+    /** The face centre, world units: where tests look for a lit face. */
+    facePoint: rig.facePoint,
+    /** The messages shown for ignored hash values. */
+    get problems() { return problems; },
     /** Stops the animation loop (tests render on demand). */
     stop() { animate = false; },
-    render() { composer.render(); },
+    render() { frame(); },
+    /** Sets a control's value as the panel would. */
+    set(key, value) {
+      state[key] = value;
+      onChange(key);
+      panel.refresh();
+    },
+    figure: onFigure,
+    /** Reads the scene pass's surface attachment (linear depth, width) of the last frame. */
+    readSurface() {
+      return readRenderTargetFloats(renderer, sss.scenePass.renderTarget, 2);
+    },
     /** Renders once and reads the linear HDR image that OutputPass would receive. */
     async readHdr() {
       outputPass.enabled = false;
@@ -106,7 +234,7 @@ async function start() {
 
 window.testReady = start().then(() => true, (error) => {
   progress.hidden = true;
-  showNotice(`The demo could not start: ${error.message}`);
+  showNotice(notice, `The demo could not start: ${error.message}`);
   console.error(error);
   return false;
 });

@@ -9,3 +9,5 @@ export { SubsurfaceScenePass } from './SubsurfaceScenePass.js';
 export { SubsurfaceBlurPass, footprintsOf } from './SubsurfaceBlurPass.js';
 export { SubsurfaceComposePass } from './SubsurfaceComposePass.js';
 export { SubsurfaceScattering, MIN_KERNEL_PIXELS, METHODS } from './SubsurfaceScattering.js';
+export { QuadrantEnergyLookup } from './QuadrantEnergyLookup.js';
+export { DenseSubsurfacePass } from './DenseSubsurfacePass.js';

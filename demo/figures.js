@@ -1,0 +1,66 @@
+// The paper's five figures (Tetzlaff 2013, after Jimenez) as presets: camera, light and settings,
+// and the one setting that differs between the "before" and "after" images.
+// Coordinates are the scan's (Y up, facing +Z, ~5 cm per unit): nose tip (−0.09, 1.10, 2.59),
+// ears at x ≈ ±1.8, y ≈ 1.5, z ≈ −0.16, top of the head at y ≈ 3.97.
+
+/**
+ * @typedef {object} Figure
+ * @property {number} id 1..5, as in the paper
+ * @property {string} title
+ * @property {string} caption what to look for
+ * @property {number[]} camera position x,y,z and target x,y,z
+ * @property {object} settings state values of the "after" image (light, widths, ...)
+ * @property {string} toggle the state key that differs; `before` and `after` are its values
+ */
+
+/** @type {Figure[]} */
+export const FIGURES = [
+  {
+    id: 1,
+    title: 'Nose without and with transmittance',
+    caption: 'Lit from behind and to the side, the thin parts of the nose let red light through.',
+    camera: [3.2, 1.5, 7.5, -0.1, 1.1, 2.2],
+    settings: { lightAzimuth: 150, lightElevation: 5, lightIntensity: 6, translucency: 0.5 },
+    toggle: 'transmittance', before: false, after: true,
+  },
+  {
+    id: 2,
+    title: 'Ear without and with transmittance',
+    caption: 'With the light behind the head the ear glows red: thin, so light crosses it; the skull stays dark.',
+    camera: [6.5, 1.7, 4.5, 1.7, 1.3, -0.2],
+    // Behind and to the ear's side (azimuth 160): from 200 the skull would stand between light and ear.
+    settings: { lightAzimuth: 160, lightElevation: 5, lightIntensity: 6, translucency: 0.5 },
+    toggle: 'transmittance', before: false, after: true,
+  },
+  {
+    id: 3,
+    title: 'Skin without and with the blur',
+    caption: 'The blur softens the diffuse light: pores and bumps keep their specular sparkle but lose the hard, dry look.',
+    camera: [1.6, 1.4, 7.5, 0.9, 1.2, 1.8],
+    settings: { lightAzimuth: 70, lightElevation: 20 },
+    toggle: 'sss', before: false, after: true,
+  },
+  {
+    id: 4,
+    title: 'Edge of the head without and with depth consideration',
+    caption: 'Without it, light bleeds across depth edges (nose over the far cheek); with it, each surface keeps its own light.',
+    camera: [6.5, 1.4, 6.5, 0.4, 1.2, 1.2],
+    settings: { lightAzimuth: -70, lightElevation: 15, width: 3 },
+    toggle: 'followSurface', before: 'off', after: 'drop',
+  },
+  {
+    id: 5,
+    title: 'The full model without and with subsurface scattering',
+    caption: 'Diffusion and transmittance together: softer, warmer skin, red ear rims and nostrils.',
+    camera: [0, 1.0, 21, 0, 0.9, 0],
+    settings: { lightAzimuth: 30, lightElevation: 25 },
+    toggle: 'sss', before: false, after: true,
+  },
+];
+
+/** The state values a figure sets for its "before" or "after" image. */
+export function figureState(id, side = 'after') {
+  const figure = FIGURES.find((f) => f.id === id);
+  if (!figure) throw new RangeError(`figure must be an integer in 1..5, got ${id}`);
+  return { ...figure.settings, camera: figure.camera, figure: id, [figure.toggle]: figure[side] };
+}

@@ -1,0 +1,95 @@
+// The dense 2D reference (validation and the speed-accuracy bench, not production): every pixel
+// whose centre lies within the radius holding `coverage` of the profile's energy contributes its
+// diffuse light, weighted by the profile's exact energy over that pixel's square (from the
+// QuadrantEnergyLookup: exact however narrow the profile is against a pixel). Same units, mask and
+// depth rules as the separable blur; test/oracle/convolution.js (denseConvolutionOracle) computes
+// the same in float64.
+// Defines: FOLLOW_SURFACE (0 off, 1 drop, 2 lerp).
+//
+// Per pixel c: pixels per mm along x and y, s = widthWorld * (P0, P5) / (2 * depth) * (width, height)
+// (depth 1 for an orthographic camera); offsets (di, dj) with (di / s.x)^2 + (dj / s.y)^2 <= radius^2
+// count with E(di, dj) = the energy over [di - 1/2, di + 1/2] / s.x × [dj - 1/2, dj + 1/2] / s.y mm, times
+// 0 off the mask and (drop) 1 - clamp(|dz| / threshold); each channel is renormalised by the weights
+// used. E is the same at (±di, ±dj): it is computed once per quadrant offset, from two new table
+// reads (the left edge is carried along the row).
+
+uniform sampler2D tDiffuse;  // diffuse light, linear HDR
+uniform sampler2D tSurface;  // r: linear view depth (world units), g: world units per profile mm (0 = not subsurface)
+uniform sampler2D tQuadrant; // QuadrantEnergyLookup.texture
+uniform float quadrantRangeMm; // QuadrantEnergyLookup.rangeMm
+uniform float radiusMm;        // the radius holding `coverage` of the energy (widest channel)
+uniform vec2 projectionScale;  // camera.projectionMatrix.elements[0], [5]
+uniform vec2 resolution;       // pixels
+uniform float depthFalloff;    // 1 / depth threshold (world units)
+uniform bool perspective;      // false for an orthographic camera
+uniform int maxRadiusPx;       // bound on the loops (the bench checks the radius stays below it)
+
+// shaders/quadrantEnergy.glsl is inlined here by DenseSubsurfacePass.
+QUADRANT_ENERGY_GLSL
+
+varying vec2 vUv;
+
+bool denseFinite( const in vec3 c ) {
+	return ! ( any( isnan( c ) ) || any( isinf( c ) ) );
+}
+
+// Adds the pixel at `offset` from the centre with profile energy `energy` to the sums.
+void addPixel( const in ivec2 pixel, const in ivec2 offset, const in vec3 energy, const in float centreDepth, const in vec3 centre, inout vec3 sum, inout vec3 weightSum ) {
+	ivec2 texel = pixel + offset;
+	if ( any( lessThan( texel, ivec2( 0 ) ) ) || any( greaterThanEqual( texel, ivec2( resolution ) ) ) ) return;
+	vec2 surface = texelFetch( tSurface, texel, 0 ).rg;
+	vec3 colour = texelFetch( tDiffuse, texel, 0 ).rgb;
+	if ( ! ( surface.g > 0.0 ) || ! denseFinite( colour ) ) return; // the mask: zero weight
+	float keep = 1.0;
+	#if FOLLOW_SURFACE != 0
+		float farness = clamp( abs( surface.r - centreDepth ) * depthFalloff, 0.0, 1.0 );
+		#if FOLLOW_SURFACE == 1
+			keep = 1.0 - farness;
+		#else
+			colour = mix( colour, centre, farness );
+		#endif
+	#endif
+	sum += energy * keep * colour;
+	weightSum += energy * keep;
+}
+
+void main() {
+	ivec2 pixel = ivec2( gl_FragCoord.xy );
+	vec2 surface = texelFetch( tSurface, pixel, 0 ).rg;
+	vec3 centre = texelFetch( tDiffuse, pixel, 0 ).rgb;
+	if ( ! denseFinite( centre ) ) centre = vec3( 0.0 );
+	if ( ! ( surface.g > 0.0 ) ) {
+		gl_FragColor = vec4( centre, 0.0 ); // not subsurface: as it was, like the blur
+		return;
+	}
+
+	vec2 pxPerMm = surface.g * projectionScale / ( 2.0 * ( perspective ? surface.r : 1.0 ) ) * resolution;
+	ivec2 radiusPx = min( ivec2( floor( radiusMm * pxPerMm ) ), ivec2( maxRadiusPx ) );
+	vec3 sum = vec3( 0.0 );
+	vec3 weightSum = vec3( 0.0 );
+	for ( int dj = 0; dj <= radiusPx.y; dj ++ ) {
+		float yMm = float( dj ) / pxPerMm.y;
+		float y0 = ( float( dj ) - 0.5 ) / pxPerMm.y;
+		float y1 = ( float( dj ) + 0.5 ) / pxPerMm.y;
+		int diMax = min( radiusPx.x, int( floor( sqrt( max( radiusMm * radiusMm - yMm * yMm, 0.0 ) ) * pxPerMm.x ) ) );
+		float x0 = - 0.5 / pxPerMm.x;
+		vec3 lowLeft = sssQuadrantEnergy( tQuadrant, x0, y0, quadrantRangeMm );
+		vec3 highLeft = sssQuadrantEnergy( tQuadrant, x0, y1, quadrantRangeMm );
+		for ( int di = 0; di <= diMax; di ++ ) {
+			float x1 = ( float( di ) + 0.5 ) / pxPerMm.x;
+			vec3 lowRight = sssQuadrantEnergy( tQuadrant, x1, y0, quadrantRangeMm );
+			vec3 highRight = sssQuadrantEnergy( tQuadrant, x1, y1, quadrantRangeMm );
+			vec3 energy = highRight - highLeft - lowRight + lowLeft;
+			lowLeft = lowRight;
+			highLeft = highRight;
+			addPixel( pixel, ivec2( di, dj ), energy, surface.r, centre, sum, weightSum );
+			if ( di > 0 ) addPixel( pixel, ivec2( - di, dj ), energy, surface.r, centre, sum, weightSum );
+			if ( dj > 0 ) {
+				addPixel( pixel, ivec2( di, - dj ), energy, surface.r, centre, sum, weightSum );
+				if ( di > 0 ) addPixel( pixel, ivec2( - di, - dj ), energy, surface.r, centre, sum, weightSum );
+			}
+		}
+	}
+	vec3 result = sum / weightSum;
+	gl_FragColor = vec4( denseFinite( result ) ? result : centre, 1.0 );
+}
