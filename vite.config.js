@@ -33,6 +33,8 @@ export default defineConfig(({ mode }) => {
     root,
     base: './',
     publicDir: 'public',
+    // Pages in this repository (the README's snippet, the bench) import the package by its name.
+    resolve: { alias: { 'three-separable-sss': `${root}src/index.js` } },
     build: {
       outDir: 'dist/demo',
       emptyOutDir: true,

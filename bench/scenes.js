@@ -55,11 +55,12 @@ const SYNTHETIC = {
     scene.add(spot, spot.target, new AmbientLight(0xffffff, 0.15));
     return { scene, camera: camera(aspect), light: null, subsurface: [material] };
   },
-  /** A bright slab over the left half, 3 cm in front of a dim one: nothing may cross the step. */
+  /** A bright textured slab over the left half, 3 cm in front of a dim one: nothing may cross the step. */
   depthEdge({ aspect }) {
     const scene = new Scene();
     const far = skinMaterial(0x333333);
-    const near = skinMaterial(0xffffff);
+    const near = skinMaterial(0xffffff, noiseTexture());
+    near.map.repeat.set(2, 4);
     scene.add(new Mesh(new PlaneGeometry(20, 20), far));
     const front = new Mesh(new PlaneGeometry(10, 20), near);
     front.position.set(-5, 0, 30 / SYNTHETIC_UNIT_IN_MM);
@@ -100,7 +101,10 @@ function head() {
  */
 async function heads({ aspect, count = 1 }) {
   const loaded = await head();
-  const rig = createHeadScene(loaded.mesh.clone());
+  // A fresh mesh and material per scene: the pipeline hooks the material it is given.
+  const mesh = loaded.mesh.clone();
+  mesh.material = loaded.mesh.material.clone();
+  const rig = createHeadScene(mesh);
   rig.camera.aspect = aspect;
   rig.camera.updateProjectionMatrix();
   rig.camera.lookAt(FACE_CENTRE);

@@ -18,9 +18,9 @@ export const FIGURES = [
   {
     id: 1,
     title: 'Nose without and with transmittance',
-    caption: 'Lit from behind and to the side, the thin parts of the nose let red light through.',
-    camera: [3.2, 1.5, 7.5, -0.1, 1.1, 2.2],
-    settings: { lightAzimuth: 150, lightElevation: 5, lightIntensity: 6, translucency: 0.5 },
+    caption: 'Lit from the other side and below, the thin parts of the nose (wing, tip) let red light through.',
+    camera: [-3.5, 0.8, 7.5, -0.1, 1.0, 2.3],
+    settings: { lightAzimuth: 80, lightElevation: -15, lightIntensity: 6, translucency: 0.5 },
     toggle: 'transmittance', before: false, after: true,
   },
   {
@@ -28,8 +28,9 @@ export const FIGURES = [
     title: 'Ear without and with transmittance',
     caption: 'With the light behind the head the ear glows red: thin, so light crosses it; the skull stays dark.',
     camera: [6.5, 1.7, 4.5, 1.7, 1.3, -0.2],
-    // Behind and to the ear's side (azimuth 160): from 200 the skull would stand between light and ear.
-    settings: { lightAzimuth: 160, lightElevation: 5, lightIntensity: 6, translucency: 0.5 },
+    // Behind and a little to the ear's side and above: from the other side the skull would stand
+    // between the light and the ear.
+    settings: { lightAzimuth: 175, lightElevation: 15, lightIntensity: 7, translucency: 0.7 },
     toggle: 'transmittance', before: false, after: true,
   },
   {
@@ -43,9 +44,9 @@ export const FIGURES = [
   {
     id: 4,
     title: 'Edge of the head without and with depth consideration',
-    caption: 'Without it, light bleeds across depth edges (nose over the far cheek); with it, each surface keeps its own light.',
-    camera: [6.5, 1.4, 6.5, 0.4, 1.2, 1.2],
-    settings: { lightAzimuth: -70, lightElevation: 15, width: 3 },
+    caption: 'Without it, light bleeds across depth edges (nose over the far cheek, brows, ear): halos; with it, each surface keeps its own light. Width exaggerated to 4 mm.',
+    camera: [4, 1.2, 8, 0.2, 1.1, 1.5],
+    settings: { lightAzimuth: 45, lightElevation: 10, width: 4 },
     toggle: 'followSurface', before: 'off', after: 'drop',
   },
   {

@@ -52,7 +52,7 @@ export class DenseSubsurfacePass extends ShaderPass {
       defines: { FOLLOW_SURFACE: 1 },
       uniforms: {
         tDiffuse: { value: null },
-        tSurface: { value: surfaceTexture },
+        tSurface: { value: null },
         tQuadrant: { value: null },
         quadrantRangeMm: { value: 1 },
         radiusMm: { value: 0 },
@@ -65,6 +65,7 @@ export class DenseSubsurfacePass extends ShaderPass {
       vertexShader,
       fragmentShader,
     });
+    this.uniforms.tSurface.value = surfaceTexture; // after super: ShaderPass clones the textures it is given
     this.camera = camera;
     this._ownsLookup = energyLookup === null;
     this.energyLookup = energyLookup ?? new QuadrantEnergyLookup(profile);
