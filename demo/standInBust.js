@@ -9,7 +9,7 @@
 // (0.08 units ~ 4 mm thick, so back-lit transmittance shows through them); a neck; shoulders.
 // Normals come from finite differences of each part's analytic map (smooth, no seams), tangents
 // from the map's derivative along +u (three.js's convention: w = handedness against +v).
-// Deterministic: no Math.random; the textures use a seeded PRNG. Imports only 'three'.
+// Deterministic: no Math.random; the textures use a seeded PRNG (seededRandom.js).
 
 import {
   BufferGeometry,
@@ -24,6 +24,7 @@ import {
   Uint32BufferAttribute,
   UnsignedByteType,
 } from 'three';
+import { mulberry32 } from './seededRandom.js';
 
 // ---------------------------------------------------------------------------------------------
 // Layout (world units; 1 unit ~ 5 cm). Exported so tests and the demo can aim at the parts.
@@ -303,17 +304,6 @@ export function createStandInBust() {
 // ---------------------------------------------------------------------------------------------
 // textures
 
-/** mulberry32: small seeded PRNG, deterministic across platforms. */
-function mulberry32(seed) {
-  let a = seed >>> 0;
-  return () => {
-    a = (a + 0x6d2b79f5) >>> 0;
-    let t = a;
-    t = Math.imul(t ^ (t >>> 15), t | 1);
-    t ^= t + Math.imul(t ^ (t >>> 7), t | 61);
-    return ((t ^ (t >>> 14)) >>> 0) / 4294967296;
-  };
-}
 
 /** Tileable value noise on an n x n lattice (period = texture size), smooth interpolation. */
 function makeValueNoise(rand, cells) {

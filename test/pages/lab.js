@@ -8,6 +8,7 @@ import { ShaderPass } from 'three/addons/postprocessing/ShaderPass.js';
 import { OutputPass } from 'three/addons/postprocessing/OutputPass.js';
 import * as SSS from '/src/index.js';
 import { readRenderTargetFloats } from '/demo/readback.js';
+import { mulberry32 as random } from '/demo/seededRandom.js';
 
 /** A renderer drawing into an offscreen canvas of `width` × `height` device pixels. */
 function createRenderer(width, height, parameters = {}) {
@@ -30,17 +31,6 @@ async function read(renderer, target, index = 0) {
   return readRenderTargetFloats(renderer, target, index);
 }
 
-/** Deterministic pseudo-random numbers in [0, 1) (mulberry32). */
-function random(seed) {
-  let a = seed >>> 0;
-  return () => {
-    a = (a + 0x6d2b79f5) >>> 0;
-    let t = a;
-    t = Math.imul(t ^ (t >>> 15), t | 1);
-    t ^= t + Math.imul(t ^ (t >>> 7), t | 61);
-    return ((t ^ (t >>> 14)) >>> 0) / 4294967296;
-  };
-}
 
 /** A float DataTexture from f(x, y) → [r, g, b]; nearest filtering so edges stay hard. */
 function dataTexture(width, height, f) {

@@ -11,18 +11,8 @@ import {
 import { transmittanceOracle, thicknessFromLightDepth } from '../oracle/transmittance.js';
 import { computeKernel } from '../../src/kernel.js';
 import { profiles, gaussianSumProfile } from '../../src/profiles.js';
+import { mulberry32 as random } from '../../demo/seededRandom.js';
 
-/** Deterministic pseudo-random numbers (mulberry32). */
-function random(seed) {
-  let a = seed >>> 0;
-  return () => {
-    a = (a + 0x6d2b79f5) >>> 0;
-    let t = a;
-    t = Math.imul(t ^ (t >>> 15), t | 1);
-    t ^= t + Math.imul(t ^ (t >>> 7), t | 61);
-    return ((t ^ (t >>> 14)) >>> 0) / 4294967296;
-  };
-}
 
 /** An image whose pixels are filled by fn(i, j) → { colour, depth, widthWorld }. */
 function makeImage(width, height, fn) {
