@@ -178,9 +178,16 @@ async function start() {
     showProblems();
   });
   new ResizeObserver(resize).observe(container);
+  // The window moved to a screen of another pixel ratio: the container's size may not change.
+  const watchPixelRatio = () => {
+    matchMedia(`(resolution: ${window.devicePixelRatio}dppx)`).addEventListener('change', () => {
+      resize();
+      watchPixelRatio();
+    }, { once: true });
+  };
+  watchPixelRatio();
   resize();
 
-  let animate = !params.has('still');
   let lastTimingsUpdate = 0;
   function frame() {
     controls.update();
@@ -192,7 +199,7 @@ async function start() {
       lastTimingsUpdate = t0;
     }
   }
-  renderer.setAnimationLoop(() => { if (animate) frame(); });
+  if (!params.has('still')) renderer.setAnimationLoop(frame);
   frame();
 
   window.demo = {
@@ -203,7 +210,7 @@ async function start() {
     /** The messages shown for ignored hash values. */
     get problems() { return problems; },
     /** Stops the animation loop (tests render on demand). */
-    stop() { animate = false; },
+    stop() { renderer.setAnimationLoop(null); },
     render() { frame(); },
     /** Sets a control's value as the panel would. */
     set(key, value) {

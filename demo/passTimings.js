@@ -2,6 +2,8 @@
 // the median of the last 30 is shown), CPU frame time and fps otherwise.
 
 const WINDOW = 30;
+/** Queries older than this many are given up (e.g. after a context loss): bounded memory. */
+const MAX_PENDING = 64;
 
 function median(values) {
   const sorted = [...values].sort((a, b) => a - b);
@@ -37,6 +39,7 @@ export class PassTimings {
       } finally {
         this.gl.endQuery(this.ext.TIME_ELAPSED_EXT);
         this.pending.push({ name, query });
+        while (this.pending.length > MAX_PENDING) this.gl.deleteQuery(this.pending.shift().query);
       }
     };
   }

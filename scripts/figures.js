@@ -39,15 +39,19 @@ async function main() {
       return window.demo.isStandIn;
     });
     if (standIn) console.warn('The head scan is missing: the figures show the procedural stand-in (run npm run assets).');
+    const images = new Map();
     for (const figure of FIGURES) {
       for (const side of ['before', 'after']) {
         await page.evaluate((id, s) => { window.demo.figure(id, s); window.demo.render(); }, figure.id, side);
-        const file = join(outDir, `figure-${figure.id}-${side}.png`);
-        await page.screenshot({ path: file, clip: { x: 0, y: 0, width: WIDTH, height: HEIGHT } });
-        console.log(`wrote ${file}`);
+        images.set(`figure-${figure.id}-${side}.png`, await page.screenshot({ clip: { x: 0, y: 0, width: WIDTH, height: HEIGHT } }));
       }
     }
+    // Keep the committed figures unless every new one rendered cleanly.
     if (errors.length) throw new Error(`the page reported errors:\n${errors.join('\n')}`);
+    for (const [name, png] of images) {
+      await writeFile(join(outDir, name), png);
+      console.log(`wrote docs/figures/${name}`);
+    }
     await writeFile(join(root, 'docs/FIGURES.md'), figuresMarkdown());
     console.log('wrote docs/FIGURES.md');
   } finally {

@@ -6,8 +6,8 @@
 
 uniform sampler2D tLight;       // location 0: specular + emissive of subsurface pixels, full colour elsewhere
 uniform sampler2D tScattered;   // blurred diffuse light
-uniform sampler2D tUnscattered; // the diffuse light before the blur
-uniform sampler2D tSurface;     // r: linear view depth (world units), g > 0 on subsurface pixels
+uniform sampler2D tUnscattered; // the diffuse light before the blur; alpha 1 on subsurface pixels (the mask)
+uniform sampler2D tSurface;     // r: linear view depth (world units)
 uniform float splitX;           // pixels left of this column show the unblurred diffuse light
 uniform float debugDepthRange;  // world units mapped to white in the depth view
 uniform float debugThicknessRangeMm; // millimetres mapped to white in the thickness view
@@ -22,7 +22,7 @@ void main() {
 	ivec2 pixel = ivec2( gl_FragCoord.xy );
 	vec4 light = texelFetch( tLight, pixel, 0 );
 	vec2 surface = texelFetch( tSurface, pixel, 0 ).rg;
-	bool subsurface = surface.g > 0.0;
+	bool subsurface = texelFetch( tUnscattered, pixel, 0 ).a > 0.0;
 	vec3 diffuse = gl_FragCoord.x < splitX ? texelFetch( tUnscattered, pixel, 0 ).rgb : texelFetch( tScattered, pixel, 0 ).rgb;
 	vec3 colour;
 	#if DEBUG_VIEW == 0

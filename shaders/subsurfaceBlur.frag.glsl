@@ -1,6 +1,6 @@
 // Stage 3: one direction of the separable, depth- and mask-aware subsurface blur.
 // Defines: AXIS (0 = horizontal, 1 = vertical), SAMPLES (taps, odd), FOLLOW_SURFACE (0 off, 1 drop,
-// 2 lerp) and KERNEL_MODE:
+// 2 lerp), FORESHORTEN (0 or 1: grazing-angle correction, below) and KERNEL_MODE:
 //   0 'taps': fixed weights and offsets (computeKernel's reference or marginal kernel);
 //   1 'footprint': per pixel, the marginal kernel's footprints are snapped to the pixel grid (at
 //     least one pixel each) and weighted by the exact energy of the profile's marginal over them,
@@ -13,23 +13,39 @@
 //   P the projection's scale on this axis (P[0] or P[5]: the aspect fix, REFERENCE §4) and depth 1
 //   for an orthographic camera;
 // - a tap inside the screen lies between two texels along the axis; each texel counts with its
-//   linear-interpolation weight times its mask (0 off subsurface pixels) times, in 'drop' mode,
+//   linear-interpolation weight times its mask (the diffuse light's alpha: 0 off subsurface pixels,
+//   whatever their width) times, in 'drop' mode,
 //   1 - farness (its depth difference over the threshold), so no colour crosses a depth edge or
 //   the mask through filtering; in 'lerp' mode each texel's colour is lerped to the centre's;
 // - the tap's kernel weight is scaled by the sum of its texel weights and each channel is
-//   renormalised by the weights used.
+//   renormalised by the weights used;
+// - grazing angles (FORESHORTEN, default on): the surface's depth slope along the axis, in world
+//   units per pixel, comes from the two neighbours (central difference; one-sided when a neighbour
+//   is off the mask or steeper than MAX_SLOPE = 4; 0 when both are). A surface tilted by theta puts
+//   1 / cos(theta) = sqrt(1 + s^2) of surface under each pixel (s: depth change per world unit
+//   across), so the step shrinks by cos(theta), as the seed paper proposes with a normal buffer; and
+//   'drop'/'lerp' measure each texel's depth against the plane through the centre (centre depth +
+//   slope * texel offset), so a tilted surface is not mistaken for a depth edge.
 
-uniform sampler2D tDiffuse;  // diffuse light, linear HDR
-uniform sampler2D tSurface;  // r: linear view depth (world units), g: world units per kernel mm (0 = not subsurface)
+uniform sampler2D tDiffuse;  // diffuse light, linear HDR; alpha 1 on subsurface pixels, 0 elsewhere (the mask)
+uniform sampler2D tSurface;  // r: linear view depth (world units), g: world units per kernel mm x strength
 uniform vec4 kernel[ SAMPLES ]; // (weight R, G, B, offset in kernel mm), centre tap first
-uniform float kernelRadiusMm;   // largest |offset|
+uniform float kernelRadiusMm;   // the kernel's reach: below half a pixel a pixel does no work
+uniform vec3 strength;          // 'footprint' mode: mix with no scattering (the reference's strength)
 uniform float projectionScale;  // camera.projectionMatrix.elements[0] or [5]
 uniform float resolution;       // pixels along AXIS
 uniform float depthFalloff;     // 1 / depth threshold (world units): dz beyond it is another surface
 uniform bool perspective;       // false for an orthographic camera: the step does not shrink with depth
 
+// Steeper than this (76 degrees) a neighbour counts as another surface for the slope estimate:
+// at coarse resolutions a real depth edge (nose over cheek, ~20 mm) can be only a few pixel-widths
+// deep, and must not pass for a tilted plane.
+#define MAX_SLOPE 4.0
+
 #if KERNEL_MODE == 1
 	#define BLOCKS ( ( SAMPLES - 1 ) / 2 - 1 ) // footprints per side before the tail
+	// Energy per side below which the rest of the kernel is left out (invisible even at radiance 1e4).
+	#define ENERGY_LEFT 1e-5
 	uniform sampler2D tProfile;                 // ProfileLookup.texture, row 1: G(x) = ∫_0^x marginal
 	uniform float marginalRangeMm;              // ProfileLookup.marginalRangeMm
 	uniform float footprintEdgesMm[ EDGE_ARRAY_SIZE ]; // outer edge of each footprint, mm (max(BLOCKS, 1) entries)
@@ -46,16 +62,17 @@ bool sssFinite( const in vec3 c ) {
 
 // Weight of one texel of a tap: its interpolation weight, 0 off the mask, and in 'drop' mode less
 // the farther its surface is from the centre's. In 'lerp' mode its colour moves to the centre's.
-float texelWeight( const in ivec2 texel, const in float interpolation, const in float centreDepth, const in vec3 centre, out vec3 colour ) {
-	vec2 surface = texelFetch( tSurface, texel, 0 ).rg;
-	colour = texelFetch( tDiffuse, texel, 0 ).rgb;
-	if ( ! ( surface.g > 0.0 ) || ! sssFinite( colour ) ) {
+float texelWeight( const in ivec2 texel, const in float interpolation, const in float expectedDepth, const in vec3 centre, out vec3 colour ) {
+	vec4 light = texelFetch( tDiffuse, texel, 0 );
+	colour = light.rgb;
+	if ( ! ( light.a > 0.0 ) || ! sssFinite( colour ) ) {
 		colour = vec3( 0.0 );
 		return 0.0;
 	}
 	float weight = interpolation;
 	#if FOLLOW_SURFACE != 0
-		float farness = clamp( abs( surface.r - centreDepth ) * depthFalloff, 0.0, 1.0 );
+		float depth = texelFetch( tSurface, texel, 0 ).r;
+		float farness = clamp( abs( depth - expectedDepth ) * depthFalloff, 0.0, 1.0 );
 		#if FOLLOW_SURFACE == 1
 			weight *= 1.0 - farness; // drop and renormalise (Unreal, HDRP)
 		#else
@@ -65,8 +82,9 @@ float texelWeight( const in ivec2 texel, const in float interpolation, const in 
 	return weight;
 }
 
-// Adds one tap at `offsetPx` along the axis with kernel weight `weight` to the sums.
-void addTap( const in float offsetPx, const in vec3 weight, const in ivec2 pixel, const in float centreDepth, const in vec3 centre, inout vec3 sum, inout vec3 weightSum ) {
+// Adds one tap at `offsetPx` along the axis with kernel weight `weight` to the sums. Texels are
+// compared with the depth the centre's plane predicts there: centreDepth + slope * (texel offset).
+void addTap( const in float offsetPx, const in vec3 weight, const in ivec2 pixel, const in float centreDepth, const in float slope, const in vec3 centre, inout vec3 sum, inout vec3 weightSum ) {
 	float position = float( pixel[ AXIS ] ) + 0.5 + offsetPx;
 	if ( position < 0.0 || position >= resolution ) return;
 	// The two texels around the tap along the axis (centres at integer + 0.5, clamped).
@@ -79,8 +97,8 @@ void addTap( const in float offsetPx, const in vec3 weight, const in ivec2 pixel
 	texel0[ AXIS ] = clamp( int( below ), 0, last );
 	texel1[ AXIS ] = clamp( int( below ) + 1, 0, last );
 	vec3 colour0, colour1;
-	float weight0 = texelWeight( texel0, 1.0 - fraction, centreDepth, centre, colour0 );
-	float weight1 = texelWeight( texel1, fraction, centreDepth, centre, colour1 );
+	float weight0 = texelWeight( texel0, 1.0 - fraction, centreDepth + slope * float( texel0[ AXIS ] - pixel[ AXIS ] ), centre, colour0 );
+	float weight1 = texelWeight( texel1, fraction, centreDepth + slope * float( texel1[ AXIS ] - pixel[ AXIS ] ), centre, colour1 );
 	float kept = weight0 + weight1;
 	if ( kept <= 0.0 ) return;
 	sum += weight * ( colour0 * weight0 + colour1 * weight1 );
@@ -90,16 +108,34 @@ void addTap( const in float offsetPx, const in vec3 weight, const in ivec2 pixel
 void main() {
 	ivec2 pixel = ivec2( gl_FragCoord.xy );
 	vec2 surface = texelFetch( tSurface, pixel, 0 ).rg;
-	vec3 centre = texelFetch( tDiffuse, pixel, 0 ).rgb;
-	if ( ! sssFinite( centre ) ) centre = vec3( 0.0 );
+	vec4 centreLight = texelFetch( tDiffuse, pixel, 0 );
+	vec3 centre = sssFinite( centreLight.rgb ) ? centreLight.rgb : vec3( 0.0 );
 
 	// Not a subsurface pixel: pass through so the next pass sees the same mask.
-	if ( ! ( surface.g > 0.0 ) ) {
+	if ( ! ( centreLight.a > 0.0 ) ) {
 		gl_FragColor = vec4( centre, 0.0 );
 		return;
 	}
 
 	float stepPx = surface.g * projectionScale / ( 2.0 * ( perspective ? surface.r : 1.0 ) ) * resolution;
+	float slope = 0.0; // depth change per pixel along the axis, world units
+	#if FORESHORTEN == 1
+		// World units one pixel spans across the view at this depth.
+		float pixelWorld = 2.0 * ( perspective ? surface.r : 1.0 ) / ( projectionScale * resolution );
+		ivec2 before = pixel;
+		ivec2 after = pixel;
+		before[ AXIS ] = max( pixel[ AXIS ] - 1, 0 );
+		after[ AXIS ] = min( pixel[ AXIS ] + 1, int( resolution ) - 1 );
+		vec2 surfaceBefore = texelFetch( tSurface, before, 0 ).rg;
+		vec2 surfaceAfter = texelFetch( tSurface, after, 0 ).rg;
+		float slopeBefore = surface.r - surfaceBefore.r;
+		float slopeAfter = surfaceAfter.r - surface.r;
+		bool useBefore = surfaceBefore.g > 0.0 && before != pixel && abs( slopeBefore ) <= MAX_SLOPE * pixelWorld;
+		bool useAfter = surfaceAfter.g > 0.0 && after != pixel && abs( slopeAfter ) <= MAX_SLOPE * pixelWorld;
+		slope = useBefore && useAfter ? 0.5 * ( slopeBefore + slopeAfter ) : useBefore ? slopeBefore : useAfter ? slopeAfter : 0.0;
+		float tilt = slope / pixelWorld;
+		stepPx *= inversesqrt( 1.0 + tilt * tilt ); // cos(theta)
+	#endif
 	// Below half a pixel the kernel cannot move light to another pixel: no work.
 	if ( ! ( stepPx * kernelRadiusMm >= 0.5 ) ) {
 		gl_FragColor = vec4( centre, 1.0 );
@@ -113,7 +149,7 @@ void main() {
 		weightSum = kernel[ 0 ].rgb;
 		sum = centre * weightSum;
 		for ( int i = 1; i < SAMPLES; i ++ ) {
-			addTap( kernel[ i ].a * stepPx, kernel[ i ].rgb, pixel, surface.r, centre, sum, weightSum );
+			addTap( kernel[ i ].a * stepPx, kernel[ i ].rgb, pixel, surface.r, slope, centre, sum, weightSum );
 		}
 	#else
 		// The centre pixel is its own footprint: |x| < 0.5 px.
@@ -122,25 +158,28 @@ void main() {
 		sum = centre * weightSum;
 		int lastEdge = 0; // pixels; footprint j covers pixels lastEdge + 1 .. edge on each side
 		for ( int j = 0; j < BLOCKS; j ++ ) {
-			if ( all( greaterThan( energyBelow, vec3( 0.5 - 1e-5 ) ) ) ) break; // nothing left
+			if ( all( greaterThan( energyBelow, vec3( 0.5 - ENERGY_LEFT ) ) ) ) break; // nothing left
 			int edge = max( int( floor( footprintEdgesMm[ j ] * stepPx + 0.5 ) ), lastEdge + 1 );
 			vec3 energy = sssReadProfile( tProfile, 1, ( float( edge ) + 0.5 ) / stepPx, marginalRangeMm );
 			vec3 weight = energy - energyBelow;
 			float offsetPx = 0.5 * float( lastEdge + 1 + edge ); // the footprint's middle
-			addTap( offsetPx, weight, pixel, surface.r, centre, sum, weightSum );
-			addTap( - offsetPx, weight, pixel, surface.r, centre, sum, weightSum );
+			addTap( offsetPx, weight, pixel, surface.r, slope, centre, sum, weightSum );
+			addTap( - offsetPx, weight, pixel, surface.r, slope, centre, sum, weightSum );
 			energyBelow = energy;
 			lastEdge = edge;
 		}
 		// The tail beyond the last edge, sampled where the kernel put its outermost tap.
 		vec3 tail = vec3( 0.5 ) - energyBelow;
-		if ( any( greaterThan( tail, vec3( 1e-6 ) ) ) ) {
+		if ( any( greaterThan( tail, vec3( ENERGY_LEFT ) ) ) ) {
 			float offsetPx = max( tailOffsetMm * stepPx, float( lastEdge + 1 ) );
-			addTap( offsetPx, tail, pixel, surface.r, centre, sum, weightSum );
-			addTap( - offsetPx, tail, pixel, surface.r, centre, sum, weightSum );
+			addTap( offsetPx, tail, pixel, surface.r, slope, centre, sum, weightSum );
+			addTap( - offsetPx, tail, pixel, surface.r, slope, centre, sum, weightSum );
 		}
 	#endif
 
 	vec3 result = sum / weightSum;
+	#if KERNEL_MODE == 1
+		result = mix( centre, result, strength ); // 'taps' kernels have the strength built in
+	#endif
 	gl_FragColor = vec4( sssFinite( result ) ? result : centre, 1.0 );
 }

@@ -106,21 +106,23 @@ export class LightDepthTarget {
     const previousBackground = scene.background;
     const previousShadowUpdate = renderer.shadowMap.autoUpdate;
 
-    scene.overrideMaterial = this.material;
-    scene.background = null;
-    renderer.shadowMap.autoUpdate = false; // the light's view needs no shadow maps
-    renderer.setRenderTarget(this.renderTarget);
-    renderer.setClearColor(0x000000, 0); // 0 = no surface
-    renderer.autoClear = false;
-    renderer.clear(true, true, false);
-    renderer.render(scene, this.camera);
-
-    scene.overrideMaterial = previousOverride;
-    scene.background = previousBackground;
-    renderer.shadowMap.autoUpdate = previousShadowUpdate;
-    renderer.setClearColor(_clearColor, previousAlpha);
-    renderer.autoClear = previousAutoClear;
-    renderer.setRenderTarget(previousTarget);
+    try {
+      scene.overrideMaterial = this.material;
+      scene.background = null;
+      renderer.shadowMap.autoUpdate = false; // the light's view needs no shadow maps
+      renderer.setRenderTarget(this.renderTarget);
+      renderer.setClearColor(0x000000, 0); // 0 = no surface
+      renderer.autoClear = false;
+      renderer.clear(true, true, false);
+      renderer.render(scene, this.camera);
+    } finally {
+      scene.overrideMaterial = previousOverride;
+      scene.background = previousBackground;
+      renderer.shadowMap.autoUpdate = previousShadowUpdate;
+      renderer.setClearColor(_clearColor, previousAlpha);
+      renderer.autoClear = previousAutoClear;
+      renderer.setRenderTarget(previousTarget);
+    }
   }
 
   /** Frees the target and the depth material. */

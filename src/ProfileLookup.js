@@ -11,7 +11,7 @@ import { checkInteger } from './parameterChecks.js';
 /** Below this the tail of a row is invisible even at radiance 1000: the range ends there. */
 const TAIL = 1e-5;
 
-/** Smallest x (mm, doubling from 0.25) past which every channel of f(x) is below `TAIL`. */
+/** Smallest x (mm, growing by 25 % from 0.25) past which every channel of f(x) is below `TAIL`. */
 function rangeWhere(f) {
   let x = 0.25;
   while (Math.max(...f(x)) >= TAIL && x < 1e5) x *= 1.25;
@@ -32,10 +32,12 @@ function radiusHolding(profile, tail) {
   return hi;
 }
 
+/** A diffusion profile's T(d) and marginal CDF as a float texture for the shaders (see above). */
 export class ProfileLookup {
   /**
    * @param {string | object} [profile='skin'] a profile name or object (see `profiles`)
-   * @param {{ size?: number }} [options] texels per row (16..4096)
+   * @param {{ size?: number }} [options] texels per row (16..4096); 512 puts skin's narrowest
+   *   Gaussian (σ = 0.08 mm) over ~10 texels of the square-root spacing, linear interpolation error < 1e-6
    */
   constructor(profile = 'skin', { size = 512 } = {}) {
     checkInteger('size', size, 16, 4096, 'texels');

@@ -2,14 +2,14 @@
 // (horizontal, then vertical) make the paper's two screen-space passes. Only subsurface pixels
 // change; taps on other pixels, off screen or on another surface are dropped and the rest
 // renormalised per channel (or lerped back to the centre colour, as in the reference).
-import { Vector4 } from 'three';
+import { Vector3, Vector4 } from 'three';
 import { ShaderPass } from 'three/addons/postprocessing/ShaderPass.js';
 import vertexShader from '../shaders/fullscreen.vert.glsl?raw';
 import blurGlsl from '../shaders/subsurfaceBlur.frag.glsl?raw';
 import profileLookupGlsl from '../shaders/profileLookup.glsl?raw';
 import { kernelRadiusMm } from './kernel.js';
 import { ProfileLookup } from './ProfileLookup.js';
-import { checkNumber, checkOneOf } from './parameterChecks.js';
+import { checkNumber, checkOneOf, checkRgb } from './parameterChecks.js';
 import { describe } from './rendererSupport.js';
 
 export const FOLLOW_SURFACE_MODES = ['off', 'drop', 'lerp'];
@@ -32,6 +32,10 @@ export function footprintsOf(kernel) {
   return { edgesMm, tailOffsetMm: offsets[offsets.length - 1] ?? 0 };
 }
 
+/**
+ * One direction of the separable subsurface blur (a ShaderPass): blurs the diffuse light of
+ * subsurface pixels only, depth- and mask-aware, in physical units.
+ */
 export class SubsurfaceBlurPass extends ShaderPass {
   /**
    * @param {object} options
@@ -49,10 +53,14 @@ export class SubsurfaceBlurPass extends ShaderPass {
    * @param {'drop'|'lerp'|'off'} [options.followSurface='drop'] what a tap on another surface does
    * @param {number} [options.depthThresholdWorld=0.006] depth difference (world units) at which a tap
    *   counts fully as another surface
+   * @param {boolean} [options.foreshortening=true] grazing angles: shrink the step by cos(tilt) of the
+   *   surface along the axis and compare depths with the local plane (see the shader's header)
+   * @param {number[]} [options.strength=[1, 1, 1]] RGB in [0, 1], 'footprint' mode: mix with no
+   *   scattering (fixed-tap kernels carry their strength in their weights)
    */
   constructor({
     direction, kernel, camera, surfaceTexture, diffuseTexture = null, mode = 'taps', profileLookup = null,
-    followSurface = 'drop', depthThresholdWorld = 0.006,
+    followSurface = 'drop', depthThresholdWorld = 0.006, foreshortening = true, strength = [1, 1, 1],
   } = {}) {
     checkOneOf('direction', direction, DIRECTIONS);
     checkOneOf('mode', mode, KERNEL_MODES);
@@ -65,12 +73,16 @@ export class SubsurfaceBlurPass extends ShaderPass {
     }
     super({
       name: `SubsurfaceBlurPass(${direction})`,
-      defines: { AXIS: direction === 'horizontal' ? 0 : 1, SAMPLES: 1, EDGE_ARRAY_SIZE: 1, FOLLOW_SURFACE: 1, KERNEL_MODE: KERNEL_MODES.indexOf(mode) },
+      defines: {
+        AXIS: direction === 'horizontal' ? 0 : 1, SAMPLES: 1, EDGE_ARRAY_SIZE: 1, FOLLOW_SURFACE: 1,
+        KERNEL_MODE: KERNEL_MODES.indexOf(mode), FORESHORTEN: 1,
+      },
       uniforms: {
         tDiffuse: { value: null },
         tSurface: { value: null },
         kernel: { value: [] },
         kernelRadiusMm: { value: 0 },
+        strength: { value: new Vector3(1, 1, 1) },
         projectionScale: { value: 1 },
         resolution: { value: 1 },
         depthFalloff: { value: 1 },
@@ -92,6 +104,32 @@ export class SubsurfaceBlurPass extends ShaderPass {
     this.diffuseTexture = diffuseTexture;
     this.setKernel(kernel);
     this.setFollowSurface(followSurface, depthThresholdWorld);
+    this.setForeshortening(foreshortening);
+    this.setStrength(strength);
+  }
+
+  /** @param {number[]} strength RGB in [0, 1] ('footprint' mode; see the constructor) */
+  setStrength(strength) {
+    this.uniforms.strength.value.fromArray(checkRgb('strength', strength, { min: 0, max: 1 }));
+  }
+
+  /**
+   * The reach of the kernel, mm: below half a pixel of it a pixel does no work. 'taps': the outermost
+   * tap; 'footprint': the radius holding 99 % of the marginal (its tail is sampled at least a pixel out).
+   */
+  get radiusMm() {
+    return this.mode === 'footprint' ? this.profileLookup.marginalRadiusMm : kernelRadiusMm(this.kernel);
+  }
+
+  /** @param {boolean} enabled the grazing-angle correction (see the constructor) */
+  setForeshortening(enabled) {
+    if (typeof enabled !== 'boolean') throw new TypeError(`SubsurfaceBlurPass: foreshortening must be a boolean, got ${describe(enabled)}`);
+    const define = enabled ? 1 : 0;
+    if (this.material.defines.FORESHORTEN !== define) {
+      this.material.defines.FORESHORTEN = define;
+      this.material.needsUpdate = true;
+    }
+    this.foreshortening = enabled;
   }
 
   /** null: blur the composer's read buffer; a texture: blur that instead. */
@@ -166,6 +204,7 @@ export class SubsurfaceBlurPass extends ShaderPass {
 
   render(renderer, writeBuffer, readBuffer, deltaTime, maskActive) {
     if (this.profileLookup) this.uniforms.marginalRangeMm.value = this.profileLookup.marginalRangeMm;
+    this.uniforms.kernelRadiusMm.value = this.radiusMm;
     const projection = this.camera.projectionMatrix.elements;
     this.uniforms.projectionScale.value = this.direction === 'horizontal' ? projection[0] : projection[5];
     this.uniforms.perspective.value = this.camera.isPerspectiveCamera === true || projection[15] === 0;

@@ -10,6 +10,7 @@ import { checkOneOf, checkNumber } from './parameterChecks.js';
 /** What the compose pass can show: the final image or one of its ingredients. */
 export const DEBUG_VIEWS = ['final', 'diffuse', 'specular', 'depth', 'mask', 'thickness', 'transmittance'];
 
+/** Adds the scattered diffuse light to the specular light (a ShaderPass); split and debug views. */
 export class SubsurfaceComposePass extends ShaderPass {
   /**
    * @param {object} options
@@ -45,11 +46,14 @@ export class SubsurfaceComposePass extends ShaderPass {
 
   /**
    * Shows the final image or one ingredient: 'final', 'diffuse' (scattered), 'specular', 'depth'
-   * (near = white over `depthRange` world units), 'mask', 'thickness' (`thicknessRangeMm` = white),
+   * (near = white over `depthRange` world units), 'mask', 'thickness' (the thickness T(d) is read
+   * at, in profile mm: physical mm × (1 − translucency) / widthMm; `thicknessRangeMm` = white),
    * 'transmittance'. The last two need the materials to write them (SubsurfaceScattering.setDebugView).
    */
   setDebugView(view, { depthRange = 100, thicknessRangeMm = 10 } = {}) {
     checkOneOf('view', view, DEBUG_VIEWS);
+    checkNumber('depthRange', depthRange, { min: 0, minExclusive: true, max: Infinity, unit: 'world units' });
+    checkNumber('thicknessRangeMm', thicknessRangeMm, { min: 0, minExclusive: true, max: Infinity, unit: 'mm' });
     const define = DEBUG_VIEWS.indexOf(view);
     if (this.material.defines.DEBUG_VIEW !== define) {
       this.material.defines.DEBUG_VIEW = define;

@@ -5,7 +5,7 @@
 //   composer.addPass(new OutputPass());
 // Pipeline: light depth (stage 1) → scene split (2) → horizontal blur → vertical blur (3) → compose (4).
 import { HalfFloatType, Vector3 } from 'three';
-import { computeKernel, kernelRadiusMm } from './kernel.js';
+import { computeKernel } from './kernel.js';
 import { getProfile } from './profiles.js';
 import { checkNumber, checkOneOf } from './parameterChecks.js';
 import { describe } from './rendererSupport.js';
@@ -13,10 +13,16 @@ import { LightDepthTarget } from './LightDepthTarget.js';
 import { ProfileLookup } from './ProfileLookup.js';
 import { makeSubsurface as hookMaterial, getSubsurface } from './subsurfaceMaterial.js';
 import { SubsurfaceScenePass } from './SubsurfaceScenePass.js';
-import { SubsurfaceBlurPass } from './SubsurfaceBlurPass.js';
+import { SubsurfaceBlurPass, FOLLOW_SURFACE_MODES } from './SubsurfaceBlurPass.js';
 import { SubsurfaceComposePass } from './SubsurfaceComposePass.js';
 
 const _corner = new Vector3();
+
+/** Upper bound on worldUnitInMm and depthThresholdMm: a kilometre per unit; beyond is a mistake. */
+const MAX_SCALE_MM = 1e6;
+
+/** Defaults of the per-material options (makeSubsurface). */
+const MATERIAL_DEFAULTS = { widthMm: 1, strength: 1, transmittance: true, translucency: 0, shrinkMm: 0.6 };
 
 /** How the blur weighs its taps (see the constructor). */
 export const METHODS = ['footprint', 'marginal', 'reference'];
@@ -31,6 +37,14 @@ export const AUTO_SAMPLES = [5, 9, 13, 17, 25, 33, 45, 63];
 /** Below half a pixel a kernel cannot move light into another pixel (issue: "no work"). */
 export const MIN_KERNEL_PIXELS = 0.5;
 
+function checkDepthThreshold(depthThresholdMm) {
+  return checkNumber('depthThresholdMm', depthThresholdMm, { min: 0, minExclusive: true, max: MAX_SCALE_MM, unit: 'mm' });
+}
+
+/**
+ * The whole pipeline, wired into an EffectComposer: light depth, scene split, two blurs, compose.
+ * `enabled = false` turns the blur off (transmittance stays; see setTransmittance).
+ */
 export class SubsurfaceScattering {
   /**
    * @param {object} options
@@ -49,21 +63,22 @@ export class SubsurfaceScattering {
    * @param {number[]} [options.falloff] RGB, (0, 10]: reference method only
    * @param {'drop'|'lerp'|'off'} [options.followSurface='drop']
    * @param {number} [options.depthThresholdMm=6] depth step (mm) treated as another surface
+   * @param {boolean} [options.foreshortening=true] narrow the blur on surfaces seen at grazing angles
    * @param {number} [options.lightDepthSize=1024] light depth map resolution, pixels
    * @param {number} [options.type=HalfFloatType] HalfFloatType or FloatType light targets
    */
   constructor({
     scene, camera, light = null, worldUnitInMm = 1000, profile = 'skin', method = 'footprint', samples = 17,
-    strength, falloff, followSurface = 'drop', depthThresholdMm = 6, lightDepthSize = 1024, type = HalfFloatType,
+    strength, falloff, followSurface = 'drop', depthThresholdMm = 6, foreshortening = true, lightDepthSize = 1024,
+    type = HalfFloatType,
   } = {}) {
     if (!scene || scene.isScene !== true) throw new TypeError(`SubsurfaceScattering: scene must be a THREE.Scene, got ${describe(scene)}`);
     if (!camera || camera.isCamera !== true) throw new TypeError(`SubsurfaceScattering: camera must be a THREE.Camera, got ${describe(camera)}`);
     if (light !== null && !(light?.isSpotLight || light?.isDirectionalLight)) {
       throw new TypeError(`SubsurfaceScattering: light must be a THREE.SpotLight, THREE.DirectionalLight or null, got ${describe(light)}`);
     }
-    checkNumber('worldUnitInMm', worldUnitInMm, { min: 0, minExclusive: true, max: 1e9, unit: 'mm' });
-    checkNumber('depthThresholdMm', depthThresholdMm, { min: 0, minExclusive: true, max: 1e6, unit: 'mm' });
-    checkOneOf('followSurface', followSurface, ['drop', 'lerp', 'off']);
+    checkNumber('worldUnitInMm', worldUnitInMm, { min: 0, minExclusive: true, max: MAX_SCALE_MM, unit: 'mm' });
+    checkOneOf('followSurface', followSurface, FOLLOW_SURFACE_MODES);
     checkOneOf('method', method, METHODS);
     this.autoSamples = samples === 'auto';
     if (this.autoSamples) samples = 17;
@@ -74,7 +89,8 @@ export class SubsurfaceScattering {
     this.enabled = true;
     this.method = method;
     this._kernelOptions = { profile: getProfile(profile), samples, strength, falloff };
-    this.kernel = computeKernel(this._kernelArguments());
+    this._kernels = new Map(); // computed kernels by their arguments: 'auto' switches between a few
+    this.kernel = this._computeKernel(this._kernelOptions, method);
     this.profileLookup = new ProfileLookup(this._kernelOptions.profile);
     this.lightDepth = light ? new LightDepthTarget(light, { size: lightDepthSize }) : null;
 
@@ -86,7 +102,9 @@ export class SubsurfaceScattering {
       camera,
       surfaceTexture: this.scenePass.surfaceTexture,
       followSurface,
-      depthThresholdWorld: depthThresholdMm / worldUnitInMm,
+      depthThresholdWorld: checkDepthThreshold(depthThresholdMm) / worldUnitInMm,
+      foreshortening,
+      strength: strength ?? [1, 1, 1],
     };
     this.horizontalPass = new SubsurfaceBlurPass({ ...common, direction: 'horizontal', diffuseTexture: this.scenePass.diffuseTexture });
     this.verticalPass = new SubsurfaceBlurPass({ ...common, direction: 'vertical' });
@@ -134,7 +152,10 @@ export class SubsurfaceScattering {
    * @param {{ widthMm?: number, strength?: number, transmittance?: boolean, translucency?: number, shrinkMm?: number }} [options]
    */
   makeSubsurface(material, options = {}) {
-    const o = { widthMm: 1, strength: 1, transmittance: true, translucency: 0, shrinkMm: 0.6, ...this.materials.get(material)?.options, ...options };
+    const o = { ...MATERIAL_DEFAULTS, ...this.materials.get(material)?.options, ...options };
+    // Checked here too, so a later setTransmittance(true) cannot fail half-way.
+    checkNumber('translucency', o.translucency, { min: 0, max: 1, maxExclusive: true });
+    checkNumber('shrinkMm', o.shrinkMm, { min: 0, max: 1000, unit: 'mm' });
     const hook = hookMaterial(material, {
       widthMm: o.widthMm,
       strength: o.strength,
@@ -176,9 +197,12 @@ export class SubsurfaceScattering {
     this.composePass.setSplit(fraction);
   }
 
-  /** computeKernel's arguments for this pipeline's method ('footprint' builds on the marginal kernel). */
-  _kernelArguments(options = this._kernelOptions, method = this.method) {
-    return { ...options, method: method === 'reference' ? 'reference' : 'marginal' };
+  /** computeKernel for this pipeline's method ('footprint' builds on the marginal kernel), cached. */
+  _computeKernel(options, method) {
+    const args = { ...options, method: method === 'reference' ? 'reference' : 'marginal' };
+    const key = JSON.stringify([args.profile.name, args.method, args.samples, args.strength, args.falloff]);
+    if (!this._kernels.has(key)) this._kernels.set(key, computeKernel(args));
+    return this._kernels.get(key);
   }
 
   /**
@@ -186,7 +210,7 @@ export class SubsurfaceScattering {
    * between 'footprint' and the fixed-tap ones recompiles the blur shaders once.
    * @param {{ profile?: string|object, method?: string, samples?: number|'auto', strength?: number[], falloff?: number[] }} options
    */
-  setKernel({ method = this.method, samples, ...options }) {
+  setKernel({ method = this.method, samples, ...options } = {}) {
     checkOneOf('method', method, METHODS);
     if (samples === 'auto') this.autoSamples = true;
     else if (samples !== undefined) {
@@ -199,15 +223,17 @@ export class SubsurfaceScattering {
   _applyKernel(options, method = this.method) {
     const next = { ...this._kernelOptions, ...options };
     if (options.profile !== undefined) next.profile = getProfile(options.profile);
-    const kernel = computeKernel(this._kernelArguments(next, method));
+    const kernel = this._computeKernel(next, method);
+    const profileChanged = next.profile !== this.profileLookup.profile;
     this._kernelOptions = next;
     this.method = method;
     this.kernel = kernel;
+    if (profileChanged) this.profileLookup.setProfile(next.profile); // tens of ms: only on a change
     for (const pass of [this.horizontalPass, this.verticalPass]) {
       pass.setMode(method === 'footprint' ? 'footprint' : 'taps');
       pass.setKernel(kernel);
+      pass.setStrength(next.strength ?? [1, 1, 1]);
     }
-    if (options.profile !== undefined) this.profileLookup.setProfile(next.profile);
   }
 
   /** The kernel's current settings: { profile, samples, strength, falloff }, plus method. */
@@ -220,10 +246,15 @@ export class SubsurfaceScattering {
    * @param {number} [depthThresholdMm]
    */
   setFollowSurface(mode, depthThresholdMm = this.depthThresholdMm) {
-    checkNumber('depthThresholdMm', depthThresholdMm, { min: 0, minExclusive: true, max: 1e6, unit: 'mm' });
+    checkDepthThreshold(depthThresholdMm);
     for (const pass of [this.horizontalPass, this.verticalPass]) pass.setFollowSurface(mode, depthThresholdMm / this.worldUnitInMm);
     this.followSurface = mode;
     this.depthThresholdMm = depthThresholdMm;
+  }
+
+  /** @param {boolean} enabled narrow the blur on surfaces seen at grazing angles */
+  setForeshortening(enabled) {
+    for (const pass of [this.horizontalPass, this.verticalPass]) pass.setForeshortening(enabled);
   }
 
   /**
@@ -239,11 +270,13 @@ export class SubsurfaceScattering {
     const perspective = camera.isPerspectiveCamera === true || p[15] === 0;
     let pixelsPerMm = 0;
     for (const mesh of this.scenePass.subsurfaceMeshes) {
-      const geometry = mesh.geometry;
-      if (!geometry.boundingBox) geometry.computeBoundingBox();
+      // Instanced and skinned meshes have boxes of their own (all instances, the posed skin).
+      if (typeof mesh.computeBoundingBox === 'function' && !mesh.boundingBox) mesh.computeBoundingBox();
+      if (!mesh.geometry.boundingBox) mesh.geometry.computeBoundingBox();
+      const box = mesh.boundingBox ?? mesh.geometry.boundingBox;
       let nearest = Infinity;
       for (let corner = 0; corner < 8; corner++) {
-        const { min, max } = geometry.boundingBox;
+        const { min, max } = box;
         _corner.set(corner & 1 ? max.x : min.x, corner & 2 ? max.y : min.y, corner & 4 ? max.z : min.z);
         _corner.applyMatrix4(mesh.matrixWorld).applyMatrix4(camera.matrixWorldInverse);
         nearest = Math.min(nearest, -_corner.z);
@@ -255,7 +288,7 @@ export class SubsurfaceScattering {
       }
     }
     if (this.autoSamples) this._chooseSamples(pixelsPerMm);
-    const pixels = kernelRadiusMm(this.kernel) * pixelsPerMm;
+    const pixels = this.horizontalPass.radiusMm * pixelsPerMm;
     this.kernelPixels = pixels;
     const blur = this.enabled && pixels >= MIN_KERNEL_PIXELS;
     this.horizontalPass.enabled = blur;
@@ -282,8 +315,10 @@ export class SubsurfaceScattering {
     for (const pass of this.passes) pass.setSize(width, height);
   }
 
-  /** Frees every target, material, texture and quad the pipeline created. */
+  /** Frees every target, material, texture and quad the pipeline created, and unhooks its materials. */
   dispose() {
+    for (const { hook } of this.materials.values()) hook.dispose();
+    this.materials.clear();
     for (const pass of this.passes) pass.dispose();
     this.lightDepth?.dispose();
     this.profileLookup.dispose();

@@ -1,6 +1,7 @@
-// Stage 2 (render): draws the scene once into the subsurface multi-target:
+// Stage 2 (render): draws the scene into the subsurface multi-target:
 //   attachment 0 "light"   (half float): specular + emissive of subsurface pixels, full colour elsewhere
-//   attachment 1 "diffuse" (half float): diffuse light + transmittance of subsurface pixels, alpha 1; 0 elsewhere
+//   attachment 1 "diffuse" (half float): diffuse light + transmittance of subsurface pixels, alpha 1
+//                                         (the mask, whatever the width); 0 elsewhere
 //   attachment 2 "surface" (float RG):   linear view depth (world units), world units per kernel mm; 0 elsewhere
 // Chromium refuses draws whose shader lacks an output for an active draw buffer, and three's
 // ordinary materials write location 0 only. So the scene is drawn in up to three calls:
@@ -8,15 +9,24 @@
 //      only (shadow maps are rendered here, with every caster present);
 //   2. 'split': subsurface materials alone into all attachments, depth-tested against call 1, so
 //      occluded subsurface fragments never reach attachments 1 and 2, which stay 0 there;
-//   3. 'plain': transparent materials, attachment 0 only, over everything.
-import { FloatType, HalfFloatType, LinearFilter, NearestFilter, RGFormat, WebGLRenderTarget, Color } from 'three';
+//   3. 'plain': transparent materials, attachment 0 only, over everything. In call 1 they are drawn
+//      with colour and depth writes off, only so that they still cast shadows.
+import { FloatType, HalfFloatType, NearestFilter, RGFormat, WebGLRenderTarget, Color } from 'three';
 import { Pass } from 'three/addons/postprocessing/Pass.js';
 import { getSubsurface, SUBSURFACE_TARGET_FLAG } from './subsurfaceMaterial.js';
 import { assertFloatRenderTargets, describe } from './rendererSupport.js';
 
 const _clearColor = new Color();
 const ZERO = new Float32Array(4);
+const NONE = 0; // gl.NONE
+const COLOR_ATTACHMENT0 = 0x8ce0;
+const ONLY_LIGHT = [COLOR_ATTACHMENT0, NONE, NONE];
+const ALL_THREE = [COLOR_ATTACHMENT0, COLOR_ATTACHMENT0 + 1, COLOR_ATTACHMENT0 + 2];
 
+/**
+ * Renders the scene into the subsurface multi-target (light, diffuse, surface); writes nothing to the
+ * composer's buffers. Used by SubsurfaceScattering; usable on its own before your own blur.
+ */
 export class SubsurfaceScenePass extends Pass {
   /**
    * @param {import('three').Scene} scene
@@ -44,7 +54,6 @@ export class SubsurfaceScenePass extends Pass {
     const [light, diffuse, surface] = target.textures;
     light.name = 'subsurface.light';
     diffuse.name = 'subsurface.diffuse';
-    diffuse.minFilter = diffuse.magFilter = LinearFilter; // the blur's taps sit between texels
     surface.name = 'subsurface.surface';
     surface.type = FloatType; // depth needs 24 bits of mantissa, not 11
     surface.format = RGFormat;
@@ -54,6 +63,7 @@ export class SubsurfaceScenePass extends Pass {
     this.renderTarget = target;
 
     this._visibility = new Map();
+    this._writes = new Map();
     this._categories = new Map();
   }
 
@@ -94,13 +104,17 @@ export class SubsurfaceScenePass extends Pass {
   }
 
   _show(category) {
-    for (const [material, c] of this._categories) material.visible = c === category || (category === 'depth' && c !== 'transparent');
+    for (const [material, c] of this._categories) {
+      material.visible = c === category || category === 'depth';
+      // In the depth call transparent materials only cast shadows: they draw nothing.
+      const silent = category === 'depth' && c === 'transparent';
+      material.colorWrite = silent ? false : this._writes.get(material).colorWrite;
+      material.depthWrite = silent ? false : this._writes.get(material).depthWrite;
+    }
   }
 
   render(renderer /* , writeBuffer, readBuffer */) {
     assertFloatRenderTargets(renderer, 'SubsurfaceScenePass');
-    if (this.lightDepth) this.lightDepth.render(renderer, this.scene);
-
     const { scene, camera, renderTarget: target } = this;
     const gl = renderer.getContext();
     const { transparent } = this._classify();
@@ -114,9 +128,14 @@ export class SubsurfaceScenePass extends Pass {
       shadowAutoUpdate: renderer.shadowMap.autoUpdate,
     };
     this._visibility.clear();
-    for (const material of this._categories.keys()) this._visibility.set(material, material.visible);
+    this._writes.clear();
+    for (const material of this._categories.keys()) {
+      this._visibility.set(material, material.visible);
+      this._writes.set(material, { colorWrite: material.colorWrite, depthWrite: material.depthWrite });
+    }
 
     try {
+      if (this.lightDepth) this.lightDepth.render(renderer, scene);
       renderer.setRenderTarget(target);
       renderer.autoClear = false;
       renderer.clear(true, true, true); // attachment 0 takes the clear colour, like RenderPass
@@ -125,7 +144,7 @@ export class SubsurfaceScenePass extends Pass {
 
       // 1. opaque ordinary materials + subsurface depth; background and shadow maps.
       target.subsurfacePhase = 'depth';
-      gl.drawBuffers([gl.COLOR_ATTACHMENT0, gl.NONE, gl.NONE]);
+      gl.drawBuffers(ONLY_LIGHT);
       this._show('depth');
       renderer.render(scene, camera);
 
@@ -135,7 +154,7 @@ export class SubsurfaceScenePass extends Pass {
       // 2. subsurface materials into every attachment.
       if (this.subsurfaceMeshes.length > 0) {
         target.subsurfacePhase = 'split';
-        gl.drawBuffers([gl.COLOR_ATTACHMENT0, gl.COLOR_ATTACHMENT1, gl.COLOR_ATTACHMENT2]);
+        gl.drawBuffers(ALL_THREE);
         this._show('subsurface');
         renderer.render(scene, camera);
       }
@@ -143,17 +162,18 @@ export class SubsurfaceScenePass extends Pass {
       // 3. transparent materials over everything, colour only.
       if (transparent > 0) {
         target.subsurfacePhase = 'plain';
-        gl.drawBuffers([gl.COLOR_ATTACHMENT0, gl.NONE, gl.NONE]);
+        gl.drawBuffers(ONLY_LIGHT);
         this._show('transparent');
         renderer.render(scene, camera);
       }
     } finally {
       // three caches draw buffers per target: leave them as it set them.
       if (renderer.getRenderTarget() === target) {
-        gl.drawBuffers([gl.COLOR_ATTACHMENT0, gl.COLOR_ATTACHMENT1, gl.COLOR_ATTACHMENT2]);
+        gl.drawBuffers(ALL_THREE);
       }
       target.subsurfacePhase = 'plain';
       for (const [material, visible] of this._visibility) material.visible = visible;
+      for (const [material, { colorWrite, depthWrite }] of this._writes) Object.assign(material, { colorWrite, depthWrite });
       scene.background = previous.background;
       renderer.shadowMap.autoUpdate = previous.shadowAutoUpdate;
       renderer.autoClear = previous.autoClear;
@@ -165,6 +185,7 @@ export class SubsurfaceScenePass extends Pass {
   dispose() {
     this.renderTarget.dispose();
     this._visibility.clear();
+    this._writes.clear();
     this._categories.clear();
     this.subsurfaceMeshes.length = 0;
   }

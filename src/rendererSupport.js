@@ -1,6 +1,7 @@
 // What every GPU stage needs from the renderer, checked once with a message that says what is
 // missing: WebGL2 (multiple render targets, texelFetch) and renderable float/half-float colour
 // targets (light is HDR: 8-bit targets would clamp and band it).
+import { describeValue } from './parameterChecks.js';
 
 /**
  * @param {import('three').WebGLRenderer} renderer
@@ -20,10 +21,10 @@ export function assertFloatRenderTargets(renderer, who) {
   }
 }
 
-/** A short description of a value for error messages. */
+/** A short description of a value for error messages: an object by its class, else as written. */
 export function describe(value) {
-  if (value === null) return 'null';
-  if (value === undefined) return 'undefined';
-  if (typeof value === 'object') return value.constructor?.name ?? 'object';
-  return `${typeof value} ${String(value)}`;
+  if (value && typeof value === 'object' && !Array.isArray(value) && !ArrayBuffer.isView(value)) {
+    return value.constructor?.name ?? describeValue(value);
+  }
+  return describeValue(value);
 }

@@ -3,7 +3,7 @@
 // writes the diffuse light (direct + indirect, plus transmittance) to location 1, linear view
 // depth and scattering width to location 2, and keeps specular + emissive at location 0.
 // Drawn anywhere else it renders exactly as before, plus transmittance when enabled.
-import { Matrix4, Vector3 } from 'three';
+import { LessEqualDepth, Matrix4, Vector3 } from 'three';
 import parsGlsl from '../shaders/subsurfaceMaterial/pars.glsl?raw';
 import depthOnlyGlsl from '../shaders/subsurfaceMaterial/depthOnly.glsl?raw';
 import transmittedLightGlsl from '../shaders/subsurfaceMaterial/transmittedLight.glsl?raw';
@@ -114,6 +114,11 @@ export function createTransmittanceUniforms(options) {
 export function makeSubsurface(material, options = {}) {
   if (!material || material.isMeshStandardMaterial !== true) {
     throw new TypeError(`makeSubsurface: material must be a THREE.MeshStandardMaterial or MeshPhysicalMaterial, got ${describe(material)}`);
+  }
+  // The scene pass draws subsurface materials twice (depth, then everything) and relies on the
+  // second draw passing the depth test at equal depth.
+  if (material.depthFunc !== LessEqualDepth) {
+    throw new RangeError('makeSubsurface: material.depthFunc must be THREE.LessEqualDepth (the default) for the split draw');
   }
   const existing = hooks.get(material);
   if (existing) {
@@ -235,7 +240,11 @@ function updateLightUniforms(hook, camera) {
   const light = lightDepth.light;
   hook.transmittance.update(camera);
   const view = camera.matrixWorldInverse;
-  uniforms.sssLightColor.value.set(light.color.r, light.color.g, light.color.b).multiplyScalar(light.intensity);
+  // Like three's own lights: a hidden light (or one under a hidden parent) sends nothing.
+  let shining = true;
+  light.traverseAncestors((a) => { if (!a.visible) shining = false; });
+  uniforms.sssLightColor.value.set(light.color.r, light.color.g, light.color.b)
+    .multiplyScalar(shining && light.visible ? light.intensity : 0);
   _position.setFromMatrixPosition(light.matrixWorld);
   _direction.setFromMatrixPosition(light.target.matrixWorld);
   // Unit vector from the target towards the light, in view space (three's convention).

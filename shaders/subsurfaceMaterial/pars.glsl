@@ -1,7 +1,7 @@
 // Stage 2 (material split): declarations added before main() of MeshStandard/MeshPhysical.
 // Location 0 keeps three's pc_fragColor: specular + emissive while split, full colour otherwise.
-layout( location = 1 ) out highp vec4 sssDiffuseOutput; // diffuse light (+ transmittance), a = 1
-layout( location = 2 ) out highp vec4 sssSurfaceOutput; // r: linear view depth, g: world units per kernel mm
+layout( location = 1 ) out highp vec4 sssDiffuseOutput; // diffuse light (+ transmittance), a = 1: the mask
+layout( location = 2 ) out highp vec4 sssSurfaceOutput; // r: linear view depth, g: world units per kernel mm x strength
 
 uniform bool sssSplit;      // true only while drawn into the subsurface multi-target
 uniform bool sssDepthOnly;  // true in the scene pass's first call: lay down depth, shade nothing

@@ -22,6 +22,8 @@
 		sssThicknessMm = sssThickness * sssThicknessToProfileMm;
 		sssTransmitted = sssLightColor * ( sssAttenuation * sssWrap )
 			* sssTransmittanceProfile( sssThickness ) * BRDF_Lambert( material.diffuseColor );
+		// A degenerate light set-up must not turn the whole material NaN (outside the pipeline too).
+		if ( any( isnan( sssTransmitted ) ) || any( isinf( sssTransmitted ) ) ) sssTransmitted = vec3( 0.0 );
 		reflectedLight.directDiffuse += sssTransmitted;
 	}
 	#endif

@@ -50,6 +50,41 @@ describe('aspect fix: horizontal and vertical widths agree in world units at 16:
   });
 });
 
+describe('grazing angles', () => {
+  // A point of light on a slab turned 60° about the vertical axis: on the surface, light must spread
+  // as far across (x) as up (y); on screen the x spread is foreshortened by cos 60° = 0.5.
+  const spread = async (foreshortening) => {
+    const r = await runLab(page, {
+      scene: 'slab', pattern: 'point', cells: 255, tiltDeg: 60, width: 256, height: 144, widthMm: 4, type: 'float',
+      sss: { followSurface: 'drop', samples: 25, foreshortening }, reads: ['output', 'light', 'diffuse', 'surface'],
+    });
+    const { width, height } = r;
+    const moments = (img) => {
+      let s = 0, sx = 0, sy = 0, sxx = 0, syy = 0;
+      for (let y = 0; y < height; y++) for (let x = 0; x < width; x++) {
+        const v = img[at(width, x, y)];
+        s += v; sx += v * x; sy += v * y; sxx += v * x * x; syy += v * y * y;
+      }
+      const mx = sx / s, my = sy / s;
+      return { varX: sxx / s - mx * mx, varY: syy / s - my * my, mx, my };
+    };
+    const before = moments(r.diffuse);
+    const after = moments(scattered(r));
+    const depth = r.surface[at(width, Math.round(before.mx), Math.round(before.my))];
+    const pxX = (2 * depth) / (r.projectionScale[0] * width);
+    const pxY = (2 * depth) / (r.projectionScale[1] * height);
+    const surfaceX = (Math.sqrt(after.varX - before.varX) * pxX) / Math.cos(Math.PI / 3);
+    const surfaceY = Math.sqrt(after.varY - before.varY) * pxY;
+    return surfaceX / surfaceY;
+  };
+
+  it('the blur spreads light equally along a tilted surface (within 5 %) with the correction, and not without', async () => {
+    expect(Math.abs((await spread(true)) - 1)).toBeLessThan(0.05);
+    // Without it, 'drop' reads the tilted plane as a depth edge and cuts the kernel short across it.
+    expect(Math.abs((await spread(false)) - 1)).toBeGreaterThan(0.4);
+  });
+});
+
 describe('accuracy', () => {
   it('matches the float64 oracle\'s separable result at a hard light edge within 1e-3 of the lit level', async () => {
     const cases = [['edgeX', 17, 'reference'], ['edgeY', 11, 'marginal'], ['noise', 25, 'footprint'], ['edgeX', 9, 'footprint']];
@@ -64,6 +99,7 @@ describe('accuracy', () => {
         kernel: r.kernel, projectionScale: r.projectionScale, followSurface: 'drop',
         depthThresholdWorld: r.depthThresholdWorld, storeIntermediate: roundToHalfFloat,
         footprint: method === 'footprint' ? { ...r.footprint, profile: getProfile(r.profile) } : undefined,
+        foreshorten: true,
       });
       const gpu = scattered(r);
       const lit = Math.max(...channel(r.diffuse, 0));
@@ -209,6 +245,38 @@ describe('energy and HDR', () => {
       return bad;
     });
     expect(direct).toBe(0);
+  });
+});
+
+describe('strength', () => {
+  it('strength 0 on a material turns scattering off and keeps its diffuse light', async () => {
+    const common = { scene: 'slab', pattern: 'noise', type: 'float', widthMm: 2 };
+    const off = await runLab(page, { ...common, material: { strength: 0 }, reads: ['output'] });
+    const plain = await runLab(page, { ...common, pipeline: 'plain' });
+    let worst = 0;
+    for (let i = 0; i < off.output.length; i++) worst = Math.max(worst, Math.abs(off.output[i] - plain.output[i]));
+    expect(worst).toBeLessThan(1e-5);
+  });
+
+  it('RGB strength mixes the footprint blur with no scattering, per channel', async () => {
+    const common = { scene: 'slab', pattern: 'edgeX', type: 'float', widthMm: 2, reads: ['output', 'light', 'diffuse'] };
+    const full = await runLab(page, { ...common, sss: { strength: [1, 1, 1] } });
+    const mixed = await runLab(page, { ...common, sss: { strength: [0, 0.5, 1] } });
+    let worst = [0, 0, 0];
+    let moved = 0;
+    for (let i = 0; i < full.output.length; i += 4) {
+      for (let c = 0; c < 3; c++) {
+        const raw = full.diffuse[i + c];
+        const blurred = full.output[i + c] - full.light[i + c];
+        const expected = raw + (blurred - raw) * [0, 0.5, 1][c];
+        worst[c] = Math.max(worst[c], Math.abs(mixed.output[i + c] - mixed.light[i + c] - expected));
+        if (c === 2) moved = Math.max(moved, Math.abs(blurred - raw));
+      }
+    }
+    expect(moved).toBeGreaterThan(0.05); // the edge is blurred at strength 1
+    // Each pass mixes its result with its input by s; on an edge along x the vertical pass finds
+    // nothing to blur, so the output is raw + s · (fully blurred − raw) exactly, per channel.
+    for (let c = 0; c < 3; c++) expect(worst[c], `channel ${c}`).toBeLessThan(1e-5);
   });
 });
 

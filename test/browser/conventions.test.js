@@ -43,16 +43,18 @@ describe('pass conventions', () => {
       const types = sss.scenePass.renderTarget.textures.map((t) => t.type);
       const during = { ...renderer.info.memory };
       sss.dispose();
+      const unhooked = !material.customProgramCacheKey().includes('subsurface') && SSS.getSubsurface(material) === undefined;
       pipeline.dispose();
       hook.dispose();
       composer.render();
       const after = { ...renderer.info.memory };
-      return { baseline, during, after, sizes, types, halfFloat: THREE.HalfFloatType, float: THREE.FloatType };
+      return { baseline, during, after, sizes, types, unhooked, halfFloat: THREE.HalfFloatType, float: THREE.FloatType };
     });
     expect(r.sizes).toEqual({ scene: [80, 45], horizontal: 80, vertical: 45 });
     for (const t of r.types) expect([r.halfFloat, r.float]).toContain(t);
     expect(r.during.textures).toBeGreaterThan(r.baseline.textures);
     expect(r.after).toEqual(r.baseline);
+    expect(r.unhooked).toBe(true); // dispose also gives the material back its own shader
   });
 
   it('restores the renderer state it touches and works before OutputPass', async () => {

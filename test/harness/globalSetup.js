@@ -9,7 +9,7 @@ import { findBrowser } from './findBrowser.js';
 
 const root = join(dirname(fileURLToPath(import.meta.url)), '../..');
 
-// Flags from DEVELOPERS.md: SwiftShader (software WebGL2) and no background network traffic.
+// SwiftShader (software WebGL2), and no background network traffic (the machine's network is closed).
 export const CHROMIUM_FLAGS = [
   '--use-angle=swiftshader',
   '--enable-unsafe-swiftshader',

@@ -5,18 +5,18 @@ import puppeteer from 'puppeteer';
 
 let connection = null;
 
+// Registered when a test file imports this module, so it runs after that file's tests.
+afterAll(async () => {
+  await connection?.disconnect();
+  connection = null;
+});
+
 /** Connects (once per test file) to the browser started in globalSetup. */
 export async function browser() {
-  if (!connection) {
-    connection = await puppeteer.connect({
-      browserWSEndpoint: inject('browserWSEndpoint'),
-      protocolTimeout: 600_000,
-    });
-    afterAll(async () => {
-      await connection?.disconnect();
-      connection = null;
-    });
-  }
+  connection ??= await puppeteer.connect({
+    browserWSEndpoint: inject('browserWSEndpoint'),
+    protocolTimeout: 600_000,
+  });
   return connection;
 }
 

@@ -16,6 +16,11 @@
  *  1. centre pixel (i, j), p = (i + 0.5, j + 0.5); if widthWorld_c = 0 the output is the input.
  *  2. stepPx = widthWorld_c · P / (2 · depth_c) · resolution: pixels per kernel-mm along a (a world length L
  *     at view depth z spans L·P/z in NDC, which spans 2 over `resolution` pixels).
+ *  2b. with `foreshorten` (the GPU's default): slope = depth change per pixel along a from the two
+ *     neighbours (central difference; one-sided when a neighbour is off the mask, off the image or steeper
+ *     than MAX_SLOPE = 4 world units of depth per world unit across; 0 when both are), pixelWorld =
+ *     2·depth_c/(P·resolution), tilt = slope/pixelWorld; stepPx /= sqrt(1 + tilt²) (cos of the tilt), and the
+ *     depth rule below compares texel t with the plane, depth_c + slope·(t − centre along a), not depth_c.
  *  3. pixel skip: if stepPx · max_k |offset_k| < 0.5 the output is the centre colour (kernel below a pixel).
  *  4. tap k ≥ 1 at p_k = p + a · offset_k · stepPx. Dropped if p_k lies outside [0, width) × [0, height).
  *     It lies between texels along a (centres at integer + 0.5, clamp-to-edge). Each texel t counts with
@@ -42,6 +47,10 @@ import { normalIntervalProbability, integrateAdaptive, getProfile } from '../../
 import { kernelRadiusMm } from '../../src/kernel.js';
 
 const FOLLOW_SURFACE_MODES = ['drop', 'lerp', 'off'];
+/** 'footprint' mode: energy per side below which the rest of the kernel is left out (as the shader). */
+const ENERGY_LEFT = 1e-5;
+/** Steeper neighbours (world units of depth per world unit across) count as another surface. */
+const MAX_SLOPE = 4;
 
 const newVec2 = () => new Float64Array(2); // gl-matrix's create() would give float32 storage
 const newVec3 = () => new Float64Array(3);
@@ -98,7 +107,7 @@ export function sampleBilinear(image, width, height, x, y, out = newVec3()) {
  * Writes the tap colour into `out` and returns the kept fraction Σ_t b_t·keep_t (0: tap dropped).
  * @returns {number}
  */
-function perTexelTap({ width, height, depth, widthWorld, followSurface, depthThresholdWorld }, src, x, y, zc, centre, out) {
+function perTexelTap({ width, height, depth, mask, followSurface, depthThresholdWorld }, src, x, y, expectedDepth, centre, out) {
   const u = x - 0.5;
   const v = y - 0.5;
   const i0 = Math.floor(u);
@@ -118,11 +127,11 @@ function perTexelTap({ width, height, depth, widthWorld, followSurface, depthThr
     const ii = Math.min(Math.max(i0 + di, 0), width - 1);
     const jj = Math.min(Math.max(j0 + dj, 0), height - 1);
     const t = jj * width + ii;
-    if (widthWorld[t] === 0) continue;
+    if (!mask[t]) continue;
     vec3.set(texel, src[3 * t], src[3 * t + 1], src[3 * t + 2]);
     let keep = b;
     if (followSurface !== 'off') {
-      const f = Math.min(Math.max(Math.abs(depth[t] - zc) / depthThresholdWorld, 0), 1);
+      const f = Math.min(Math.max(Math.abs(depth[t] - expectedDepth(ii, jj)) / depthThresholdWorld, 0), 1);
       if (followSurface === 'drop') keep *= 1 - f;
       else vec3.lerp(texel, texel, centre, f);
     }
@@ -138,7 +147,7 @@ function perTexelTap({ width, height, depth, widthWorld, followSurface, depthThr
  * @returns {Float64Array}
  */
 function blurPass(args, src, axisIndex) {
-  const { width, height, depth, widthWorld, kernel, projectionScale, followSurface, depthThresholdWorld, tapFilter, footprint } = args;
+  const { width, height, depth, widthWorld, mask, kernel, projectionScale, followSurface, depthThresholdWorld, tapFilter, footprint, foreshorten } = args;
   const taps = kernel.length / 4;
   const maxOffsetMm = kernelRadiusMm(kernel);
   const P = projectionScale[axisIndex];
@@ -159,8 +168,28 @@ function blurPass(args, src, axisIndex) {
       vec3.set(centre, src[3 * idx], src[3 * idx + 1], src[3 * idx + 2]);
       const wc = widthWorld[idx];
       const zc = depth[idx];
-      const stepPx = wc === 0 ? 0 : ((wc * P) / (2 * zc)) * resolution;
-      if (wc === 0 || stepPx * maxOffsetMm < 0.5) {
+      let stepPx = wc === 0 ? 0 : ((wc * P) / (2 * zc)) * resolution;
+      // Grazing angles (header, step 2b): slope per pixel from the same-surface neighbours.
+      let slope = 0;
+      if (foreshorten && wc !== 0) {
+        const pixelWorld = (2 * zc) / (P * resolution);
+        const at = (k) => {
+          const [ii, jj] = axisIndex === 0 ? [Math.min(Math.max(i + k, 0), width - 1), j] : [i, Math.min(Math.max(j + k, 0), height - 1)];
+          return { idx: jj * width + ii, moved: axisIndex === 0 ? ii !== i : jj !== j };
+        };
+        const before = at(-1);
+        const after = at(1);
+        const slopeBefore = zc - depth[before.idx];
+        const slopeAfter = depth[after.idx] - zc;
+        const useBefore = before.moved && widthWorld[before.idx] > 0 && Math.abs(slopeBefore) <= MAX_SLOPE * pixelWorld;
+        const useAfter = after.moved && widthWorld[after.idx] > 0 && Math.abs(slopeAfter) <= MAX_SLOPE * pixelWorld;
+        slope = useBefore && useAfter ? 0.5 * (slopeBefore + slopeAfter) : useBefore ? slopeBefore : useAfter ? slopeAfter : 0;
+        const tilt = slope / pixelWorld;
+        stepPx /= Math.sqrt(1 + tilt * tilt);
+      }
+      // Depth the centre's plane predicts at texel (ii, jj) (zc itself without foreshortening).
+      const expectedDepth = (ii, jj) => zc + slope * (axisIndex === 0 ? ii - i : jj - j);
+      if (!mask[idx] || stepPx * maxOffsetMm < 0.5) {
         out.set(centre, 3 * idx);
         continue;
       }
@@ -171,15 +200,15 @@ function blurPass(args, src, axisIndex) {
         if (!(pk[0] >= 0 && pk[0] < width && pk[1] >= 0 && pk[1] < height)) return;
         vec3.copy(weight, w);
         if (tapFilter === 'bilinearPerTexel') {
-          const keep = perTexelTap(args, src, pk[0], pk[1], zc, centre, colour);
+          const keep = perTexelTap(args, src, pk[0], pk[1], expectedDepth, centre, colour);
           if (keep === 0) return;
           vec3.scale(weight, weight, keep);
         } else {
           const tidx = Math.floor(pk[1]) * width + Math.floor(pk[0]);
-          if (widthWorld[tidx] === 0) return;
+          if (!mask[tidx]) return;
           sampleBilinear(src, width, height, pk[0], pk[1], colour);
           if (followSurface !== 'off') {
-            const f = Math.min(Math.max(Math.abs(depth[tidx] - zc) / depthThresholdWorld, 0), 1);
+            const f = Math.min(Math.max(Math.abs(depth[tidx] - expectedDepth(Math.floor(pk[0]), Math.floor(pk[1]))) / depthThresholdWorld, 0), 1);
             if (followSurface === 'drop') vec3.scale(weight, weight, 1 - f);
             else vec3.lerp(colour, colour, centre, f);
           }
@@ -199,7 +228,7 @@ function blurPass(args, src, axisIndex) {
         vec3.multiply(sum, weightSum, centre);
         let lastEdge = 0;
         for (const edgeMm of footprint.edgesMm) {
-          if (below.every((g) => g > 0.5 - 1e-5)) break;
+          if (below.every((g) => g > 0.5 - ENERGY_LEFT)) break;
           const edge = Math.max(Math.floor(edgeMm * stepPx + 0.5), lastEdge + 1);
           const energy = G((edge + 0.5) / stepPx);
           const w = energy.map((e, c) => e - below[c]);
@@ -210,13 +239,18 @@ function blurPass(args, src, axisIndex) {
           lastEdge = edge;
         }
         const tail = below.map((g) => 0.5 - g);
-        if (tail.some((t) => t > 1e-6)) {
+        if (tail.some((t) => t > ENERGY_LEFT)) {
           const offsetPx = Math.max(footprint.tailOffsetMm * stepPx, lastEdge + 1);
           addTap(offsetPx, tail);
           addTap(-offsetPx, tail);
         }
       }
-      for (let c = 0; c < 3; c++) out[3 * idx + c] = sum[c] / weightSum[c];
+      for (let c = 0; c < 3; c++) {
+        const blurred = sum[c] / weightSum[c];
+        // 'footprint' mode mixes with no scattering by `strength`, as the shader does.
+        const s = footprint?.strength?.[c] ?? 1;
+        out[3 * idx + c] = footprint ? centre[c] + (blurred - centre[c]) * s : blurred;
+      }
     }
   }
   return out;
@@ -236,12 +270,15 @@ function blurPass(args, src, axisIndex) {
  * @param {'drop'|'lerp'|'off'} [args.followSurface='off']
  * @param {number} [args.depthThresholdWorld] > 0 unless followSurface is 'off'
  * @param {(x: number) => number} [args.storeIntermediate] applied to each value stored between the passes
- * @param {{ profile: object, edgesMm: number[], tailOffsetMm: number }} [args.footprint] the GPU's 'footprint'
+ * @param {{ profile: object, edgesMm: number[], tailOffsetMm: number, strength?: number[] }} [args.footprint] the GPU's 'footprint'
  *   kernel mode instead of the kernel's fixed taps: per pixel, the centre pixel weighs 2·G(0.5 px), then
  *   footprint j covers the pixels (lastEdge, edge_j] with edge_j = max(round(edgesMm_j · stepPx), lastEdge + 1),
  *   weighs G(edge_j + 0.5 px) − G(lastEdge + 0.5 px) and is sampled at its middle; it stops once every
  *   channel's G exceeds 0.5 − 1e-5; the tail 0.5 − G is sampled at max(tailOffsetMm · stepPx, lastEdge + 1).
  *   G(x) = profile.marginalIntegral(0, x), in float64 (the GPU reads it from a table).
+ * @param {ArrayLike<number>} [args.mask] width·height, nonzero on subsurface pixels (the GPU's diffuse alpha);
+ *   default: widthWorld > 0. A masked pixel with width 0 (strength 0) keeps its colour and still serves as a tap.
+ * @param {boolean} [args.foreshorten=false] the grazing-angle correction (header, step 2b); the GPU's default is on
  * @param {'bilinear'|'bilinearPerTexel'} [args.tapFilter='bilinearPerTexel'] 'bilinearPerTexel' is the GPU model
  *   (header); 'bilinear' takes a tap's mask and depth from its nearest texel and its colour from plain
  *   bilinear filtering, which lets colour leak across depth edges (kept to measure that leak)
@@ -249,6 +286,8 @@ function blurPass(args, src, axisIndex) {
  */
 export function separableBlurOracle(args) {
   const full = { followSurface: 'off', storeIntermediate: (x) => x, tapFilter: 'bilinearPerTexel', ...args };
+  // The mask: the diffuse light's alpha on the GPU; by default, the pixels with a width.
+  full.mask ??= Float64Array.from(full.widthWorld, (w) => (w > 0 ? 1 : 0));
   checkImageArgs(full);
   if (!['bilinear', 'bilinearPerTexel'].includes(full.tapFilter)) {
     throw new RangeError(`tapFilter must be one of 'bilinear', 'bilinearPerTexel', got ${full.tapFilter}`);

@@ -73,6 +73,7 @@ const SCENES = {
     const camera = camera16x9(o.aspect, o.fovY, o.distance);
     const material = new THREE.MeshStandardMaterial({ color: 0xffffff, roughness: 1, metalness: 0, map: PATTERNS[o.pattern ?? 'uniform'](o) });
     const slab = new THREE.Mesh(new THREE.PlaneGeometry(o.slabSize, o.slabSize), material);
+    slab.rotation.y = ((o.tiltDeg ?? 0) * Math.PI) / 180; // seen at a grazing angle
     scene.add(slab);
     const light = new THREE.DirectionalLight(0xffffff, o.intensity);
     light.position.set(0, 0, 10);
