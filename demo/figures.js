@@ -1,5 +1,7 @@
 // The paper's five figures (Tetzlaff 2013, after Jimenez) as presets: camera, light and settings,
 // and the one setting that differs between the "before" and "after" images.
+import { DEFAULT_CAMERA } from './headScene.js';
+
 // Coordinates are the scan's (Y up, facing +Z, ~5 cm per unit): nose tip (−0.09, 1.10, 2.59),
 // ears at x ≈ ±1.8, y ≈ 1.5, z ≈ −0.16, top of the head at y ≈ 3.97.
 
@@ -53,7 +55,7 @@ export const FIGURES = [
     id: 5,
     title: 'The full model without and with subsurface scattering',
     caption: 'Diffusion and transmittance together: softer, warmer skin, red ear rims and nostrils.',
-    camera: [0, 1.0, 21, 0, 0.9, 0],
+    camera: [...DEFAULT_CAMERA],
     settings: { lightAzimuth: 30, lightElevation: 25 },
     toggle: 'sss', before: false, after: true,
   },

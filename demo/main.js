@@ -6,7 +6,7 @@ import { EffectComposer } from 'three/addons/postprocessing/EffectComposer.js';
 import { OutputPass } from 'three/addons/postprocessing/OutputPass.js';
 import { SubsurfaceScattering, getProfile } from '../src/index.js';
 import { loadHead } from './headModel.js';
-import { createHeadScene, setLightDirection, HEAD_WORLD_UNIT_IN_MM } from './headScene.js';
+import { createHeadScene, setLightDirection, HEAD_WORLD_UNIT_IN_MM, DEFAULT_CAMERA } from './headScene.js';
 import { readRenderTargetFloats } from './readback.js';
 import { defaultState, parseHash, formatHash } from './state.js';
 import { figureState } from './figures.js';
@@ -15,8 +15,6 @@ import { PassTimings } from './passTimings.js';
 import { drawKernel } from './kernelPlot.js';
 
 const params = new URLSearchParams(location.search);
-/** Camera position and orbit target when the state names none: head and shoulders, facing us. */
-const DEFAULT_CAMERA = [0, 1.0, 21, 0, 0.9, 0];
 const container = document.getElementById('viewport');
 const notice = document.getElementById('notice');
 const hashNotice = document.getElementById('hash-notice');
@@ -111,6 +109,7 @@ async function start() {
     },
     split: () => sss.setSplit(state.split),
     view: () => {
+      // Depth view: white at the camera, black 30 units (1.5 m) away, past the head at any zoom.
       sss.setDebugView(state.view === 'kernel' ? 'final' : state.view, { depthRange: 30 });
       kernelCanvas.hidden = state.view !== 'kernel';
       if (state.view === 'kernel') drawKernel(kernelCanvas, sss.kernel, state.method === 'reference' ? null : getProfile(state.profile));

@@ -634,11 +634,11 @@ export function dipoleProfile({ sigmaSPrimeMm, sigmaAMm, eta, name = 'dipole' } 
 export const SKIN_BURLEY_SCATTER_DISTANCE_MM = Object.freeze([0.41954, 0.097094, 0.059361]);
 
 /**
- * Whole milk, from the table of measured coefficients in Jensen et al. 2001 (the table of σs', σa per RGB
- * for marble, skin, milk, ketchup, ...; its figure number is from memory): σs' = (2.55, 3.21, 3.77)/mm,
- * σa = (0.0011, 0.0024, 0.014)/mm, η = 1.3 (the paper uses η = 1.3 for all its measured materials).
- * The paper could not be checked from here: these are the values the project brief quotes, which match
- * what I recall of the whole-milk row.
+ * Whole milk, from the table of measured scattering coefficients in Jensen et al. 2001 ("A practical
+ * model for subsurface light transport", SIGGRAPH; σs', σa per RGB for marble, skin, milk, ketchup, ...):
+ * σs' = (2.55, 3.21, 3.77)/mm, σa = (0.0011, 0.0024, 0.014)/mm, η = 1.3.
+ * Caveat: recalled, not re-read from the paper here (REFERENCE.md names the table, not its numbers);
+ * check them against the paper before relying on milk quantitatively.
  */
 export const WHOLE_MILK_COEFFICIENTS = Object.freeze({
   sigmaSPrimeMm: Object.freeze([2.55, 3.21, 3.77]),
