@@ -74,8 +74,27 @@ describe('demo page', () => {
     await page.close();
   });
 
-  it('falls back to the procedural stand-in with a notice when the scan is unavailable', async () => {
-    const page = await openPage('/?still&standIn', { width: W, height: H });
+  it('falls back to the procedural stand-in with a notice when the asset step found nothing', async () => {
+    // The page sees what a machine without the scan sees: the asset step's status says so, and
+    // the scan files are not served.
+    const missing = ['LeePerrySmith.glb', 'Map-COL.jpg', 'Map-SPEC.jpg', 'Infinite-Level_02_Tangent_SmoothUV.jpg'];
+    const page = await openPage('/?still', {
+      width: W,
+      height: H,
+      beforeLoad: async (p) => {
+        await p.setRequestInterception(true);
+        p.on('request', (request) => {
+          const url = request.url();
+          if (url.endsWith('/assets/head-status.json')) {
+            request.respond({ status: 200, contentType: 'application/json', body: JSON.stringify({ complete: false, missing, source: {} }) });
+          } else if (url.includes('/assets/LeePerrySmith/')) {
+            request.abort();
+          } else {
+            request.continue();
+          }
+        });
+      },
+    });
     expect(await page.evaluate('window.testReady')).toBe(true);
     expect(await page.evaluate('window.demo.isStandIn')).toBe(true);
     const notice = await page.evaluate(() => ({ hidden: document.getElementById('notice').hidden, text: document.getElementById('notice').textContent }));
@@ -83,6 +102,7 @@ describe('demo page', () => {
     expect(notice.text).toContain('LeePerrySmith.glb');
     expect(notice.text).toContain('Map-COL.jpg');
     expect(notice.text).toContain('SSS_ASSETS_DIR');
+    expect(notice.text).toContain('Infinite-Level_02_Tangent_SmoothUV.jpg');
     const s = await frameStats(page);
     expect(s.nonFinite).toBe(0);
     expect(s.coverage).toBeGreaterThan(0.1);

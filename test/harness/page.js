@@ -24,9 +24,10 @@ export async function browser() {
  * Opens `path` (relative to the server root) and waits until `window.testReady` (or `readyExpr`)
  * resolves. Console errors, page errors and failed requests are collected in `page.problems`.
  * @param {string} path e.g. '/test/pages/blur.html' or '/#sss=0'
- * @param {{ width?: number, height?: number, readyExpr?: string, timeout?: number }} [options]
+ * @param {{ width?: number, height?: number, readyExpr?: string, timeout?: number, beforeLoad?: (page) => Promise<void> }} [options]
+ *   `beforeLoad` runs before navigation, e.g. to intercept requests
  */
-export async function openPage(path, { width = 320, height = 180, readyExpr = 'window.testReady', timeout = 120_000 } = {}) {
+export async function openPage(path, { width = 320, height = 180, readyExpr = 'window.testReady', timeout = 120_000, beforeLoad } = {}) {
   const b = await browser();
   const page = await b.newPage();
   page.problems = [];
@@ -36,6 +37,7 @@ export async function openPage(path, { width = 320, height = 180, readyExpr = 'w
   page.on('pageerror', (error) => page.problems.push(`pageerror: ${error.message}`));
   page.on('requestfailed', (req) => page.problems.push(`requestfailed: ${req.url()} ${req.failure()?.errorText}`));
   await page.setViewport({ width, height, deviceScaleFactor: 1 });
+  await beforeLoad?.(page);
   await page.goto(new URL(path, inject('baseUrl')).href, { waitUntil: 'load', timeout });
   await page.waitForFunction(`${readyExpr} !== undefined`, { timeout, polling: 50 });
   await page.evaluate(`Promise.resolve(${readyExpr})`);
