@@ -1,48 +1,47 @@
-// Starts what the bench runs in, the way the tests do (test/harness/globalSetup.js): Vite serving
-// the repository, and Chromium (SwiftShader unless `gpu`), then opens bench/index.html. Both are
-// closed however `work` ends.
-import { mkdtemp, rm } from 'node:fs/promises';
-import { tmpdir } from 'node:os';
-import { join, dirname } from 'node:path';
-import { fileURLToPath } from 'node:url';
-import { createServer } from 'vite';
+// Starts what the bench runs in with the tests' own set-up (test/harness/globalSetup.js): Vite
+// serving the repository and headless Chromium (SwiftShader, or the GPU with `gpu`), then opens
+// bench/index.html. Both are closed however `work` ends, and on Ctrl-C.
 import puppeteer from 'puppeteer';
-import { CHROMIUM_FLAGS } from '../test/harness/globalSetup.js';
-import { findBrowser } from '../test/harness/findBrowser.js';
+import setup, { CHROMIUM_FLAGS } from '../test/harness/globalSetup.js';
 
-const root = join(dirname(fileURLToPath(import.meta.url)), '..');
+const SWIFTSHADER_FLAGS = [...CHROMIUM_FLAGS];
 
-/** The test flags, or for a GPU the same without SwiftShader and with the GPU allowed. */
+/** The tests' flags, or for a GPU the same without SwiftShader and with the GPU allowed. */
 export function chromiumFlags({ gpu = false } = {}) {
-  if (!gpu) return CHROMIUM_FLAGS;
+  if (!gpu) return SWIFTSHADER_FLAGS;
   return [
-    ...CHROMIUM_FLAGS.filter((flag) => !flag.includes('swiftshader')),
+    ...SWIFTSHADER_FLAGS.filter((flag) => !flag.includes('swiftshader')),
     '--ignore-gpu-blocklist', '--enable-gpu', '--use-angle=vulkan', '--enable-features=Vulkan',
   ];
 }
 
+/** globalSetup's `setup` launching Chromium with `flags` (it reads CHROMIUM_FLAGS only at launch). */
+async function startWith(flags, provided) {
+  CHROMIUM_FLAGS.splice(0, CHROMIUM_FLAGS.length, ...flags);
+  try {
+    return await setup({ provide: (key, value) => { provided[key] = value; } });
+  } finally {
+    CHROMIUM_FLAGS.splice(0, CHROMIUM_FLAGS.length, ...SWIFTSHADER_FLAGS);
+  }
+}
+
 /**
  * @param {(page: import('puppeteer').Page) => Promise<T>} work
- * @param {{ gpu?: boolean, log?: (line: string) => void }} [options]
+ * @param {{ gpu?: boolean }} [options]
  * @returns {Promise<T>}
  * @template T
  */
-export async function withBenchPage(work, { gpu = false, log = console.log } = {}) {
-  const executablePath = await findBrowser({ log });
-  const server = await createServer({
-    root,
-    configFile: join(root, 'vite.config.js'),
-    logLevel: 'error',
-    clearScreen: false,
-    server: { host: '127.0.0.1', port: 0, strictPort: false, hmr: false, watch: null },
-  });
-  let browser = null;
-  const userDataDir = await mkdtemp(join(tmpdir(), 'sss-bench-'));
-  const closeAll = async () => {
-    if (browser) await browser.close().catch(() => browser.process()?.kill('SIGKILL'));
-    browser = null;
-    await server.close();
-    await rm(userDataDir, { recursive: true, force: true });
+export async function withBenchPage(work, { gpu = false } = {}) {
+  const provided = {};
+  const teardown = await startWith(chromiumFlags({ gpu }), provided);
+  let connection = null;
+  let closing = null;
+  const closeAll = () => {
+    closing ??= (async () => {
+      await connection?.disconnect().catch(() => {});
+      await teardown();
+    })();
+    return closing;
   };
   const onSignal = (signal) => {
     closeAll().finally(() => process.exit(signal === 'SIGINT' ? 130 : 143));
@@ -50,20 +49,15 @@ export async function withBenchPage(work, { gpu = false, log = console.log } = {
   process.once('SIGINT', onSignal);
   process.once('SIGTERM', onSignal);
   try {
-    await server.listen();
-    const { port } = server.httpServer.address();
-    browser = await puppeteer.launch({
-      executablePath, headless: true, userDataDir, args: chromiumFlags({ gpu }), protocolTimeout: 900_000,
-    });
-    const page = await browser.newPage();
-    const problems = [];
+    connection = await puppeteer.connect({ browserWSEndpoint: provided.browserWSEndpoint, protocolTimeout: 900_000 });
+    const page = await connection.newPage();
+    page.problems = [];
     page.on('console', (msg) => {
-      if (msg.type() === 'error') problems.push(msg.text());
+      if (msg.type() === 'error') page.problems.push(msg.text());
     });
-    page.on('pageerror', (error) => problems.push(error.message));
-    await page.goto(`http://127.0.0.1:${port}/bench/index.html`, { waitUntil: 'load', timeout: 120_000 });
+    page.on('pageerror', (error) => page.problems.push(error.message));
+    await page.goto(`${provided.baseUrl}/bench/index.html`, { waitUntil: 'load', timeout: 120_000 });
     await page.waitForFunction('window.testReady === true', { timeout: 120_000, polling: 50 });
-    page.problems = problems;
     return await work(page);
   } finally {
     process.off('SIGINT', onSignal);

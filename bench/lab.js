@@ -7,14 +7,14 @@
 //   dense:     [scene pass, ⟨timer⟩, DenseSubsurfacePass,              ⟨/timer⟩, compose]
 // Times: `gpuMs` = EXT_disjoint_timer_query_webgl2 around the SSS passes only; `ms` = a whole
 // composer.render() closed by a 1-pixel readPixels (the fence: gl.finish() does not wait in
-// Chromium). Both are medians over many frames.
+// Chromium). The runner takes the medians over many frames (bench/run.js).
 import {
   ACESFilmicToneMapping, FloatType, HalfFloatType, UnsignedByteType, Vector2, WebGLRenderer, WebGLRenderTarget,
 } from 'three';
 import { EffectComposer } from 'three/addons/postprocessing/EffectComposer.js';
 import { OutputPass } from 'three/addons/postprocessing/OutputPass.js';
 import { Pass } from 'three/addons/postprocessing/Pass.js';
-import { SubsurfaceScattering, DenseSubsurfacePass, QuadrantEnergyLookup } from '/src/index.js';
+import { SubsurfaceScattering, DenseSubsurfacePass, QuadrantEnergyLookup, AUTO_SAMPLES, AUTO_REACH } from '/src/index.js';
 import { readRenderTargetFloats } from '/demo/readback.js';
 import { radianceErrors, maskedSsim } from '/test/oracle/metrics.js';
 import { buildScene } from './scenes.js';
@@ -29,12 +29,6 @@ function energyLookup(profile) {
   if (!lookups.has(profile)) lookups.set(profile, new QuadrantEnergyLookup(profile));
   return lookups.get(profile);
 }
-
-const median = (values) => {
-  const sorted = [...values].sort((a, b) => a - b);
-  const n = sorted.length;
-  return n === 0 ? NaN : n % 2 ? sorted[(n - 1) / 2] : (sorted[n / 2 - 1] + sorted[n / 2]) / 2;
-};
 
 const nextTask = () => new Promise((resolve) => setTimeout(resolve, 0));
 
@@ -65,7 +59,7 @@ class GpuTimer {
   async collect() {
     const { gl, pending } = this;
     this.pending = [];
-    if (!this.ext) return [];
+    if (!this.ext || pending.length === 0) return [];
     for (let tries = 0; tries < 2000; tries++) {
       if (gl.getQueryParameter(pending[pending.length - 1], gl.QUERY_RESULT_AVAILABLE)) break;
       await nextTask();
@@ -114,6 +108,8 @@ function info() {
     version: gl.getParameter(gl.VERSION),
     timerQuery: gl.getExtension('EXT_disjoint_timer_query_webgl2') !== null,
     hardwareConcurrency: navigator.hardwareConcurrency,
+    autoSamples: AUTO_SAMPLES, // the tap levels samples 'auto' chooses from
+    autoReach: AUTO_REACH, // its rule: (taps - 3) / 2 >= autoReach x the estimated radius
   };
   renderer.dispose();
   renderer.forceContextLoss();
@@ -147,6 +143,7 @@ async function open({ scene, width, height, float = false, widthMm }) {
     energyLookup: energyLookup('skin'),
     followSurface: sss.followSurface,
     depthThresholdWorld: sss.horizontalPass.depthThresholdWorld,
+    foreshortening: sss.horizontalPass.foreshortening,
     maxRadiusPx: MAX_RADIUS_PX,
   });
   const timer = new GpuTimer(renderer.getContext());
@@ -177,16 +174,15 @@ function close() {
   session = null;
 }
 
-/** Renders one frame with `composer`; reads the linear output, its tone-mapped 8-bit image and the mask. */
+/** Renders one frame with `composer`; reads the linear output and its tone-mapped 8-bit image. */
 async function renderImages(composer) {
-  const { renderer, ldr, outputPass, sss, width, height } = session;
+  const { renderer, ldr, outputPass, width, height } = session;
   composer.render();
   const linear = await readRenderTargetFloats(renderer, composer.readBuffer);
   outputPass.render(renderer, ldr, composer.readBuffer);
   const toneMapped = new Uint8Array(width * height * 4);
   await renderer.readRenderTargetPixelsAsync(ldr, 0, 0, width, height, toneMapped);
-  const surface = await readRenderTargetFloats(renderer, sss.scenePass.renderTarget, 2);
-  return { linear, toneMapped, surface };
+  return { linear, toneMapped };
 }
 
 /** Largest on-screen radius of `radiusMm` over the subsurface pixels, from the surface read-back. */
@@ -221,21 +217,12 @@ async function reference({ profile, coverage = 0.997 }) {
   const t0 = performance.now();
   const images = await renderImages(denseComposer);
   const ms = performance.now() - t0;
-  const mask = Float32Array.from({ length: session.width * session.height }, (_, i) => images.surface[i * 4 + 1]);
-  const radiusPx = radiusPixels(images.surface, dense.radiusMm);
+  const surface = await readRenderTargetFloats(renderer, session.sss.scenePass.renderTarget, 2);
+  const mask = Float32Array.from({ length: session.width * session.height }, (_, i) => surface[i * 4 + 1]);
+  const radiusPx = radiusPixels(surface, dense.radiusMm);
   if (radiusPx >= MAX_RADIUS_PX) throw new RangeError(`reference: the kernel reaches ${radiusPx.toFixed(0)} px, beyond the dense pass's bound ${MAX_RADIUS_PX}`);
   session.references.set(profile, { ...images, mask, coverage });
-  void renderer;
   return { ms, radiusPx, radiusMm: dense.radiusMm, subsurfacePixels: mask.filter((m) => m > 0).length };
-}
-
-/** The footprint budget the bench's 'auto' row uses: every pixel of the 99.7 % radius its own footprint. */
-function autoSamples() {
-  const { sss } = session;
-  const pxPerMm = sss.kernelPixels / Math.max(...[...sss.kernel].filter((_, i) => i % 4 === 3).map(Math.abs));
-  const radiusPx = Math.max(...sss.profileLookup.profile.radiusMm(0.997)) * pxPerMm;
-  const samples = 2 * Math.ceil(radiusPx) + 3; // centre + one footprint per pixel + the tail, per side
-  return Math.min(63, samples);
 }
 
 /** Renders `count` whole frames with a 1-pixel read-back fence each; returns their wall times. */
@@ -275,18 +262,21 @@ function timeSssPasses(kind, count) {
 }
 
 /**
- * Measures one setting against the reference of its profile.
+ * Sets the pipeline to one setting and measures it: its error against the reference of its
+ * profile (when `errors`), then its times. Returns the raw times so that the runner can pool the
+ * samples of several rounds.
  * @param {object} o
  * @param {'separable'|'dense'} o.kind
  * @param {string} o.profile
  * @param {string} [o.method] 'footprint', 'marginal', 'reference' (separable)
- * @param {number|'auto'} [o.samples]
+ * @param {number|'auto'} [o.samples] 'auto': the module's choice (SubsurfaceScattering's samples 'auto')
  * @param {number} [o.coverage] dense only
- * @param {number} o.frames whole frames timed
- * @param {number} o.sssFrames SSS-only re-runs timed (at least 30 timer queries in all)
- * @param {boolean} [o.errors=true] compare with the reference (false: timing only)
+ * @param {number} o.frames whole frames timed (each also gives a timer query)
+ * @param {number} o.sssFrames SSS-only re-runs timed
+ * @param {boolean} [o.errors=true] compare with the reference (this frame also compiles the shaders)
+ * @param {boolean} [o.warmUp=true] without `errors`: render one untimed frame first
  */
-async function measure({ kind, profile, method, samples, coverage, frames, sssFrames, errors = true }) {
+async function measure({ kind, profile, method, samples, coverage, frames, sssFrames, errors = true, warmUp = true }) {
   const { sss, dense, separable, denseComposer, timer, width, height } = session;
   useProfile(profile);
   let composer = separable;
@@ -296,24 +286,21 @@ async function measure({ kind, profile, method, samples, coverage, frames, sssFr
     composer = denseComposer;
     Object.assign(row, { method: 'dense', samples: null, coverage, radiusMm: dense.radiusMm });
   } else {
+    // 'auto': the module picks the taps from the on-screen kernel size when the frame starts.
     const auto = samples === 'auto';
-    sss.setKernel({ method, samples: auto ? 17 : samples });
-    if (auto) {
-      separable.render(); // kernelPixels of this frame
-      sss.setKernel({ samples: autoSamples() });
-    }
+    sss.setKernel({ method, samples });
+    if (auto) separable.render();
     Object.assign(row, { method, samples: sss.kernel.length / 4, auto });
   }
-  timeFrames(composer, 1); // compiles the shaders of this setting outside the timings
   if (errors) {
     const ref = session.references.get(profile);
     if (!ref) throw new Error(`measure: render the reference of ${profile} first`);
     const images = await renderImages(composer);
     const e = radianceErrors(images.linear, ref.linear, ref.mask);
-    row.rmse = e.rmse;
-    row.maxError = e.maxError;
-    row.psnr = e.psnr;
+    Object.assign(row, { rmse: e.rmse, maxError: e.maxError, psnr: e.psnr });
     row.ssim = maskedSsim(images.toneMapped, ref.toneMapped, ref.mask, width, height);
+  } else if (warmUp) {
+    timeFrames(composer, 1);
   }
   row.kernelPixels = sss.kernelPixels;
   timer.recording = true;
@@ -321,10 +308,7 @@ async function measure({ kind, profile, method, samples, coverage, frames, sssFr
     const frameMs = timeFrames(composer, frames);
     const sssWallMs = timeSssPasses(kind, sssFrames);
     await nextTask();
-    const gpuMs = await timer.collect();
-    Object.assign(row, {
-      ms: median(frameMs), gpuMs: median(gpuMs), sssWallMs: median(sssWallMs), frames: frameMs.length, timerQueries: gpuMs.length,
-    });
+    row.times = { frameMs, sssWallMs, gpuMs: await timer.collect() };
   } finally {
     timer.recording = false;
   }
@@ -335,11 +319,12 @@ async function measure({ kind, profile, method, samples, coverage, frames, sssFr
  * The images the dense test compares with the float64 oracle: the scene pass's diffuse light and
  * surface, and the dense pass's output alone (before compose).
  */
-async function readDense({ profile, coverage = 0.997, followSurface = 'drop' }) {
+async function readDense({ profile, coverage = 0.997, followSurface = 'drop', foreshortening = true }) {
   const { sss, dense, denseComposer, renderer, built, width, height } = session;
   useProfile(profile);
   dense.setCoverage(coverage);
   dense.setFollowSurface(followSurface);
+  dense.setForeshortening(foreshortening);
   sss.composePass.enabled = false;
   try {
     denseComposer.render();
@@ -355,6 +340,7 @@ async function readDense({ profile, coverage = 0.997, followSurface = 'drop' }) 
     projectionScale: [p[0], p[5]],
     depthThresholdWorld: dense.depthThresholdWorld,
     followSurface: dense.followSurface,
+    foreshortening: dense.foreshortening,
     glError: renderer.getContext().getError(),
   };
 }

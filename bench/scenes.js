@@ -10,8 +10,8 @@ import {
 import { loadHead } from '../demo/headModel.js';
 import { createHeadScene, FACE_CENTRE, HEAD_WORLD_UNIT_IN_MM } from '../demo/headScene.js';
 
-/** The synthetic scenes' scale: 1 unit = 10 cm, so at 720p one profile mm spans about 2 pixels. */
-const SYNTHETIC_UNIT_IN_MM = 100;
+/** The synthetic scenes' scale: 1 unit = 5 cm, so at 640×360 one profile mm spans about 2 pixels. */
+const SYNTHETIC_UNIT_IN_MM = 50;
 
 function camera(aspect, fovY = 20, distance = 10) {
   const c = new PerspectiveCamera(fovY, aspect, 0.5, 100);

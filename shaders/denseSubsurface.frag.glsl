@@ -2,19 +2,23 @@
 // whose centre lies within the radius holding `coverage` of the profile's energy contributes its
 // diffuse light, weighted by the profile's exact energy over that pixel's square (from the
 // QuadrantEnergyLookup: exact however narrow the profile is against a pixel). Same units, mask and
-// depth rules as the separable blur; test/oracle/convolution.js (denseConvolutionOracle) computes
-// the same in float64.
-// Defines: FOLLOW_SURFACE (0 off, 1 drop, 2 lerp).
+// depth rules as the separable blur (shaders/subsurfaceBlur.frag.glsl); without FORESHORTEN,
+// test/oracle/convolution.js's denseConvolutionOracle computes the same in float64.
+// Defines: FOLLOW_SURFACE (0 off, 1 drop, 2 lerp), FORESHORTEN (0 or 1).
 //
 // Per pixel c: pixels per mm along x and y, s = widthWorld * (P0, P5) / (2 * depth) * (width, height)
-// (depth 1 for an orthographic camera); offsets (di, dj) with (di / s.x)^2 + (dj / s.y)^2 <= radius^2
-// count with E(di, dj) = the energy over [di - 1/2, di + 1/2] / s.x × [dj - 1/2, dj + 1/2] / s.y mm, times
-// 0 off the mask and (drop) 1 - clamp(|dz| / threshold); each channel is renormalised by the weights
-// used. E is the same at (±di, ±dj): it is computed once per quadrant offset, from two new table
-// reads (the left edge is carried along the row).
+// (depth 1 for an orthographic camera). With FORESHORTEN, each axis as the blur does it: s is
+// multiplied by cos(tilt) = 1 / sqrt(1 + (slope / pixelWorld)^2) of the surface along that axis
+// (shaders/surfaceSlope.glsl), and the depth rule compares each pixel with the plane through c,
+// depth + slopeX * di + slopeY * dj (the cross term of a diagonal tilt is left out, as the
+// separable blur must). Offsets (di, dj) with (di / s.x)^2 + (dj / s.y)^2 <= radius^2 count with
+// E(di, dj) = the energy over [di - 1/2, di + 1/2] / s.x × [dj - 1/2, dj + 1/2] / s.y mm, times 0 off
+// the mask (the diffuse light's alpha) and, in 'drop' mode, 1 - clamp(|dz| / threshold); each
+// channel is renormalised by the weights used. E is the same at (±di, ±dj): it is computed once per
+// quadrant offset, from two new table reads (the left edge is carried along the row).
 
-uniform sampler2D tDiffuse;  // diffuse light, linear HDR
-uniform sampler2D tSurface;  // r: linear view depth (world units), g: world units per profile mm (0 = not subsurface)
+uniform sampler2D tDiffuse;  // diffuse light, linear HDR; alpha 1 on subsurface pixels (the mask)
+uniform sampler2D tSurface;  // r: linear view depth (world units), g: world units per profile mm
 uniform sampler2D tQuadrant; // QuadrantEnergyLookup.texture
 uniform float quadrantRangeMm; // QuadrantEnergyLookup.rangeMm
 uniform float radiusMm;        // the radius holding `coverage` of the energy (widest channel)
@@ -24,8 +28,9 @@ uniform float depthFalloff;    // 1 / depth threshold (world units)
 uniform bool perspective;      // false for an orthographic camera
 uniform int maxRadiusPx;       // bound on the loops (the bench checks the radius stays below it)
 
-// shaders/quadrantEnergy.glsl is inlined here by DenseSubsurfacePass.
+// Inlined here by DenseSubsurfacePass: shaders/quadrantEnergy.glsl, shaders/surfaceSlope.glsl.
 QUADRANT_ENERGY_GLSL
+SURFACE_SLOPE_GLSL
 
 varying vec2 vUv;
 
@@ -33,16 +38,17 @@ bool denseFinite( const in vec3 c ) {
 	return ! ( any( isnan( c ) ) || any( isinf( c ) ) );
 }
 
-// Adds the pixel at `offset` from the centre with profile energy `energy` to the sums.
-void addPixel( const in ivec2 pixel, const in ivec2 offset, const in vec3 energy, const in float centreDepth, const in vec3 centre, inout vec3 sum, inout vec3 weightSum ) {
+// Adds the pixel at `offset` from the centre with profile energy `energy` to the sums; its depth
+// is compared with `expectedDepth`, the centre's plane there.
+void addPixel( const in ivec2 pixel, const in ivec2 offset, const in vec3 energy, const in float expectedDepth, const in vec3 centre, inout vec3 sum, inout vec3 weightSum ) {
 	ivec2 texel = pixel + offset;
 	if ( any( lessThan( texel, ivec2( 0 ) ) ) || any( greaterThanEqual( texel, ivec2( resolution ) ) ) ) return;
-	vec2 surface = texelFetch( tSurface, texel, 0 ).rg;
-	vec3 colour = texelFetch( tDiffuse, texel, 0 ).rgb;
-	if ( ! ( surface.g > 0.0 ) || ! denseFinite( colour ) ) return; // the mask: zero weight
+	vec4 light = texelFetch( tDiffuse, texel, 0 );
+	vec3 colour = light.rgb;
+	if ( ! ( light.a > 0.0 ) || ! denseFinite( colour ) ) return; // the mask: zero weight
 	float keep = 1.0;
 	#if FOLLOW_SURFACE != 0
-		float farness = clamp( abs( surface.r - centreDepth ) * depthFalloff, 0.0, 1.0 );
+		float farness = clamp( abs( texelFetch( tSurface, texel, 0 ).r - expectedDepth ) * depthFalloff, 0.0, 1.0 );
 		#if FOLLOW_SURFACE == 1
 			keep = 1.0 - farness;
 		#else
@@ -56,14 +62,26 @@ void addPixel( const in ivec2 pixel, const in ivec2 offset, const in vec3 energy
 void main() {
 	ivec2 pixel = ivec2( gl_FragCoord.xy );
 	vec2 surface = texelFetch( tSurface, pixel, 0 ).rg;
-	vec3 centre = texelFetch( tDiffuse, pixel, 0 ).rgb;
-	if ( ! denseFinite( centre ) ) centre = vec3( 0.0 );
-	if ( ! ( surface.g > 0.0 ) ) {
+	vec4 centreLight = texelFetch( tDiffuse, pixel, 0 );
+	vec3 centre = denseFinite( centreLight.rgb ) ? centreLight.rgb : vec3( 0.0 );
+	if ( ! ( centreLight.a > 0.0 ) ) {
 		gl_FragColor = vec4( centre, 0.0 ); // not subsurface: as it was, like the blur
 		return;
 	}
+	if ( ! ( surface.g > 0.0 ) ) {
+		gl_FragColor = vec4( centre, 1.0 ); // no width (strength 0): no scattering
+		return;
+	}
 
-	vec2 pxPerMm = surface.g * projectionScale / ( 2.0 * ( perspective ? surface.r : 1.0 ) ) * resolution;
+	float depth = perspective ? surface.r : 1.0;
+	vec2 pxPerMm = surface.g * projectionScale / ( 2.0 * depth ) * resolution;
+	vec2 slope = vec2( 0.0 ); // depth change per pixel along x and y, world units
+	#if FORESHORTEN == 1
+		vec2 pixelWorld = 2.0 * depth / ( projectionScale * resolution ); // world units per pixel across
+		slope = vec2( sssSurfaceSlope( pixel, 0, surface, pixelWorld.x ), sssSurfaceSlope( pixel, 1, surface, pixelWorld.y ) );
+		vec2 tilt = slope / pixelWorld;
+		pxPerMm *= inversesqrt( 1.0 + tilt * tilt ); // cos(tilt) per axis
+	#endif
 	ivec2 radiusPx = min( ivec2( floor( radiusMm * pxPerMm ) ), ivec2( maxRadiusPx ) );
 	vec3 sum = vec3( 0.0 );
 	vec3 weightSum = vec3( 0.0 );
@@ -82,11 +100,12 @@ void main() {
 			vec3 energy = highRight - highLeft - lowRight + lowLeft;
 			lowLeft = lowRight;
 			highLeft = highRight;
-			addPixel( pixel, ivec2( di, dj ), energy, surface.r, centre, sum, weightSum );
-			if ( di > 0 ) addPixel( pixel, ivec2( - di, dj ), energy, surface.r, centre, sum, weightSum );
+			vec2 dz = slope * vec2( di, dj );
+			addPixel( pixel, ivec2( di, dj ), energy, surface.r + dz.x + dz.y, centre, sum, weightSum );
+			if ( di > 0 ) addPixel( pixel, ivec2( - di, dj ), energy, surface.r - dz.x + dz.y, centre, sum, weightSum );
 			if ( dj > 0 ) {
-				addPixel( pixel, ivec2( di, - dj ), energy, surface.r, centre, sum, weightSum );
-				if ( di > 0 ) addPixel( pixel, ivec2( - di, - dj ), energy, surface.r, centre, sum, weightSum );
+				addPixel( pixel, ivec2( di, - dj ), energy, surface.r + dz.x - dz.y, centre, sum, weightSum );
+				if ( di > 0 ) addPixel( pixel, ivec2( - di, - dj ), energy, surface.r - dz.x - dz.y, centre, sum, weightSum );
 			}
 		}
 	}

@@ -21,7 +21,7 @@
 //   renormalised by the weights used;
 // - grazing angles (FORESHORTEN, default on): the surface's depth slope along the axis, in world
 //   units per pixel, comes from the two neighbours (central difference; one-sided when a neighbour
-//   is off the mask or steeper than MAX_SLOPE = 4; 0 when both are). A surface tilted by theta puts
+//   is off the mask or steeper than SSS_MAX_SLOPE = 4; 0 when both are). A surface tilted by theta puts
 //   1 / cos(theta) = sqrt(1 + s^2) of surface under each pixel (s: depth change per world unit
 //   across), so the step shrinks by cos(theta), as the seed paper proposes with a normal buffer; and
 //   'drop'/'lerp' measure each texel's depth against the plane through the centre (centre depth +
@@ -33,14 +33,14 @@ uniform vec4 kernel[ SAMPLES ]; // (weight R, G, B, offset in kernel mm), centre
 uniform float kernelRadiusMm;   // the kernel's reach: below half a pixel a pixel does no work
 uniform vec3 strength;          // 'footprint' mode: mix with no scattering (the reference's strength)
 uniform float projectionScale;  // camera.projectionMatrix.elements[0] or [5]
-uniform float resolution;       // pixels along AXIS
+uniform vec2 resolution;        // pixels (width, height)
 uniform float depthFalloff;     // 1 / depth threshold (world units): dz beyond it is another surface
 uniform bool perspective;       // false for an orthographic camera: the step does not shrink with depth
 
-// Steeper than this (76 degrees) a neighbour counts as another surface for the slope estimate:
-// at coarse resolutions a real depth edge (nose over cheek, ~20 mm) can be only a few pixel-widths
-// deep, and must not pass for a tilted plane.
-#define MAX_SLOPE 4.0
+// shaders/surfaceSlope.glsl (the slope estimate, shared with the dense reference) is inlined here
+// by SubsurfaceBlurPass. Its SSS_MAX_SLOPE = 4 (76 degrees): at coarse resolutions a real depth
+// edge (nose over cheek, ~20 mm) can be only a few pixel-widths deep and must not pass for a plane.
+SURFACE_SLOPE_GLSL
 
 #if KERNEL_MODE == 1
 	#define BLOCKS ( ( SAMPLES - 1 ) / 2 - 1 ) // footprints per side before the tail
@@ -86,12 +86,12 @@ float texelWeight( const in ivec2 texel, const in float interpolation, const in 
 // compared with the depth the centre's plane predicts there: centreDepth + slope * (texel offset).
 void addTap( const in float offsetPx, const in vec3 weight, const in ivec2 pixel, const in float centreDepth, const in float slope, const in vec3 centre, inout vec3 sum, inout vec3 weightSum ) {
 	float position = float( pixel[ AXIS ] ) + 0.5 + offsetPx;
-	if ( position < 0.0 || position >= resolution ) return;
+	if ( position < 0.0 || position >= resolution[ AXIS ] ) return;
 	// The two texels around the tap along the axis (centres at integer + 0.5, clamped).
 	float u = position - 0.5;
 	float below = floor( u );
 	float fraction = u - below;
-	int last = int( resolution ) - 1;
+	int last = int( resolution[ AXIS ] ) - 1;
 	ivec2 texel0 = pixel;
 	ivec2 texel1 = pixel;
 	texel0[ AXIS ] = clamp( int( below ), 0, last );
@@ -117,22 +117,12 @@ void main() {
 		return;
 	}
 
-	float stepPx = surface.g * projectionScale / ( 2.0 * ( perspective ? surface.r : 1.0 ) ) * resolution;
+	float stepPx = surface.g * projectionScale / ( 2.0 * ( perspective ? surface.r : 1.0 ) ) * resolution[ AXIS ];
 	float slope = 0.0; // depth change per pixel along the axis, world units
 	#if FORESHORTEN == 1
 		// World units one pixel spans across the view at this depth.
-		float pixelWorld = 2.0 * ( perspective ? surface.r : 1.0 ) / ( projectionScale * resolution );
-		ivec2 before = pixel;
-		ivec2 after = pixel;
-		before[ AXIS ] = max( pixel[ AXIS ] - 1, 0 );
-		after[ AXIS ] = min( pixel[ AXIS ] + 1, int( resolution ) - 1 );
-		vec2 surfaceBefore = texelFetch( tSurface, before, 0 ).rg;
-		vec2 surfaceAfter = texelFetch( tSurface, after, 0 ).rg;
-		float slopeBefore = surface.r - surfaceBefore.r;
-		float slopeAfter = surfaceAfter.r - surface.r;
-		bool useBefore = surfaceBefore.g > 0.0 && before != pixel && abs( slopeBefore ) <= MAX_SLOPE * pixelWorld;
-		bool useAfter = surfaceAfter.g > 0.0 && after != pixel && abs( slopeAfter ) <= MAX_SLOPE * pixelWorld;
-		slope = useBefore && useAfter ? 0.5 * ( slopeBefore + slopeAfter ) : useBefore ? slopeBefore : useAfter ? slopeAfter : 0.0;
+		float pixelWorld = 2.0 * ( perspective ? surface.r : 1.0 ) / ( projectionScale * resolution[ AXIS ] );
+		slope = sssSurfaceSlope( pixel, AXIS, surface, pixelWorld );
 		float tilt = slope / pixelWorld;
 		stepPx *= inversesqrt( 1.0 + tilt * tilt ); // cos(theta)
 	#endif

@@ -8,13 +8,14 @@ import { ShaderPass } from 'three/addons/postprocessing/ShaderPass.js';
 import vertexShader from '../shaders/fullscreen.vert.glsl?raw';
 import denseGlsl from '../shaders/denseSubsurface.frag.glsl?raw';
 import quadrantEnergyGlsl from '../shaders/quadrantEnergy.glsl?raw';
+import surfaceSlopeGlsl from '../shaders/surfaceSlope.glsl?raw';
 import { QuadrantEnergyLookup } from './QuadrantEnergyLookup.js';
 import { SubsurfaceBlurPass } from './SubsurfaceBlurPass.js';
 import { getProfile } from './profiles.js';
 import { checkInteger, checkNumber } from './parameterChecks.js';
 import { describe } from './rendererSupport.js';
 
-const fragmentShader = denseGlsl.replace('QUADRANT_ENERGY_GLSL', quadrantEnergyGlsl);
+const fragmentShader = denseGlsl.replace('QUADRANT_ENERGY_GLSL', quadrantEnergyGlsl).replace('SURFACE_SLOPE_GLSL', surfaceSlopeGlsl);
 
 export class DenseSubsurfacePass extends ShaderPass {
   /**
@@ -23,7 +24,7 @@ export class DenseSubsurfacePass extends ShaderPass {
    * @param {import('three').Texture} options.surfaceTexture the scene pass's surface attachment
    *   (r: linear view depth in world units, g: world units per profile mm, 0 off subsurface pixels)
    * @param {import('three').Texture|null} [options.diffuseTexture=null] the scene pass's diffuse
-   *   attachment; null reads the composer's read buffer
+   *   attachment (alpha: the mask); null reads the composer's read buffer
    * @param {string|object} [options.profile='skin'] profile name or object (ignored when
    *   `energyLookup` is given)
    * @param {QuadrantEnergyLookup|null} [options.energyLookup=null] a table to share (not disposed
@@ -33,11 +34,13 @@ export class DenseSubsurfacePass extends ShaderPass {
    * @param {'drop'|'lerp'|'off'} [options.followSurface='drop'] what a pixel on another surface does
    * @param {number} [options.depthThresholdWorld=0.006] depth difference (world units) at which a
    *   pixel counts fully as another surface
+   * @param {boolean} [options.foreshortening=true] grazing angles, as the blur: shrink each axis by
+   *   cos(tilt) of the surface along it and compare depths with the local plane
    * @param {number} [options.maxRadiusPx=128] bound on the radius in pixels (loop bound)
    */
   constructor({
     camera, surfaceTexture, diffuseTexture = null, profile = 'skin', energyLookup = null, coverage = 0.997,
-    followSurface = 'drop', depthThresholdWorld = 0.006, maxRadiusPx = 128,
+    followSurface = 'drop', depthThresholdWorld = 0.006, foreshortening = true, maxRadiusPx = 128,
   } = {}) {
     if (!camera || camera.isCamera !== true) throw new TypeError(`DenseSubsurfacePass: camera must be a THREE.Camera, got ${describe(camera)}`);
     if (!surfaceTexture || surfaceTexture.isTexture !== true) {
@@ -49,7 +52,7 @@ export class DenseSubsurfacePass extends ShaderPass {
     checkInteger('maxRadiusPx', maxRadiusPx, 1, 4096, 'pixels');
     super({
       name: 'DenseSubsurfacePass',
-      defines: { FOLLOW_SURFACE: 1 },
+      defines: { FOLLOW_SURFACE: 1, FORESHORTEN: 1 },
       uniforms: {
         tDiffuse: { value: null },
         tSurface: { value: null },
@@ -73,17 +76,7 @@ export class DenseSubsurfacePass extends ShaderPass {
     this.diffuseTexture = diffuseTexture;
     this.setCoverage(coverage);
     this.setFollowSurface(followSurface, depthThresholdWorld);
-  }
-
-  /** null: convolve the composer's read buffer; a texture: that one. */
-  set diffuseTexture(texture) {
-    this._diffuseTexture = texture;
-    this.uniforms.tDiffuse.value = texture;
-    this.textureID = texture ? null : 'tDiffuse'; // ShaderPass wires readBuffer only to textureID
-  }
-
-  get diffuseTexture() {
-    return this._diffuseTexture;
+    this.setForeshortening(foreshortening);
   }
 
   /** The profile convolved with (the energy table's). */
@@ -120,13 +113,19 @@ export class DenseSubsurfacePass extends ShaderPass {
     this.uniforms.quadrantRangeMm.value = this.energyLookup.rangeMm;
   }
 
+  // The blur's setters, shared so the two cannot drift apart (same define and uniform names).
+
   /**
-   * The blur's rule, shared so the two cannot drift apart (same define and uniform names).
    * @param {'drop'|'lerp'|'off'} mode
    * @param {number} depthThresholdWorld world units, > 0
    */
   setFollowSurface(mode, depthThresholdWorld = this.depthThresholdWorld) {
     SubsurfaceBlurPass.prototype.setFollowSurface.call(this, mode, depthThresholdWorld);
+  }
+
+  /** @param {boolean} enabled the grazing-angle correction (see the constructor) */
+  setForeshortening(enabled) {
+    SubsurfaceBlurPass.prototype.setForeshortening.call(this, enabled);
   }
 
   /** @param {number} width device pixels @param {number} height device pixels */
@@ -146,3 +145,6 @@ export class DenseSubsurfacePass extends ShaderPass {
     if (this._ownsLookup) this.energyLookup.dispose();
   }
 }
+
+// `diffuseTexture` (null: the composer's read buffer; a texture: that one) works as the blur's.
+Object.defineProperty(DenseSubsurfacePass.prototype, 'diffuseTexture', Object.getOwnPropertyDescriptor(SubsurfaceBlurPass.prototype, 'diffuseTexture'));

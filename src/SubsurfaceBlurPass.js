@@ -2,11 +2,12 @@
 // (horizontal, then vertical) make the paper's two screen-space passes. Only subsurface pixels
 // change; taps on other pixels, off screen or on another surface are dropped and the rest
 // renormalised per channel (or lerped back to the centre colour, as in the reference).
-import { Vector3, Vector4 } from 'three';
+import { Vector2, Vector3, Vector4 } from 'three';
 import { ShaderPass } from 'three/addons/postprocessing/ShaderPass.js';
 import vertexShader from '../shaders/fullscreen.vert.glsl?raw';
 import blurGlsl from '../shaders/subsurfaceBlur.frag.glsl?raw';
 import profileLookupGlsl from '../shaders/profileLookup.glsl?raw';
+import surfaceSlopeGlsl from '../shaders/surfaceSlope.glsl?raw';
 import { kernelRadiusMm } from './kernel.js';
 import { ProfileLookup } from './ProfileLookup.js';
 import { checkNumber, checkOneOf, checkRgb } from './parameterChecks.js';
@@ -15,7 +16,7 @@ import { describe } from './rendererSupport.js';
 export const FOLLOW_SURFACE_MODES = ['off', 'drop', 'lerp'];
 export const KERNEL_MODES = ['taps', 'footprint'];
 const DIRECTIONS = ['horizontal', 'vertical'];
-const fragmentShader = blurGlsl.replace('PROFILE_LOOKUP_GLSL', profileLookupGlsl);
+const fragmentShader = blurGlsl.replace('PROFILE_LOOKUP_GLSL', profileLookupGlsl).replace('SURFACE_SLOPE_GLSL', surfaceSlopeGlsl);
 
 /**
  * The footprints of the 'footprint' mode from a marginal kernel's positive offsets o_1 < … < o_H:
@@ -84,7 +85,7 @@ export class SubsurfaceBlurPass extends ShaderPass {
         kernelRadiusMm: { value: 0 },
         strength: { value: new Vector3(1, 1, 1) },
         projectionScale: { value: 1 },
-        resolution: { value: 1 },
+        resolution: { value: new Vector2(1, 1) },
         depthFalloff: { value: 1 },
         perspective: { value: true },
         tProfile: { value: null },
@@ -199,7 +200,7 @@ export class SubsurfaceBlurPass extends ShaderPass {
 
   /** @param {number} width device pixels @param {number} height device pixels */
   setSize(width, height) {
-    this.uniforms.resolution.value = this.direction === 'horizontal' ? width : height;
+    this.uniforms.resolution.value.set(width, height);
   }
 
   render(renderer, writeBuffer, readBuffer, deltaTime, maskActive) {

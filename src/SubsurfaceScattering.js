@@ -29,10 +29,17 @@ export const METHODS = ['footprint', 'marginal', 'reference'];
 
 /**
  * Tap budgets 'auto' chooses from: each is compiled once, so few levels keep shader switches rare.
- * The smallest is used whose (samples - 3) / 2 single-pixel footprints per side reach the radius
- * holding 99 % of the marginal's energy on screen (the footprint method is then exact within ~1 %).
+ * The smallest is used whose (samples - 3) / 2 single-pixel footprints per side reach AUTO_REACH of
+ * the on-screen radius holding 99 % of the marginal's energy.
  */
 export const AUTO_SAMPLES = [5, 9, 13, 17, 25, 33, 45, 63];
+
+/**
+ * Measured (docs/BENCH.md, "Footprint taps and auto quality"): the error against the dense reference
+ * stops falling once (samples - 3) / 2 reaches 0.6-0.92 of the radius estimate, which is an upper
+ * bound (the nearest bounding-box corner); 0.92 is the conservative end.
+ */
+export const AUTO_REACH = 0.92;
 
 /** Below half a pixel a kernel cannot move light into another pixel (issue: "no work"). */
 export const MIN_KERNEL_PIXELS = 0.5;
@@ -300,7 +307,7 @@ export class SubsurfaceScattering {
   /** 'auto' samples: the fewest AUTO_SAMPLES resolving the on-screen kernel pixel by pixel. */
   _chooseSamples(pixelsPerMm) {
     const radiusPx = this.profileLookup.marginalRadiusMm * pixelsPerMm;
-    const samples = AUTO_SAMPLES.find((n) => (n - 3) / 2 >= radiusPx) ?? AUTO_SAMPLES[AUTO_SAMPLES.length - 1];
+    const samples = AUTO_SAMPLES.find((n) => (n - 3) / 2 >= AUTO_REACH * radiusPx) ?? AUTO_SAMPLES[AUTO_SAMPLES.length - 1];
     if (samples !== this._kernelOptions.samples) this._applyKernel({ samples });
   }
 

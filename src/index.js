@@ -8,6 +8,6 @@ export { makeSubsurface, getSubsurface, transmittanceChunk, createTransmittanceU
 export { SubsurfaceScenePass } from './SubsurfaceScenePass.js';
 export { SubsurfaceBlurPass, footprintsOf, FOLLOW_SURFACE_MODES, KERNEL_MODES } from './SubsurfaceBlurPass.js';
 export { SubsurfaceComposePass, DEBUG_VIEWS } from './SubsurfaceComposePass.js';
-export { SubsurfaceScattering, MIN_KERNEL_PIXELS, METHODS, AUTO_SAMPLES } from './SubsurfaceScattering.js';
+export { SubsurfaceScattering, MIN_KERNEL_PIXELS, METHODS, AUTO_SAMPLES, AUTO_REACH } from './SubsurfaceScattering.js';
 export { QuadrantEnergyLookup } from './QuadrantEnergyLookup.js';
 export { DenseSubsurfacePass } from './DenseSubsurfacePass.js';

@@ -37,8 +37,8 @@ describe('pass conventions', () => {
       pipeline.render();
       const sizes = {
         scene: [sss.scenePass.renderTarget.width, sss.scenePass.renderTarget.height],
-        horizontal: sss.horizontalPass.uniforms.resolution.value,
-        vertical: sss.verticalPass.uniforms.resolution.value,
+        horizontal: sss.horizontalPass.uniforms.resolution.value.toArray(),
+        vertical: sss.verticalPass.uniforms.resolution.value.toArray(),
       };
       const types = sss.scenePass.renderTarget.textures.map((t) => t.type);
       const during = { ...renderer.info.memory };
@@ -50,7 +50,7 @@ describe('pass conventions', () => {
       const after = { ...renderer.info.memory };
       return { baseline, during, after, sizes, types, unhooked, halfFloat: THREE.HalfFloatType, float: THREE.FloatType };
     });
-    expect(r.sizes).toEqual({ scene: [80, 45], horizontal: 80, vertical: 45 });
+    expect(r.sizes).toEqual({ scene: [80, 45], horizontal: [80, 45], vertical: [80, 45] });
     for (const t of r.types) expect([r.halfFloat, r.float]).toContain(t);
     expect(r.during.textures).toBeGreaterThan(r.baseline.textures);
     expect(r.after).toEqual(r.baseline);
