@@ -146,8 +146,9 @@ async function start() {
     writeHash();
   }
 
+  // A figure defines the whole view: everything else returns to its default (bar the resolution).
   function onFigure(id, side) {
-    Object.assign(state, figureState(id, side));
+    Object.assign(state, defaultState(), { resolutionScale: state.resolutionScale }, figureState(id, side));
     applyAll();
     panel.refresh();
     writeHash();

@@ -4,7 +4,9 @@ export { computeKernel, kernelRadiusMm, referenceKernel } from './kernel.js';
 export { profiles, getProfile, burleyProfile, dipoleProfile, transmittance } from './profiles.js';
 export { LightDepthTarget } from './LightDepthTarget.js';
 export { ProfileLookup } from './ProfileLookup.js';
-export { makeSubsurface, getSubsurface, transmittanceChunk, createTransmittanceUniforms } from './subsurfaceMaterial.js';
+export {
+  makeSubsurface, getSubsurface, transmittanceChunk, createTransmittanceUniforms, transmittanceUniformSlots,
+} from './subsurfaceMaterial.js';
 export { SubsurfaceScenePass } from './SubsurfaceScenePass.js';
 export { SubsurfaceBlurPass, footprintsOf, FOLLOW_SURFACE_MODES, KERNEL_MODES } from './SubsurfaceBlurPass.js';
 export { SubsurfaceComposePass, DEBUG_VIEWS } from './SubsurfaceComposePass.js';

@@ -46,6 +46,23 @@ function inject(source, needle, replacement) {
 }
 
 /**
+ * The uniform objects `transmittanceChunk` reads, with neutral values. A hooked material owns one
+ * set for its whole life: three keeps the uniform objects of a program's first compile when it
+ * switches back to that program, so they must never be replaced.
+ */
+export function transmittanceUniformSlots() {
+  return {
+    sssLightDepthMap: { value: null },
+    sssViewToLightView: { value: new Matrix4() },
+    sssLightProjection: { value: new Matrix4() },
+    sssShrinkWorld: { value: 0 },
+    sssProfileLookup: { value: null },
+    sssTransmittanceRangeMm: { value: 1 },
+    sssThicknessToProfileMm: { value: 1 },
+  };
+}
+
+/**
  * Creates the uniforms of `transmittanceChunk` and a function that refreshes them for a camera.
  * Use it for a custom ShaderMaterial that includes the chunk.
  * @param {object} options
@@ -55,18 +72,10 @@ function inject(source, needle, replacement) {
  * @param {number} [options.widthMm=1] profile scale: millimetres of material per profile millimetre
  * @param {number} [options.translucency=0] 0..<1, shortens the thickness by (1 - translucency)
  * @param {number} [options.shrinkMm=0.6] inward shrink along the vertex normal, mm (against acne)
+ * @param {object} [uniforms] existing uniform objects to fill (see transmittanceUniformSlots); new ones by default
  * @returns {{ uniforms: object, update(camera: import('three').Camera): void, set(options: object): void }}
  */
-export function createTransmittanceUniforms(options) {
-  const uniforms = {
-    sssLightDepthMap: { value: null },
-    sssViewToLightView: { value: new Matrix4() },
-    sssLightProjection: { value: new Matrix4() },
-    sssShrinkWorld: { value: 0 },
-    sssProfileLookup: { value: null },
-    sssTransmittanceRangeMm: { value: 1 },
-    sssThicknessToProfileMm: { value: 1 },
-  };
+export function createTransmittanceUniforms(options, uniforms = transmittanceUniformSlots()) {
   const state = { widthMm: 1, translucency: 0, shrinkMm: 0.6 };
   function set(next) {
     Object.assign(state, Object.fromEntries(Object.entries(next).filter(([, v]) => v !== undefined)));
@@ -139,7 +148,9 @@ export function makeSubsurface(material, options = {}) {
     sssLightDecay: { value: 2 },
     sssSpotConeCos: { value: 0 },
     sssSpotPenumbraCos: { value: 1 },
+    ...transmittanceUniformSlots(),
   };
+  let transmittanceUniforms = null; // filled once, kept while transmittance is off: see transmittanceUniformSlots
   const hook = {
     material,
     uniforms,
@@ -166,11 +177,11 @@ export function makeSubsurface(material, options = {}) {
     if (o.transmittance) {
       const t = o.transmittance;
       const settings = { ...t, worldUnitInMm: o.worldUnitInMm, widthMm: o.widthMm };
-      if (hook.transmittance) hook.transmittance.set(settings);
-      else hook.transmittance = createTransmittanceUniforms(settings);
+      if (transmittanceUniforms) transmittanceUniforms.set(settings);
+      else transmittanceUniforms = createTransmittanceUniforms(settings, uniforms);
+      hook.transmittance = transmittanceUniforms;
       hook.transmittance.lightDepth = t.lightDepth;
       hook.transmittance.lightType = t.lightDepth.light.isSpotLight ? 1 : 0;
-      Object.assign(uniforms, hook.transmittance.uniforms);
     } else {
       hook.transmittance = null;
     }

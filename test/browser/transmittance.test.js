@@ -67,6 +67,18 @@ describe('transmittance', () => {
     expect(sums[0]).toBeGreaterThan(5 * sums[2]);
   });
 
+  it('turned off and on again, transmittance comes back the same', async () => {
+    const once = await backlit(1);
+    const toggled = await runLab(page, {
+      scene: 'backlit', thicknessMm: 1, worldUnitInMm: WORLD_UNIT_IN_MM, transmittance: true, type: 'float',
+      material: { shrinkMm: SHRINK_MM }, reads: ['diffuse'], toggleTransmittance: true,
+    });
+    let worst = 0;
+    for (let i = 0; i < once.diffuse.length; i++) worst = Math.max(worst, Math.abs(once.diffuse[i] - toggled.diffuse[i]));
+    expect(Math.max(...once.diffuse)).toBeGreaterThan(0.3);
+    expect(worst).toBeLessThan(1e-6);
+  });
+
   it('a 50 mm slab transmits nothing (< 1e-3)', async () => {
     const r = await backlit(50);
     expect(Math.max(...expected(50))).toBeLessThan(1e-6);

@@ -159,6 +159,17 @@ async function run(options) {
   } else {
     composer.addPass(new RenderPass(built.scene, built.camera));
   }
+  if (o.toggleTransmittance) {
+    // Off and on again, with the light moved meanwhile: the materials switch programs back and
+    // forth (three caches them), and the light's uniforms must follow.
+    const home = built.light.position.clone();
+    built.light.position.x += 4;
+    composer.render();
+    sss.setTransmittance(false);
+    composer.render();
+    built.light.position.copy(home);
+    sss.setTransmittance(true);
+  }
   composer.render();
   const reads = { output: () => read(renderer, composer.readBuffer) };
   if (sss) {
