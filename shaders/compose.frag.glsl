@@ -14,9 +14,8 @@ uniform float debugThicknessRangeMm; // millimetres mapped to white in the thick
 
 varying vec2 vUv;
 
-bool composeFinite( const in vec3 c ) {
-	return ! ( any( isnan( c ) ) || any( isinf( c ) ) );
-}
+// shaders/finite.glsl, inlined by the pass.
+FINITE_GLSL
 
 void main() {
 	ivec2 pixel = ivec2( gl_FragCoord.xy );
@@ -41,6 +40,6 @@ void main() {
 		colour = subsurface ? texelFetch( tUnscattered, pixel, 0 ).rgb : vec3( 0.0 );
 	#endif
 	// Never hand NaN or Inf to tone mapping.
-	if ( ! composeFinite( colour ) ) colour = vec3( 0.0 );
+	if ( ! sssFinite( colour ) ) colour = vec3( 0.0 );
 	gl_FragColor = vec4( colour, light.a );
 }

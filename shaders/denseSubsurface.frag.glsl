@@ -34,9 +34,8 @@ SURFACE_SLOPE_GLSL
 
 varying vec2 vUv;
 
-bool denseFinite( const in vec3 c ) {
-	return ! ( any( isnan( c ) ) || any( isinf( c ) ) );
-}
+// shaders/finite.glsl, inlined by the pass.
+FINITE_GLSL
 
 // Adds the pixel at `offset` from the centre with profile energy `energy` to the sums; its depth
 // is compared with `expectedDepth`, the centre's plane there.
@@ -45,7 +44,7 @@ void addPixel( const in ivec2 pixel, const in ivec2 offset, const in vec3 energy
 	if ( any( lessThan( texel, ivec2( 0 ) ) ) || any( greaterThanEqual( texel, ivec2( resolution ) ) ) ) return;
 	vec4 light = texelFetch( tDiffuse, texel, 0 );
 	vec3 colour = light.rgb;
-	if ( ! ( light.a > 0.0 ) || ! denseFinite( colour ) ) return; // the mask: zero weight
+	if ( ! ( light.a > 0.0 ) || ! sssFinite( colour ) ) return; // the mask: zero weight
 	float keep = 1.0;
 	#if FOLLOW_SURFACE != 0
 		float farness = clamp( abs( texelFetch( tSurface, texel, 0 ).r - expectedDepth ) * depthFalloff, 0.0, 1.0 );
@@ -63,7 +62,7 @@ void main() {
 	ivec2 pixel = ivec2( gl_FragCoord.xy );
 	vec2 surface = texelFetch( tSurface, pixel, 0 ).rg;
 	vec4 centreLight = texelFetch( tDiffuse, pixel, 0 );
-	vec3 centre = denseFinite( centreLight.rgb ) ? centreLight.rgb : vec3( 0.0 );
+	vec3 centre = sssFinite( centreLight.rgb ) ? centreLight.rgb : vec3( 0.0 );
 	if ( ! ( centreLight.a > 0.0 ) ) {
 		gl_FragColor = vec4( centre, 0.0 ); // not subsurface: as it was, like the blur
 		return;
@@ -110,5 +109,5 @@ void main() {
 		}
 	}
 	vec3 result = sum / weightSum;
-	gl_FragColor = vec4( denseFinite( result ) ? result : centre, 1.0 );
+	gl_FragColor = vec4( sssFinite( result ) ? result : centre, 1.0 );
 }

@@ -56,9 +56,8 @@ SURFACE_SLOPE_GLSL
 
 varying vec2 vUv;
 
-bool sssFinite( const in vec3 c ) {
-	return ! ( any( isnan( c ) ) || any( isinf( c ) ) );
-}
+// shaders/finite.glsl, inlined by the pass.
+FINITE_GLSL
 
 // Weight of one texel of a tap: its interpolation weight, 0 off the mask, and in 'drop' mode less
 // the farther its surface is from the centre's. In 'lerp' mode its colour moves to the centre's.

@@ -9,13 +9,15 @@ import vertexShader from '../shaders/fullscreen.vert.glsl?raw';
 import denseGlsl from '../shaders/denseSubsurface.frag.glsl?raw';
 import quadrantEnergyGlsl from '../shaders/quadrantEnergy.glsl?raw';
 import surfaceSlopeGlsl from '../shaders/surfaceSlope.glsl?raw';
+import finiteGlsl from '../shaders/finite.glsl?raw';
 import { QuadrantEnergyLookup } from './QuadrantEnergyLookup.js';
 import { SubsurfaceBlurPass } from './SubsurfaceBlurPass.js';
 import { getProfile } from './profiles.js';
 import { checkInteger, checkNumber } from './parameterChecks.js';
 import { describe } from './rendererSupport.js';
 
-const fragmentShader = denseGlsl.replace('QUADRANT_ENERGY_GLSL', quadrantEnergyGlsl).replace('SURFACE_SLOPE_GLSL', surfaceSlopeGlsl);
+const fragmentShader = denseGlsl.replace('QUADRANT_ENERGY_GLSL', quadrantEnergyGlsl).replace('SURFACE_SLOPE_GLSL', surfaceSlopeGlsl)
+  .replace('FINITE_GLSL', finiteGlsl);
 
 export class DenseSubsurfacePass extends ShaderPass {
   /**

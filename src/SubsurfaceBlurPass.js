@@ -8,6 +8,7 @@ import vertexShader from '../shaders/fullscreen.vert.glsl?raw';
 import blurGlsl from '../shaders/subsurfaceBlur.frag.glsl?raw';
 import profileLookupGlsl from '../shaders/profileLookup.glsl?raw';
 import surfaceSlopeGlsl from '../shaders/surfaceSlope.glsl?raw';
+import finiteGlsl from '../shaders/finite.glsl?raw';
 import { kernelRadiusMm } from './kernel.js';
 import { ProfileLookup } from './ProfileLookup.js';
 import { checkNumber, checkOneOf, checkRgb } from './parameterChecks.js';
@@ -16,7 +17,8 @@ import { describe } from './rendererSupport.js';
 export const FOLLOW_SURFACE_MODES = ['off', 'drop', 'lerp'];
 export const KERNEL_MODES = ['taps', 'footprint'];
 const DIRECTIONS = ['horizontal', 'vertical'];
-const fragmentShader = blurGlsl.replace('PROFILE_LOOKUP_GLSL', profileLookupGlsl).replace('SURFACE_SLOPE_GLSL', surfaceSlopeGlsl);
+const fragmentShader = blurGlsl.replace('PROFILE_LOOKUP_GLSL', profileLookupGlsl).replace('SURFACE_SLOPE_GLSL', surfaceSlopeGlsl)
+  .replace('FINITE_GLSL', finiteGlsl);
 
 /**
  * The footprints of the 'footprint' mode from a marginal kernel's positive offsets o_1 < … < o_H:

@@ -3,9 +3,12 @@
 // (unblurred on the left) and debug views of each ingredient.
 import { ShaderPass } from 'three/addons/postprocessing/ShaderPass.js';
 import vertexShader from '../shaders/fullscreen.vert.glsl?raw';
-import fragmentShader from '../shaders/compose.frag.glsl?raw';
+import composeGlsl from '../shaders/compose.frag.glsl?raw';
+import finiteGlsl from '../shaders/finite.glsl?raw';
 import { describe } from './rendererSupport.js';
 import { checkOneOf, checkNumber } from './parameterChecks.js';
+
+const fragmentShader = composeGlsl.replace('FINITE_GLSL', finiteGlsl);
 
 /** What the compose pass can show: the final image or one of its ingredients. */
 export const DEBUG_VIEWS = ['final', 'diffuse', 'specular', 'depth', 'mask', 'thickness', 'transmittance'];

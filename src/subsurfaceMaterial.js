@@ -10,6 +10,7 @@ import transmittedLightGlsl from '../shaders/subsurfaceMaterial/transmittedLight
 import splitGlsl from '../shaders/subsurfaceMaterial/split.glsl?raw';
 import clearcoatGlsl from '../shaders/subsurfaceMaterial/clearcoat.glsl?raw';
 import outputGlsl from '../shaders/subsurfaceMaterial/output.glsl?raw';
+import finiteGlsl from '../shaders/finite.glsl?raw';
 import profileLookupGlsl from '../shaders/profileLookup.glsl?raw';
 import transmittanceGlsl from '../shaders/transmittance.glsl?raw';
 import { checkNumber, checkOneOf } from './parameterChecks.js';
@@ -206,7 +207,7 @@ export function makeSubsurface(material, options = {}) {
       shader.defines = { ...shader.defines, SSS_TRANSMITTANCE: '', SSS_LIGHT_TYPE: hook.transmittance.lightType };
     }
     let fs = shader.fragmentShader;
-    fs = inject(fs, 'void main() {', `${parsGlsl}\n${hook.transmittance ? transmittanceChunk : ''}\nvoid main() {`);
+    fs = inject(fs, 'void main() {', `${parsGlsl}\n${finiteGlsl}\n${hook.transmittance ? transmittanceChunk : ''}\nvoid main() {`);
     fs = inject(fs, '#include <alphahash_fragment>', `#include <alphahash_fragment>\n${depthOnlyGlsl}`);
     fs = inject(fs, '#include <lights_fragment_end>', `#include <lights_fragment_end>\n${transmittedLightGlsl}`);
     fs = inject(fs, 'vec3 outgoingLight = totalDiffuse + totalSpecular + totalEmissiveRadiance;', splitGlsl);

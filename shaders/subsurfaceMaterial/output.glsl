@@ -6,6 +6,6 @@
 	if ( sssDebugOutput == 1 ) sssDiffuse = sssTransmitted;
 	if ( sssDebugOutput == 2 ) sssDiffuse = vec3( sssThicknessMm );
 	// A non-finite value would spread through the blur: keep it out.
-	if ( any( isnan( sssDiffuse ) ) || any( isinf( sssDiffuse ) ) ) sssDiffuse = vec3( 0.0 );
+	if ( ! sssFinite( sssDiffuse ) ) sssDiffuse = vec3( 0.0 );
 	sssDiffuseOutput = vec4( max( sssDiffuse, vec3( 0.0 ) ), 1.0 );
 	sssSurfaceOutput = vec4( vViewPosition.z, sssWidthWorld * sssStrength, 0.0, 1.0 );

@@ -23,7 +23,7 @@
 		sssTransmitted = sssLightColor * ( sssAttenuation * sssWrap )
 			* sssTransmittanceProfile( sssThickness ) * BRDF_Lambert( material.diffuseColor );
 		// A degenerate light set-up must not turn the whole material NaN (outside the pipeline too).
-		if ( any( isnan( sssTransmitted ) ) || any( isinf( sssTransmitted ) ) ) sssTransmitted = vec3( 0.0 );
+		if ( ! sssFinite( sssTransmitted ) ) sssTransmitted = vec3( 0.0 );
 		reflectedLight.directDiffuse += sssTransmitted;
 	}
 	#endif
