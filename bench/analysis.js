@@ -1,11 +1,7 @@
 // What the bench concludes from its rows (Node side): the Pareto front of error against time, the
 // scaling ratios, and docs/BENCH.md's text. Rows are bench/results/*.json's `results` entries.
 
-export function median(values) {
-  const sorted = [...values].sort((a, b) => a - b);
-  const n = sorted.length;
-  return n === 0 ? NaN : n % 2 ? sorted[(n - 1) / 2] : (sorted[n / 2 - 1] + sorted[n / 2]) / 2;
-}
+export { median } from '../dev/gpuTimer.js';
 
 /** The module's default setting (src/SubsurfaceScattering.js): footprint kernel, skin, 17 taps. */
 export const DEFAULT_SETTING = Object.freeze({ method: 'footprint', profile: 'skin', samples: 17 });

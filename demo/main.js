@@ -7,7 +7,7 @@ import { OutputPass } from 'three/addons/postprocessing/OutputPass.js';
 import { SubsurfaceScattering, getProfile } from '../src/index.js';
 import { loadHead } from './headModel.js';
 import { createHeadScene, setLightDirection, HEAD_WORLD_UNIT_IN_MM, DEFAULT_CAMERA } from './headScene.js';
-import { readRenderTargetFloats } from './readback.js';
+import { readRenderTargetFloats } from '../dev/readback.js';
 import { defaultState, parseHash, formatHash } from './state.js';
 import { figureState } from './figures.js';
 import { createControls } from './controls.js';
@@ -64,15 +64,11 @@ async function start() {
 
   // Linear HDR all the way to OutputPass (tone mapping + sRGB last).
   const composer = new EffectComposer(renderer, new WebGLRenderTarget(1, 1, { type: HalfFloatType }));
-  sss.addTo(composer);
+  composer.addPass(sss); // in place of a RenderPass
   const outputPass = new OutputPass();
   composer.addPass(outputPass);
 
-  const timings = new PassTimings(renderer);
-  timings.wrap(sss.scenePass, 'scene');
-  timings.wrap(sss.horizontalPass, 'blurH');
-  timings.wrap(sss.verticalPass, 'blurV');
-  timings.wrap(sss.composePass, 'compose');
+  const timings = new PassTimings(renderer, sss);
 
   const initial = stateFromHash(location.hash);
   const state = initial.state;
@@ -92,7 +88,7 @@ async function start() {
   // How each key reaches the scene and the pipeline.
   const kernelKeys = ['profile', 'method', 'samples', 'strength', 'falloff'];
   const apply = {
-    sss: () => { sss.enabled = state.sss; },
+    sss: () => { sss.scattering = state.sss; },
     kernel: () => sss.setKernel({
       profile: state.profile, method: state.method, samples: state.samples,
       strength: [...state.strength], falloff: [...state.falloff],

@@ -1,13 +1,9 @@
 // `npm run figures`: renders the paper's five before/after figures from the demo page in headless
 // Chromium (SwiftShader) and writes docs/figures/figure-N-{before,after}.png and docs/FIGURES.md.
-import { mkdir, writeFile, mkdtemp, rm } from 'node:fs/promises';
-import { tmpdir } from 'node:os';
+import { mkdir, writeFile } from 'node:fs/promises';
 import { join } from 'node:path';
 import { fileURLToPath } from 'node:url';
-import { createServer } from 'vite';
-import puppeteer from 'puppeteer';
-import { findBrowser } from '../test/harness/findBrowser.js';
-import { CHROMIUM_FLAGS } from '../test/harness/globalSetup.js';
+import { openReadyPage, startBrowser } from '../dev/browser.js';
 import { FIGURES } from '../demo/figures.js';
 
 const root = fileURLToPath(new URL('..', import.meta.url));
@@ -17,20 +13,9 @@ const HEIGHT = 450;
 
 async function main() {
   await mkdir(outDir, { recursive: true });
-  const server = await createServer({ root, configFile: join(root, 'vite.config.js'), logLevel: 'error', server: { host: '127.0.0.1', port: 0, hmr: false } });
-  const userDataDir = await mkdtemp(join(tmpdir(), 'sss-figures-'));
-  let browser;
+  const session = await startBrowser();
   try {
-    await server.listen();
-    const url = `http://127.0.0.1:${server.httpServer.address().port}/?still`;
-    browser = await puppeteer.launch({ executablePath: await findBrowser(), headless: true, userDataDir, args: CHROMIUM_FLAGS });
-    const page = await browser.newPage();
-    const errors = [];
-    page.on('console', (m) => { if (m.type() === 'error') errors.push(m.text()); });
-    page.on('pageerror', (e) => errors.push(e.message));
-    await page.setViewport({ width: WIDTH, height: HEIGHT, deviceScaleFactor: 1 });
-    await page.goto(url, { waitUntil: 'load' });
-    await page.waitForFunction('window.testReady !== undefined');
+    const page = await openReadyPage(session.browser, `${session.baseUrl}/?still`, { width: WIDTH, height: HEIGHT });
     if (!(await page.evaluate('window.testReady'))) throw new Error('the demo did not start');
     const standIn = await page.evaluate(() => {
       window.demo.stop();
@@ -47,7 +32,7 @@ async function main() {
       }
     }
     // Keep the committed figures unless every new one rendered cleanly.
-    if (errors.length) throw new Error(`the page reported errors:\n${errors.join('\n')}`);
+    if (page.problems.length) throw new Error(`the page reported errors:\n${page.problems.join('\n')}`);
     for (const [name, png] of images) {
       await writeFile(join(outDir, name), png);
       console.log(`wrote docs/figures/${name}`);
@@ -55,9 +40,7 @@ async function main() {
     await writeFile(join(root, 'docs/FIGURES.md'), figuresMarkdown());
     console.log('wrote docs/FIGURES.md');
   } finally {
-    await browser?.close();
-    await server.close();
-    await rm(userDataDir, { recursive: true, force: true });
+    await session.close();
   }
 }
 

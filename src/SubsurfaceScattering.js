@@ -1,69 +1,56 @@
-// The orchestrator: owns the stages and wires them into an EffectComposer, so a user writes
-//   const sss = new SubsurfaceScattering({ scene, camera, light, worldUnitInMm: 50 });
+// The orchestrator: screen-space subsurface scattering as one three.js Pass, in place of a
+// RenderPass:
+//   const sss = new SubsurfaceScattering({ scene, camera, light, worldUnitInMm: 1000 });
 //   sss.makeSubsurface(skinMaterial);
-//   sss.addTo(composer);            // instead of a RenderPass
+//   composer.addPass(sss);              // instead of a RenderPass
 //   composer.addPass(new OutputPass());
-// Pipeline: light depth (stage 1) → scene split (2) → horizontal blur → vertical blur (3) → compose (4).
-import { HalfFloatType, Vector3 } from 'three';
-import { computeKernel } from './kernel.js';
-import { getProfile } from './profiles.js';
-import { checkNumber, checkOneOf } from './parameterChecks.js';
-import { describe } from './rendererSupport.js';
-import { LightDepthTarget } from './LightDepthTarget.js';
-import { ProfileLookup } from './ProfileLookup.js';
-import { makeSubsurface as hookMaterial, getSubsurface } from './subsurfaceMaterial.js';
-import { SubsurfaceScenePass } from './SubsurfaceScenePass.js';
-import { SubsurfaceBlurPass, FOLLOW_SURFACE_MODES } from './SubsurfaceBlurPass.js';
-import { SubsurfaceComposePass } from './SubsurfaceComposePass.js';
+//
+// One frame, in order (render() below is this recipe; each stage lives in its own folder):
+//   1. light depth   src/1-light-depth/   linear depth seen from the light (transmittance only)
+//   2. scene split   src/2-scene-split/   the scene into the multi-target: colour | diffuse | surface
+//   3. plan          src/framePlan.js     the kernel's on-screen reach, 'auto' taps, blur skipped
+//                                         below half a pixel
+//   4. blur          src/3-blur/          horizontal then vertical over the diffuse light (or the
+//                                         dense 2D reference), into the scattered target
+//   5. compose       src/4-compose/       colour + scattered diffuse into the composer's buffer
+import { HalfFloatType, WebGLRenderTarget } from 'three';
+import { Pass } from 'three/addons/postprocessing/Pass.js';
+import { computeKernel, kernelRadiusMm } from './profiles/kernel.js';
+import { getProfile } from './profiles/presets.js';
+import { ProfileLookup } from './profiles/ProfileLookup.js';
+import { checkNumber, checkOneOf } from './support/parameterChecks.js';
+import { describe } from './support/rendererSupport.js';
+import { FOLLOW_SURFACE_MODES, MATERIAL_DEFAULTS, MAX_SCALE_MM, METHODS, METHOD_TABLE, PIPELINE_DEFAULTS } from './options.js';
+import { estimatePixelsPerMm, planFrame } from './framePlan.js';
+import { LightDepthTarget } from './1-light-depth/LightDepthTarget.js';
+import { makeSubsurface as hookMaterial, getSubsurface } from './2-scene-split/subsurfaceMaterial.js';
+import { SubsurfaceScenePass } from './2-scene-split/SubsurfaceScenePass.js';
+import { SubsurfaceBlurPass } from './3-blur/SubsurfaceBlurPass.js';
+import { DenseSubsurfacePass } from './3-blur/DenseSubsurfacePass.js';
+import { SubsurfaceComposePass } from './4-compose/SubsurfaceComposePass.js';
+import { materialOutputOf } from './4-compose/debugViews.js';
 
-const _corner = new Vector3();
+export { METHODS, AUTO_SAMPLES, AUTO_REACH } from './options.js';
+export { MIN_KERNEL_PIXELS } from './3-blur/samplingModel.js';
 
-/** Upper bound on worldUnitInMm and depthThresholdMm: a kilometre per unit; beyond is a mistake. */
-const MAX_SCALE_MM = 1e6;
-
-/** Defaults of the per-material options (makeSubsurface). */
-const MATERIAL_DEFAULTS = { widthMm: 1, strength: 1, transmittance: true, translucency: 0, shrinkMm: 0.6 };
-
-/** How the blur weighs its taps (see the constructor). */
-export const METHODS = ['footprint', 'marginal', 'reference'];
-
-/**
- * Tap budgets 'auto' chooses from: each is compiled once, so few levels keep shader switches rare.
- * The smallest is used whose (samples - 3) / 2 single-pixel footprints per side reach AUTO_REACH of
- * the on-screen radius holding 99 % of the marginal's energy.
- */
-export const AUTO_SAMPLES = [5, 9, 13, 17, 25, 33, 45, 63];
-
-/**
- * Measured (docs/BENCH.md, "Footprint taps and auto quality"): the error against the dense reference
- * stops falling once (samples - 3) / 2 reaches 0.6-0.92 of the radius estimate, which is an upper
- * bound (the nearest bounding-box corner); 0.92 is the conservative end.
- */
-export const AUTO_REACH = 0.92;
-
-/** Below half a pixel a kernel cannot move light into another pixel (issue: "no work"). */
-export const MIN_KERNEL_PIXELS = 0.5;
+/** The dense reference's loop bound, pixels of radius (method 'dense' is for validation). */
+const DENSE_MAX_RADIUS_PX = 256;
 
 function checkDepthThreshold(depthThresholdMm) {
   return checkNumber('depthThresholdMm', depthThresholdMm, { min: 0, minExclusive: true, max: MAX_SCALE_MM, unit: 'mm' });
 }
 
-/**
- * The whole pipeline, wired into an EffectComposer: light depth, scene split, two blurs, compose.
- * `enabled = false` turns the blur off (transmittance stays; see setTransmittance).
- */
-export class SubsurfaceScattering {
+export class SubsurfaceScattering extends Pass {
   /**
    * @param {object} options
-   * @param {import('three').Scene} options.scene
-   * @param {import('three').Camera} options.camera
+   * @param {import('three').Scene} options.scene read every frame (assignable)
+   * @param {import('three').Camera} options.camera read every frame (assignable)
    * @param {import('three').SpotLight|import('three').DirectionalLight|null} [options.light=null]
    *   the light shining through thin parts (transmittance); null: no transmittance
    * @param {number} [options.worldUnitInMm=1000] millimetres per world unit (three.js: metres)
    * @param {string|object} [options.profile='skin'] 'skin', 'skinBurley', 'marble', 'milk' or a profile
-   * @param {'footprint'|'marginal'|'reference'} [options.method='footprint'] how the blur weighs its taps:
-   *   'footprint' snaps the marginal kernel's footprints to pixels and weighs them exactly, per pixel;
-   *   'marginal' and 'reference' use computeKernel's fixed taps
+   * @param {'footprint'|'marginal'|'reference'|'dense'} [options.method='footprint'] how the blur
+   *   weighs its taps (see METHOD_TABLE in src/options.js)
    * @param {number|'auto'} [options.samples=17] taps per direction (a budget for 'footprint'), odd,
    *   3..63; 'auto' picks, each frame, the fewest that resolve the on-screen kernel (see AUTO_SAMPLES)
    * @param {number[]} [options.strength] RGB, 0..1: mix with no scattering (reference model)
@@ -74,104 +61,182 @@ export class SubsurfaceScattering {
    * @param {number} [options.lightDepthSize=1024] light depth map resolution, pixels
    * @param {number} [options.type=HalfFloatType] HalfFloatType or FloatType light targets
    */
-  constructor({
-    scene, camera, light = null, worldUnitInMm = 1000, profile = 'skin', method = 'footprint', samples = 17,
-    strength, falloff, followSurface = 'drop', depthThresholdMm = 6, foreshortening = true, lightDepthSize = 1024,
-    type = HalfFloatType,
-  } = {}) {
+  constructor(options = {}) {
+    super();
+    const o = { ...PIPELINE_DEFAULTS, type: HalfFloatType, ...options };
+    const { scene, camera, light } = o;
     if (!scene || scene.isScene !== true) throw new TypeError(`SubsurfaceScattering: scene must be a THREE.Scene, got ${describe(scene)}`);
     if (!camera || camera.isCamera !== true) throw new TypeError(`SubsurfaceScattering: camera must be a THREE.Camera, got ${describe(camera)}`);
     if (light !== null && !(light?.isSpotLight || light?.isDirectionalLight)) {
       throw new TypeError(`SubsurfaceScattering: light must be a THREE.SpotLight, THREE.DirectionalLight or null, got ${describe(light)}`);
     }
-    checkNumber('worldUnitInMm', worldUnitInMm, { min: 0, minExclusive: true, max: MAX_SCALE_MM, unit: 'mm' });
-    checkOneOf('followSurface', followSurface, FOLLOW_SURFACE_MODES);
-    checkOneOf('method', method, METHODS);
-    this.autoSamples = samples === 'auto';
-    if (this.autoSamples) samples = 17;
+    checkNumber('worldUnitInMm', o.worldUnitInMm, { min: 0, minExclusive: true, max: MAX_SCALE_MM, unit: 'mm' });
+    checkOneOf('followSurface', o.followSurface, FOLLOW_SURFACE_MODES);
+    checkOneOf('method', o.method, METHODS);
+    checkDepthThreshold(o.depthThresholdMm);
 
+    this.needsSwap = false; // like RenderPass: it draws into the read buffer
+    /** The scene and camera rendered, read every frame. */
     this.scene = scene;
     this.camera = camera;
-    this.worldUnitInMm = worldUnitInMm;
-    this.enabled = true;
-    this.method = method;
-    this._kernelOptions = { profile: getProfile(profile), samples, strength, falloff };
+    this.worldUnitInMm = o.worldUnitInMm;
+    /** false turns the blur off: the compose adds the unblurred diffuse light (transmittance stays). */
+    this.scattering = true;
+    this.autoSamples = o.samples === 'auto';
+    this.method = o.method;
+    this._kernelOptions = { profile: getProfile(o.profile), samples: this.autoSamples ? 17 : o.samples, strength: o.strength, falloff: o.falloff };
     this._kernels = new Map(); // computed kernels by their arguments: 'auto' switches between a few
-    this.kernel = this._computeKernel(this._kernelOptions, method);
+    this.kernel = this._computeKernel(this._kernelOptions, o.method);
     this.profileLookup = new ProfileLookup(this._kernelOptions.profile);
-    this.lightDepth = light ? new LightDepthTarget(light, { size: lightDepthSize }) : null;
+    this.lightDepth = light ? new LightDepthTarget(light, { size: o.lightDepthSize }) : null;
+    this.transmittance = light !== null;
+    this.followSurface = o.followSurface;
+    this.depthThresholdMm = o.depthThresholdMm;
+    this.foreshortening = o.foreshortening;
 
-    this.scenePass = new SubsurfaceScenePass(scene, camera, { type, lightDepth: this.lightDepth });
-    const common = {
-      kernel: this.kernel,
-      mode: method === 'footprint' ? 'footprint' : 'taps',
-      profileLookup: this.profileLookup,
-      camera,
-      surfaceTexture: this.scenePass.surfaceTexture,
-      followSurface,
-      depthThresholdWorld: checkDepthThreshold(depthThresholdMm) / worldUnitInMm,
-      foreshortening,
-      strength: strength ?? [1, 1, 1],
-    };
-    this.horizontalPass = new SubsurfaceBlurPass({ ...common, direction: 'horizontal', diffuseTexture: this.scenePass.diffuseTexture });
-    this.verticalPass = new SubsurfaceBlurPass({ ...common, direction: 'vertical' });
+    // Stage 2, 3 and 4 passes, and the two targets the blur writes.
+    this.scenePass = new SubsurfaceScenePass(scene, camera, { type: o.type });
+    const surface = this._surfaceOptions();
+    const blur = { ...surface, kernel: this.kernel, mode: METHOD_TABLE[o.method].blur === 'footprint' ? 'footprint' : 'taps', profileLookup: this.profileLookup, strength: o.strength ?? [1, 1, 1] };
+    this._blurTarget = new WebGLRenderTarget(1, 1, { type: o.type, depthBuffer: false });
+    this.scatteredTarget = new WebGLRenderTarget(1, 1, { type: o.type, depthBuffer: false });
+    this._blurTarget.texture.name = 'subsurface.horizontal';
+    this.scatteredTarget.texture.name = 'subsurface.scattered';
+    this.horizontalPass = new SubsurfaceBlurPass({ ...blur, direction: 'horizontal', diffuseTexture: this.scenePass.diffuseTexture });
+    this.verticalPass = new SubsurfaceBlurPass({ ...blur, direction: 'vertical', diffuseTexture: this._blurTarget.texture });
+    this._densePass = null; // method 'dense', built when first asked for
     this.composePass = new SubsurfaceComposePass({
-      lightTexture: this.scenePass.lightTexture,
+      colorTexture: this.scenePass.colorTexture,
       surfaceTexture: this.scenePass.surfaceTexture,
-      unscatteredTexture: this.scenePass.diffuseTexture,
+      diffuseTexture: this.scenePass.diffuseTexture,
+      scatteredTexture: this.scatteredTarget.texture,
     });
+    this._size = { width: 1, height: 1 };
     /** The hooks of the materials made subsurface through this pipeline, with their options. */
     this.materials = new Map();
-    this.transmittance = light !== null;
-    this.depthThresholdMm = depthThresholdMm;
-    this.followSurface = followSurface;
-    /** Largest on-screen kernel radius estimated for the last frame, pixels. */
+    /** What the last frame ran: { samples, kernelPixels, blur } (see planFrame). */
+    this.plan = { samples: this._kernelOptions.samples, kernelPixels: 0, blur: false };
+    /** The largest on-screen kernel radius of the last frame, pixels (plan.kernelPixels). */
     this.kernelPixels = 0;
-
-    // The scene pass runs first each frame: decide there whether the blur has any work to do.
-    const render = this.scenePass.render.bind(this.scenePass);
-    this.scenePass.render = (renderer, writeBuffer, readBuffer, deltaTime, maskActive) => {
-      render(renderer, writeBuffer, readBuffer, deltaTime, maskActive);
-      this._updateBlurWork();
-    };
+    /** Optional { begin(stage), end(stage) } around each stage (dev/gpuTimer.js measures with it). */
+    this.stageTimer = null;
   }
 
-  /** The passes in composer order. */
+  render(renderer, writeBuffer, readBuffer) {
+    const { scene, camera } = this;
+    // 1. Light depth: linear depth seen from the light, for transmittance.
+    if (this.lightDepth && this.transmittance) this._stage('lightDepth', () => this.lightDepth.render(renderer, scene));
+    // 2. Scene split: the scene into the multi-target (colour | diffuse | surface).
+    Object.assign(this.scenePass, { scene, camera });
+    this._stage('scene', () => this.scenePass.render(renderer));
+    // 3. Plan: the kernel's reach on screen, the taps for 'auto', no blur under half a pixel.
+    this.plan = this._planFrame();
+    // 4. Blur: the diffuse light, horizontally then vertically (or densely), into scatteredTarget.
+    if (this.plan.blur) this.renderScattering(renderer);
+    // 5. Compose: colour + the scattered (or, without blur, the unblurred) diffuse light.
+    this.composePass.scatteredTexture = this.plan.blur ? this.scatteredTarget.texture : this.scenePass.diffuseTexture;
+    this.composePass.renderToScreen = this.renderToScreen;
+    this._stage('compose', () => this.composePass.render(renderer, readBuffer, null));
+  }
+
+  /** Stage 4 alone over the last scene split, into scatteredTarget (the bench re-runs it to time it). */
+  renderScattering(renderer) {
+    for (const pass of this._surfacePasses()) pass.camera = this.camera;
+    if (METHOD_TABLE[this.method].blur === 'dense') {
+      this._stage('dense', () => this.densePass.render(renderer, this.scatteredTarget, null));
+    } else {
+      this._stage('blurH', () => this.horizontalPass.render(renderer, this._blurTarget, null));
+      this._stage('blurV', () => this.verticalPass.render(renderer, this.scatteredTarget, null));
+    }
+  }
+
+  _stage(name, draw) {
+    this.stageTimer?.begin(name);
+    try {
+      draw();
+    } finally {
+      this.stageTimer?.end(name);
+    }
+  }
+
+  _planFrame() {
+    const { width, height } = this.scenePass.renderTarget;
+    const pixelsPerMm = estimatePixelsPerMm(this.scenePass.subsurfaceMeshes, this.camera, { width, height },
+      (m) => (this.scenePass.categoryOf(m) === 'subsurface' ? this._widthWorld(m) : undefined));
+    const blurMode = METHOD_TABLE[this.method].blur;
+    const plan = planFrame({
+      scattering: this.scattering,
+      pixelsPerMm,
+      samples: this.autoSamples ? 'auto' : this._kernelOptions.samples,
+      autoRadiusMm: this.profileLookup.marginalRadiusMm,
+      radiusMmOf: (samples) => (blurMode === 'dense' ? this.densePass.radiusMm
+        : blurMode === 'footprint' ? this.profileLookup.marginalRadiusMm
+          : kernelRadiusMm(this._computeKernel({ ...this._kernelOptions, samples }, this.method))),
+    });
+    if (plan.samples !== this._kernelOptions.samples) this._applyKernel({ samples: plan.samples });
+    this.kernelPixels = plan.kernelPixels;
+    return plan;
+  }
+
+  /** The stage passes in frame order (each usable on its own). */
   get passes() {
     return [this.scenePass, this.horizontalPass, this.verticalPass, this.composePass];
   }
 
+  /** The dense 2D reference (method 'dense'), built on first use. */
+  get densePass() {
+    if (!this._densePass) {
+      this._densePass = new DenseSubsurfacePass({ ...this._surfaceOptions(), profile: this._kernelOptions.profile, maxRadiusPx: DENSE_MAX_RADIUS_PX });
+      this._densePass.setSize(this._size.width, this._size.height);
+    }
+    return this._densePass;
+  }
+
+  _surfaceOptions() {
+    return {
+      camera: this.camera, surfaceTexture: this.scenePass.surfaceTexture, diffuseTexture: this.scenePass.diffuseTexture,
+      followSurface: this.followSurface, depthThresholdWorld: this.depthThresholdMm / this.worldUnitInMm, foreshortening: this.foreshortening,
+    };
+  }
+
+  /** The passes following the surface (both blurs, and the dense reference once built). */
+  _surfacePasses() {
+    return [this.horizontalPass, this.verticalPass, ...(this._densePass ? [this._densePass] : [])];
+  }
+
   /**
-   * Adds the scene pass, both blurs and the compose pass to `composer` (in place of a RenderPass).
+   * Adds this pass to `composer` (in place of a RenderPass); the same as composer.addPass(sss).
    * @param {import('three/addons/postprocessing/EffectComposer.js').EffectComposer} composer
    */
   addTo(composer) {
     if (!composer || typeof composer.addPass !== 'function') {
       throw new TypeError(`SubsurfaceScattering.addTo: composer must be an EffectComposer, got ${describe(composer)}`);
     }
-    for (const pass of this.passes) composer.addPass(pass);
+    composer.addPass(this);
     return this;
   }
 
   /**
    * Makes `material` scatter with this pipeline's profile, scale and light (see makeSubsurface).
    * @param {import('three').MeshStandardMaterial} material
-   * @param {{ widthMm?: number, strength?: number, transmittance?: boolean, translucency?: number, shrinkMm?: number }} [options]
+   * @param {{ widthMm?: number, widthScale?: number, transmittance?: boolean, translucency?: number, shrinkMm?: number }} [options]
    */
   makeSubsurface(material, options = {}) {
-    const o = { ...MATERIAL_DEFAULTS, ...this.materials.get(material)?.options, ...options };
+    const { strength, ...rest } = options; // `strength`: widthScale's old name
+    const o = { ...MATERIAL_DEFAULTS, ...this.materials.get(material)?.options, ...rest };
+    if (strength !== undefined) o.widthScale = checkNumber('strength', strength, { min: 0, max: 1 });
     // Checked here too, so a later setTransmittance(true) cannot fail half-way.
     checkNumber('translucency', o.translucency, { min: 0, max: 1, maxExclusive: true });
     checkNumber('shrinkMm', o.shrinkMm, { min: 0, max: 1000, unit: 'mm' });
     const hook = hookMaterial(material, {
       widthMm: o.widthMm,
-      strength: o.strength,
+      widthScale: o.widthScale,
       worldUnitInMm: this.worldUnitInMm,
       transmittance: o.transmittance && this.transmittance && this.lightDepth
         ? { lightDepth: this.lightDepth, lookup: this.profileLookup, translucency: o.translucency, shrinkMm: o.shrinkMm }
         : null,
     });
-    hook.debugOutput = this._debugOutput();
+    hook.debugOutput = materialOutputOf(this.composePass.debugView);
     this.materials.set(material, { hook, options: o });
     return hook;
   }
@@ -181,7 +246,6 @@ export class SubsurfaceScattering {
     if (typeof enabled !== 'boolean') throw new TypeError(`setTransmittance: enabled must be a boolean, got ${describe(enabled)}`);
     if (enabled && !this.lightDepth) throw new Error('setTransmittance: this pipeline has no light (pass `light` to the constructor)');
     this.transmittance = enabled;
-    this.scenePass.lightDepth = enabled ? this.lightDepth : null; // no light pass when unused
     for (const material of this.materials.keys()) this.makeSubsurface(material);
   }
 
@@ -191,12 +255,7 @@ export class SubsurfaceScattering {
    */
   setDebugView(view, options) {
     this.composePass.setDebugView(view, options);
-    for (const { hook } of this.materials.values()) hook.debugOutput = this._debugOutput();
-  }
-
-  _debugOutput() {
-    const view = this.composePass.debugView;
-    return view === 'thickness' || view === 'transmittance' ? view : 'diffuse';
+    for (const { hook } of this.materials.values()) hook.debugOutput = materialOutputOf(view);
   }
 
   /** Fraction of the width, from the left, shown without scattering (0..1; 0 = none). */
@@ -204,9 +263,9 @@ export class SubsurfaceScattering {
     this.composePass.setSplit(fraction);
   }
 
-  /** computeKernel for this pipeline's method ('footprint' builds on the marginal kernel), cached. */
+  /** computeKernel for `method` (see METHOD_TABLE: 'footprint' builds on the marginal kernel), cached. */
   _computeKernel(options, method) {
-    const args = { ...options, method: method === 'reference' ? 'reference' : 'marginal' };
+    const args = { ...options, method: METHOD_TABLE[method].kernel };
     const key = JSON.stringify([args.profile.name, args.method, args.samples, args.strength, args.falloff]);
     if (!this._kernels.has(key)) this._kernels.set(key, computeKernel(args));
     return this._kernels.get(key);
@@ -235,9 +294,13 @@ export class SubsurfaceScattering {
     this._kernelOptions = next;
     this.method = method;
     this.kernel = kernel;
-    if (profileChanged) this.profileLookup.setProfile(next.profile); // tens of ms: only on a change
+    if (profileChanged) {
+      this.profileLookup.setProfile(next.profile); // tens of ms: only on a change
+      this._densePass?.setProfile(next.profile);
+    }
+    const mode = METHOD_TABLE[method].blur === 'footprint' ? 'footprint' : 'taps';
     for (const pass of [this.horizontalPass, this.verticalPass]) {
-      pass.setMode(method === 'footprint' ? 'footprint' : 'taps');
+      pass.setMode(mode);
       pass.setKernel(kernel);
       pass.setStrength(next.strength ?? [1, 1, 1]);
     }
@@ -254,72 +317,29 @@ export class SubsurfaceScattering {
    */
   setFollowSurface(mode, depthThresholdMm = this.depthThresholdMm) {
     checkDepthThreshold(depthThresholdMm);
-    for (const pass of [this.horizontalPass, this.verticalPass]) pass.setFollowSurface(mode, depthThresholdMm / this.worldUnitInMm);
+    for (const pass of this._surfacePasses()) pass.setFollowSurface(mode, depthThresholdMm / this.worldUnitInMm);
     this.followSurface = mode;
     this.depthThresholdMm = depthThresholdMm;
   }
 
   /** @param {boolean} enabled narrow the blur on surfaces seen at grazing angles */
   setForeshortening(enabled) {
-    for (const pass of [this.horizontalPass, this.verticalPass]) pass.setForeshortening(enabled);
+    for (const pass of this._surfacePasses()) pass.setForeshortening(enabled);
+    this.foreshortening = enabled;
   }
 
-  /**
-   * Estimates the largest on-screen kernel radius (pixels) over the visible subsurface meshes, at
-   * the nearest corner of their bounding boxes (an upper bound); skips both blurs when it is under
-   * half a pixel.
-   */
-  _updateBlurWork() {
-    const camera = this.camera;
-    const size = this.scenePass.renderTarget;
-    const p = camera.projectionMatrix.elements;
-    const pixelsPerWorldAtUnitDepth = Math.max(p[0] * size.width, p[5] * size.height) / 2;
-    const perspective = camera.isPerspectiveCamera === true || p[15] === 0;
-    let pixelsPerMm = 0;
-    for (const mesh of this.scenePass.subsurfaceMeshes) {
-      // Instanced and skinned meshes have boxes of their own (all instances, the posed skin).
-      if (typeof mesh.computeBoundingBox === 'function' && !mesh.boundingBox) mesh.computeBoundingBox();
-      if (!mesh.geometry.boundingBox) mesh.geometry.computeBoundingBox();
-      const box = mesh.boundingBox ?? mesh.geometry.boundingBox;
-      let nearest = Infinity;
-      for (let corner = 0; corner < 8; corner++) {
-        const { min, max } = box;
-        _corner.set(corner & 1 ? max.x : min.x, corner & 2 ? max.y : min.y, corner & 4 ? max.z : min.z);
-        _corner.applyMatrix4(mesh.matrixWorld).applyMatrix4(camera.matrixWorldInverse);
-        nearest = Math.min(nearest, -_corner.z);
-      }
-      nearest = perspective ? Math.max(nearest, camera.near ?? 1e-6) : 1;
-      for (const m of Array.isArray(mesh.material) ? mesh.material : [mesh.material]) {
-        if (this.scenePass.categoryOf(m) !== 'subsurface') continue;
-        pixelsPerMm = Math.max(pixelsPerMm, (this._widthWorld(m) * pixelsPerWorldAtUnitDepth) / nearest);
-      }
-    }
-    if (this.autoSamples) this._chooseSamples(pixelsPerMm);
-    const pixels = this.horizontalPass.radiusMm * pixelsPerMm;
-    this.kernelPixels = pixels;
-    const blur = this.enabled && pixels >= MIN_KERNEL_PIXELS;
-    this.horizontalPass.enabled = blur;
-    this.verticalPass.enabled = blur;
-    // Without the blurs, compose the unblurred diffuse light straight from the scene pass.
-    this.composePass.scatteredTexture = blur ? null : this.scenePass.diffuseTexture;
-  }
-
-  /** 'auto' samples: the fewest AUTO_SAMPLES resolving the on-screen kernel pixel by pixel. */
-  _chooseSamples(pixelsPerMm) {
-    const radiusPx = this.profileLookup.marginalRadiusMm * pixelsPerMm;
-    const samples = AUTO_SAMPLES.find((n) => (n - 3) / 2 >= AUTO_REACH * radiusPx) ?? AUTO_SAMPLES[AUTO_SAMPLES.length - 1];
-    if (samples !== this._kernelOptions.samples) this._applyKernel({ samples });
-  }
-
-  /** World units per kernel millimetre that `material` writes (width × strength). */
+  /** World units per profile millimetre that `material` writes (width × widthScale). */
   _widthWorld(material) {
-    const { sssWidthWorld, sssStrength } = getSubsurface(material).uniforms;
-    return sssWidthWorld.value * sssStrength.value;
+    const { sssWidthWorld, sssWidthScale } = getSubsurface(material).uniforms;
+    return sssWidthWorld.value * sssWidthScale.value;
   }
 
   /** @param {number} width device pixels @param {number} height device pixels */
   setSize(width, height) {
-    for (const pass of this.passes) pass.setSize(width, height);
+    this._size = { width, height };
+    for (const pass of [...this.passes, ...(this._densePass ? [this._densePass] : [])]) pass.setSize(width, height);
+    this._blurTarget.setSize(width, height);
+    this.scatteredTarget.setSize(width, height);
   }
 
   /** Frees every target, material, texture and quad the pipeline created, and unhooks its materials. */
@@ -327,6 +347,9 @@ export class SubsurfaceScattering {
     for (const { hook } of this.materials.values()) hook.dispose();
     this.materials.clear();
     for (const pass of this.passes) pass.dispose();
+    this._densePass?.dispose();
+    this._blurTarget.dispose();
+    this.scatteredTarget.dispose();
     this.lightDepth?.dispose();
     this.profileLookup.dispose();
   }

@@ -1,15 +1,36 @@
 // three-separable-sss: screen-space separable subsurface scattering for three.js.
-// Public exports only; importing has no side effects and works in plain Node (no DOM).
-export { computeKernel, kernelRadiusMm, referenceKernel } from './kernel.js';
-export { profiles, getProfile, burleyProfile, dipoleProfile, transmittance } from './profiles.js';
-export { LightDepthTarget } from './LightDepthTarget.js';
-export { ProfileLookup } from './ProfileLookup.js';
+// Public exports only, by stage; importing has no side effects and works in plain Node (no DOM).
+
+// The orchestrator: the whole frame as one Pass (in place of a RenderPass).
+export { SubsurfaceScattering, MIN_KERNEL_PIXELS } from './SubsurfaceScattering.js';
+export { METHODS, METHOD_TABLE, AUTO_SAMPLES, AUTO_REACH, FOLLOW_SURFACE_MODES, PIPELINE_DEFAULTS, MATERIAL_DEFAULTS } from './options.js';
+export { planFrame, autoSampleCount, estimatePixelsPerMm } from './framePlan.js';
+
+// Stage 1: linear depth seen from the light.
+export { LightDepthTarget } from './1-light-depth/LightDepthTarget.js';
+
+// Stage 2: the scene split into the multi-target, the material hook, transmittance.
+export { SubsurfaceScenePass } from './2-scene-split/SubsurfaceScenePass.js';
+export { makeSubsurface, getSubsurface, MATERIAL_OUTPUTS } from './2-scene-split/subsurfaceMaterial.js';
+export { ATTACHMENTS, DRAW_PHASES } from './2-scene-split/subsurfaceTarget.js';
 export {
-  makeSubsurface, getSubsurface, transmittanceChunk, createTransmittanceUniforms, transmittanceUniformSlots,
-} from './subsurfaceMaterial.js';
-export { SubsurfaceScenePass } from './SubsurfaceScenePass.js';
-export { SubsurfaceBlurPass, footprintsOf, FOLLOW_SURFACE_MODES, KERNEL_MODES } from './SubsurfaceBlurPass.js';
-export { SubsurfaceComposePass, DEBUG_VIEWS } from './SubsurfaceComposePass.js';
-export { SubsurfaceScattering, MIN_KERNEL_PIXELS, METHODS, AUTO_SAMPLES, AUTO_REACH } from './SubsurfaceScattering.js';
-export { QuadrantEnergyLookup } from './QuadrantEnergyLookup.js';
-export { DenseSubsurfacePass } from './DenseSubsurfacePass.js';
+  transmittanceChunk, createTransmittanceUniforms, transmittanceUniformSlots,
+} from './2-scene-split/transmittance.js';
+
+// Stage 3: the separable blur and the dense 2D reference.
+export { SubsurfaceBlurPass, footprintsOf, KERNEL_MODES } from './3-blur/SubsurfaceBlurPass.js';
+export { DenseSubsurfacePass } from './3-blur/DenseSubsurfacePass.js';
+
+// Stage 4: the compose, its debug views.
+export { SubsurfaceComposePass, DEBUG_VIEWS, DEBUG_VIEW } from './4-compose/SubsurfaceComposePass.js';
+
+// The maths: profiles, kernels and their GPU tables (pure, run in Node).
+export { computeKernel, kernelRadiusMm, referenceKernel } from './profiles/kernel.js';
+export { profiles, getProfile, transmittance } from './profiles/presets.js';
+export { burleyProfile } from './profiles/burley.js';
+export { dipoleProfile } from './profiles/dipole.js';
+export { gaussianSumProfile } from './profiles/gaussianSum.js';
+export { radialProfile } from './profiles/radialProfile.js';
+export { ProfileLookup } from './profiles/ProfileLookup.js';
+export { QuadrantEnergyLookup } from './profiles/QuadrantEnergyLookup.js';
+export { pixelsPerMm, isPerspective } from './support/screenScale.js';

@@ -4,7 +4,7 @@ import { describe, it, expect, beforeAll, afterAll } from 'vitest';
 import { openPage, runLab } from '../harness/page.js';
 import { at, channel, rgb, subtract, countNonFinite } from '../harness/images.js';
 import { separableBlurOracle, roundToHalfFloat, edgeResponse1D } from '../oracle/convolution.js';
-import { getProfile } from '../../src/profiles.js';
+import { getProfile } from '../../src/profiles/presets.js';
 
 let page;
 beforeAll(async () => { page = await openPage('/test/pages/lab.html'); });

@@ -5,7 +5,7 @@ import { describe, it, expect, beforeAll, afterAll } from 'vitest';
 import { openPage, evaluateFloats } from '../harness/page.js';
 import { rgb, channel } from '../harness/images.js';
 import { denseConvolutionOracle } from '../oracle/convolution.js';
-import { getProfile } from '../../src/profiles.js';
+import { getProfile } from '../../src/profiles/presets.js';
 
 const W = 96;
 const H = 54;

@@ -2,6 +2,7 @@
 // Vite server, collect console errors, and read float pixel data back from the page.
 import { inject, afterAll } from 'vitest';
 import puppeteer from 'puppeteer';
+import { openReadyPage } from '../../dev/browser.js';
 
 let connection = null;
 
@@ -22,26 +23,12 @@ export async function browser() {
 
 /**
  * Opens `path` (relative to the server root) and waits until `window.testReady` (or `readyExpr`)
- * resolves. Console errors, page errors and failed requests are collected in `page.problems`.
- * @param {string} path e.g. '/test/pages/blur.html' or '/#sss=0'
+ * resolves (dev/browser.js's openReadyPage, at 320 × 180 unless told otherwise).
+ * @param {string} path e.g. '/test/pages/lab.html' or '/#sss=0'
  * @param {{ width?: number, height?: number, readyExpr?: string, timeout?: number, beforeLoad?: (page) => Promise<void> }} [options]
- *   `beforeLoad` runs before navigation, e.g. to intercept requests
  */
-export async function openPage(path, { width = 320, height = 180, readyExpr = 'window.testReady', timeout = 120_000, beforeLoad } = {}) {
-  const b = await browser();
-  const page = await b.newPage();
-  page.problems = [];
-  page.on('console', (msg) => {
-    if (msg.type() === 'error') page.problems.push(`console.error: ${msg.text()}`);
-  });
-  page.on('pageerror', (error) => page.problems.push(`pageerror: ${error.message}`));
-  page.on('requestfailed', (req) => page.problems.push(`requestfailed: ${req.url()} ${req.failure()?.errorText}`));
-  await page.setViewport({ width, height, deviceScaleFactor: 1 });
-  await beforeLoad?.(page);
-  await page.goto(new URL(path, inject('baseUrl')).href, { waitUntil: 'load', timeout });
-  await page.waitForFunction(`${readyExpr} !== undefined`, { timeout, polling: 50 });
-  await page.evaluate(`Promise.resolve(${readyExpr})`);
-  return page;
+export async function openPage(path, { width = 320, height = 180, ...options } = {}) {
+  return openReadyPage(await browser(), new URL(path, inject('baseUrl')).href, { width, height, ...options });
 }
 
 /**

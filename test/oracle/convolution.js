@@ -43,8 +43,10 @@
  */
 
 import { vec2, vec3 } from 'gl-matrix';
-import { normalIntervalProbability, integrateAdaptive, getProfile } from '../../src/profiles.js';
-import { kernelRadiusMm } from '../../src/kernel.js';
+import { normalIntervalProbability } from '../../src/math/specialFunctions.js';
+import { integrateAdaptive } from '../../src/math/quadrature.js';
+import { getProfile } from '../../src/profiles/presets.js';
+import { kernelRadiusMm } from '../../src/profiles/kernel.js';
 
 const FOLLOW_SURFACE_MODES = ['drop', 'lerp', 'off'];
 /** 'footprint' mode: energy per side below which the rest of the kernel is left out (as the shader). */

@@ -4,8 +4,8 @@
  */
 
 import { vec3, vec4 } from 'gl-matrix';
-import { checkNumber } from '../../src/parameterChecks.js';
-import { getProfile } from '../../src/profiles.js';
+import { checkNumber } from '../../src/support/parameterChecks.js';
+import { getProfile } from '../../src/profiles/presets.js';
 
 /**
  * Transmitted fraction through a slab: the profile's exact transmittance T(d) (energy outside radius d)

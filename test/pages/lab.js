@@ -7,7 +7,7 @@ import { RenderPass } from 'three/addons/postprocessing/RenderPass.js';
 import { ShaderPass } from 'three/addons/postprocessing/ShaderPass.js';
 import { OutputPass } from 'three/addons/postprocessing/OutputPass.js';
 import * as SSS from '/src/index.js';
-import { readRenderTargetFloats } from '/demo/readback.js';
+import { readRenderTargetFloats } from '/dev/readback.js';
 import { mulberry32 as random } from '/demo/seededRandom.js';
 
 /** A renderer drawing into an offscreen canvas of `width` × `height` device pixels. */
@@ -177,7 +177,7 @@ async function run(options) {
     Object.assign(reads, { light: () => read(renderer, t, 0), diffuse: () => read(renderer, t, 1), surface: () => read(renderer, t, 2) });
     const p = built.camera.projectionMatrix.elements;
     Object.assign(result, {
-      kernel: sss.kernel, kernelPixels: sss.kernelPixels, blurEnabled: sss.horizontalPass.enabled,
+      kernel: sss.kernel, kernelPixels: sss.kernelPixels, blurEnabled: sss.plan.blur,
       method: sss.method, footprint: SSS.footprintsOf(sss.kernel), profile: sss.profileLookup.profile.name,
       projectionScale: [p[0], p[5]], depthThresholdWorld: sss.horizontalPass.depthThresholdWorld,
       thicknessWorld: built.thicknessWorld,

@@ -9,8 +9,9 @@ import {
   roundToHalfFloat,
 } from '../oracle/convolution.js';
 import { transmittanceOracle, thicknessFromLightDepth } from '../oracle/transmittance.js';
-import { computeKernel } from '../../src/kernel.js';
-import { profiles, gaussianSumProfile } from '../../src/profiles.js';
+import { computeKernel } from '../../src/profiles/kernel.js';
+import { profiles } from '../../src/profiles/presets.js';
+import { gaussianSumProfile } from '../../src/profiles/gaussianSum.js';
 import { mulberry32 as random } from '../../demo/seededRandom.js';
 
 

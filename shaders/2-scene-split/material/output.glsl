@@ -1,0 +1,11 @@
+	// Fog blends location 0 towards the fog colour; the diffuse light fades by the same factor so
+	// that diffuse + location 0 equals three's own fogged result.
+	#ifdef USE_FOG
+		sssDiffuse *= 1.0 - fogFactor;
+	#endif
+	if ( sssDebugOutput == SSS_OUTPUT_TRANSMITTANCE ) sssDiffuse = sssTransmitted;
+	if ( sssDebugOutput == SSS_OUTPUT_THICKNESS ) sssDiffuse = vec3( sssThicknessMm );
+	// A non-finite value would spread through the blur: keep it out.
+	if ( ! sssFinite( sssDiffuse ) ) sssDiffuse = vec3( 0.0 );
+	sssDiffuseOutput = vec4( max( sssDiffuse, vec3( 0.0 ) ), 1.0 );
+	sssSurfaceOutput = vec4( vViewPosition.z, sssWidthWorld * sssWidthScale, 0.0, 1.0 );

@@ -1,0 +1,25 @@
+// Stage 2 (material split): declarations added before main() of MeshStandard/MeshPhysical.
+// Location 0 keeps three's pc_fragColor: the colour attachment (specular + emissive while split,
+// full colour otherwise). The locations and what each channel holds come from the multi-target's
+// contract (src/2-scene-split/subsurfaceTarget.js), as defines.
+layout( location = SSS_DIFFUSE_LOCATION ) out highp vec4 sssDiffuseOutput; // diffuse light (+ transmittance), a = 1: the mask
+layout( location = SSS_SURFACE_LOCATION ) out highp vec4 sssSurfaceOutput; // r: linear view depth, g: world units per profile mm
+
+uniform bool sssSplit;       // true only while drawn into the multi-target's split call
+uniform bool sssDepthOnly;   // true in the scene pass's first call: lay down depth, shade nothing
+uniform float sssWidthWorld; // widthMm / worldUnitInMm: world units per profile millimetre
+uniform float sssWidthScale; // 0..1, scales the width (0 = no scattering, the light kept)
+uniform int sssDebugOutput;  // what the diffuse attachment holds: SSS_OUTPUT_DIFFUSE, _TRANSMITTANCE or _THICKNESS (mm)
+
+#include "common/finite.glsl"
+
+#ifdef SSS_TRANSMITTANCE
+	uniform vec3 sssLightColor;          // colour * intensity
+	uniform vec3 sssLightPositionView;   // point/spot position, view space
+	uniform vec3 sssLightDirectionView;  // unit vector towards the light (directional and spot axis)
+	uniform float sssLightCutoffDistance;
+	uniform float sssLightDecay;
+	uniform float sssSpotConeCos;
+	uniform float sssSpotPenumbraCos;
+	#include "2-scene-split/transmittance.glsl"
+#endif

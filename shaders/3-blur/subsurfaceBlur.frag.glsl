@@ -1,0 +1,145 @@
+// Stage 3: one direction of the separable, depth- and mask-aware subsurface blur.
+// Defines (src/3-blur/SubsurfaceBlurPass.js sets them): AXIS (0 = horizontal, 1 = vertical: an
+// index into vectors), SAMPLES (taps, odd), FOLLOW_SURFACE (FOLLOW_SURFACE_OFF, _DROP, _LERP),
+// FORESHORTEN (0 or 1: grazing-angle correction, below), SSS_MAX_SLOPE, SSS_MIN_KERNEL_PIXELS,
+// SSS_ENERGY_LEFT (the numbers of src/3-blur/samplingModel.js) and KERNEL_MODE:
+//   KERNEL_MODE_TAPS: fixed weights and offsets (computeKernel's reference or marginal kernel);
+//   KERNEL_MODE_FOOTPRINT: per pixel, the marginal kernel's footprints are snapped to the pixel grid (at
+//     least one pixel each) and weighted by the exact energy of the profile's marginal over them,
+//     read from the ProfileLookup. Where the taps cover the on-screen kernel pixel by pixel this is
+//     the exact 1D convolution of the pixel image; beyond, footprints follow the profile's energy.
+//     It stops as soon as the energy left is negligible, so small kernels cost fewer taps.
+//
+// Sampling model (the float64 oracle in test/oracle/convolution.js implements the same):
+// - the step per kernel millimetre, in pixels, is shaders/common/screenScale.glsl's
+//   widthWorld * P / (2 * depth) * resolution along this axis;
+// - a tap inside the screen lies between two texels along the axis; each texel counts with its
+//   linear-interpolation weight times shaders/common/surfaceTap.glsl's weight (0 off the mask,
+//   1 - farness in 'drop' mode; its colour lerped to the centre's in 'lerp' mode), so no colour
+//   crosses a depth edge or the mask through filtering;
+// - the tap's kernel weight is scaled by the sum of its texel weights and each channel is
+//   renormalised by the weights used;
+// - grazing angles (FORESHORTEN, default on): the surface's depth slope along the axis, in world
+//   units per pixel, comes from the two neighbours (central difference; one-sided when a neighbour
+//   is off the mask or steeper than SSS_MAX_SLOPE; 0 when both are). A surface tilted by theta puts
+//   1 / cos(theta) = sqrt(1 + s^2) of surface under each pixel (s: depth change per world unit
+//   across), so the step shrinks by cos(theta), as the seed paper proposes with a normal buffer; and
+//   'drop'/'lerp' measure each texel's depth against the plane through the centre (centre depth +
+//   slope * texel offset), so a tilted surface is not mistaken for a depth edge.
+
+uniform sampler2D tDiffuse;  // the multi-target's diffuse light (or the horizontal pass's output); alpha: the mask
+uniform sampler2D tSurface;  // the multi-target's surface: r linear view depth (world units), g world units per profile mm
+uniform vec4 kernel[ SAMPLES ]; // (weight R, G, B, offset in kernel mm), centre tap first
+uniform float kernelRadiusMm;   // the kernel's reach: below SSS_MIN_KERNEL_PIXELS of it a pixel does no work
+uniform vec3 strength;          // KERNEL_MODE_FOOTPRINT: mix with no scattering (the reference's strength)
+uniform vec2 projectionScale;   // camera.projectionMatrix.elements[0], [5]
+uniform vec2 resolution;        // pixels (width, height)
+uniform float depthFalloff;     // 1 / depth threshold (world units): dz beyond it is another surface
+uniform bool perspective;       // false for an orthographic camera: the step does not shrink with depth
+
+#include "common/finite.glsl"
+#include "common/screenScale.glsl"
+#include "common/surfaceSlope.glsl"
+#include "common/surfaceTap.glsl"
+
+#if KERNEL_MODE == KERNEL_MODE_FOOTPRINT
+	#define BLOCKS ( ( SAMPLES - 1 ) / 2 - 1 ) // footprints per side before the tail
+	uniform sampler2D tProfile;                 // ProfileLookup.texture, row 1: G(x) = ∫_0^x marginal
+	uniform float marginalRangeMm;              // ProfileLookup.marginalRangeMm
+	uniform float footprintEdgesMm[ EDGE_ARRAY_SIZE ]; // outer edge of each footprint, mm (max(BLOCKS, 1) entries)
+	uniform float tailOffsetMm;                 // where the tail beyond the last edge is sampled, mm
+	#include "common/profileLookup.glsl"
+#endif
+
+varying vec2 vUv;
+
+// Adds one tap at `offsetPx` along the axis with kernel weight `weight` to the sums. Texels are
+// compared with the depth the centre's plane predicts there: centreDepth + slope * (texel offset).
+void addTap( const in float offsetPx, const in vec3 weight, const in ivec2 pixel, const in float centreDepth, const in float slope, const in vec3 centre, inout vec3 sum, inout vec3 weightSum ) {
+	float position = float( pixel[ AXIS ] ) + 0.5 + offsetPx;
+	if ( position < 0.0 || position >= resolution[ AXIS ] ) return;
+	// The two texels around the tap along the axis (centres at integer + 0.5, clamped).
+	float u = position - 0.5;
+	float below = floor( u );
+	float fraction = u - below;
+	int last = int( resolution[ AXIS ] ) - 1;
+	ivec2 texel0 = pixel;
+	ivec2 texel1 = pixel;
+	texel0[ AXIS ] = clamp( int( below ), 0, last );
+	texel1[ AXIS ] = clamp( int( below ) + 1, 0, last );
+	vec3 colour0, colour1;
+	float weight0 = ( 1.0 - fraction ) * sssTapWeight( texel0, centreDepth + slope * float( texel0[ AXIS ] - pixel[ AXIS ] ), centre, colour0 );
+	float weight1 = fraction * sssTapWeight( texel1, centreDepth + slope * float( texel1[ AXIS ] - pixel[ AXIS ] ), centre, colour1 );
+	float kept = weight0 + weight1;
+	if ( kept <= 0.0 ) return;
+	sum += weight * ( colour0 * weight0 + colour1 * weight1 );
+	weightSum += weight * kept;
+}
+
+void main() {
+	ivec2 pixel = ivec2( gl_FragCoord.xy );
+	vec2 surface = texelFetch( tSurface, pixel, 0 ).rg;
+	vec4 centreLight = texelFetch( tDiffuse, pixel, 0 );
+	vec3 centre = sssFinite( centreLight.rgb ) ? centreLight.rgb : vec3( 0.0 );
+
+	// Not a subsurface pixel: pass through so the next pass sees the same mask.
+	if ( ! ( centreLight.a > 0.0 ) ) {
+		gl_FragColor = vec4( centre, 0.0 );
+		return;
+	}
+
+	float stepPx = sssPixelsPerMm( surface )[ AXIS ];
+	float slope = 0.0; // depth change per pixel along the axis, world units
+	#if FORESHORTEN == 1
+		float pixelWorld = sssPixelWorld( surface )[ AXIS ]; // world units one pixel spans across the view
+		slope = sssSurfaceSlope( pixel, AXIS, surface, pixelWorld );
+		float tilt = slope / pixelWorld;
+		stepPx *= inversesqrt( 1.0 + tilt * tilt ); // cos(theta)
+	#endif
+	// Below half a pixel the kernel cannot move light to another pixel: no work.
+	if ( ! ( stepPx * kernelRadiusMm >= SSS_MIN_KERNEL_PIXELS ) ) {
+		gl_FragColor = vec4( centre, 1.0 );
+		return;
+	}
+
+	vec3 sum;
+	vec3 weightSum;
+
+	#if KERNEL_MODE == KERNEL_MODE_TAPS
+		weightSum = kernel[ 0 ].rgb;
+		sum = centre * weightSum;
+		for ( int i = 1; i < SAMPLES; i ++ ) {
+			addTap( kernel[ i ].a * stepPx, kernel[ i ].rgb, pixel, surface.r, slope, centre, sum, weightSum );
+		}
+	#else
+		// The centre pixel is its own footprint: |x| < 0.5 px.
+		vec3 energyBelow = sssReadProfile( tProfile, 1, 0.5 / stepPx, marginalRangeMm );
+		weightSum = 2.0 * energyBelow;
+		sum = centre * weightSum;
+		int lastEdge = 0; // pixels; footprint j covers pixels lastEdge + 1 .. edge on each side
+		for ( int j = 0; j < BLOCKS; j ++ ) {
+			if ( all( greaterThan( energyBelow, vec3( 0.5 - SSS_ENERGY_LEFT ) ) ) ) break; // nothing left
+			int edge = max( int( floor( footprintEdgesMm[ j ] * stepPx + 0.5 ) ), lastEdge + 1 );
+			vec3 energy = sssReadProfile( tProfile, 1, ( float( edge ) + 0.5 ) / stepPx, marginalRangeMm );
+			vec3 weight = energy - energyBelow;
+			float offsetPx = 0.5 * float( lastEdge + 1 + edge ); // the footprint's middle
+			addTap( offsetPx, weight, pixel, surface.r, slope, centre, sum, weightSum );
+			addTap( - offsetPx, weight, pixel, surface.r, slope, centre, sum, weightSum );
+			energyBelow = energy;
+			lastEdge = edge;
+		}
+		// The tail beyond the last edge, sampled where the kernel put its outermost tap.
+		vec3 tail = vec3( 0.5 ) - energyBelow;
+		if ( any( greaterThan( tail, vec3( SSS_ENERGY_LEFT ) ) ) ) {
+			float offsetPx = max( tailOffsetMm * stepPx, float( lastEdge + 1 ) );
+			addTap( offsetPx, tail, pixel, surface.r, slope, centre, sum, weightSum );
+			addTap( - offsetPx, tail, pixel, surface.r, slope, centre, sum, weightSum );
+		}
+	#endif
+
+	vec3 result = sum / weightSum;
+	#if KERNEL_MODE == KERNEL_MODE_FOOTPRINT
+		result = mix( centre, result, strength ); // fixed-tap kernels have the strength built in
+	#endif
+	gl_FragColor = vec4( sssFinite( result ) ? result : centre, 1.0 );
+}

@@ -1,0 +1,47 @@
+// Stage 4: the scattered diffuse light back on top of the rest of the scene's light, in linear
+// HDR, before OutputPass. Pixels that are not subsurface keep exactly what their material wrote.
+// DEBUG_VIEW (src/4-compose/debugViews.js) shows one ingredient instead; the thickness and
+// transmittance views need the materials to write them into the diffuse target
+// (SubsurfaceScattering.setDebugView does that).
+
+uniform sampler2D tColor;      // the multi-target's colour: specular + emissive of subsurface pixels, full colour elsewhere
+uniform sampler2D tScattered;  // the blurred diffuse light
+uniform sampler2D tDiffuse;    // the diffuse light before the blur; alpha 1 on subsurface pixels (the mask)
+uniform sampler2D tSurface;    // r: linear view depth (world units)
+uniform float splitX;          // pixels left of this column show the unblurred diffuse light
+uniform float debugDepthRange; // world units mapped to white in the depth view
+uniform float debugThicknessRangeMm; // millimetres mapped to white in the thickness view
+
+varying vec2 vUv;
+
+#include "common/finite.glsl"
+
+void main() {
+	ivec2 pixel = ivec2( gl_FragCoord.xy );
+	vec4 light = texelFetch( tColor, pixel, 0 );
+	vec2 surface = texelFetch( tSurface, pixel, 0 ).rg;
+	vec4 unscattered = texelFetch( tDiffuse, pixel, 0 );
+	bool subsurface = unscattered.a > 0.0;
+	vec3 diffuse = gl_FragCoord.x < splitX ? unscattered.rgb : texelFetch( tScattered, pixel, 0 ).rgb;
+	vec3 colour;
+	#if DEBUG_VIEW == DEBUG_VIEW_FINAL
+		colour = light.rgb + ( subsurface ? diffuse : vec3( 0.0 ) );
+	#elif DEBUG_VIEW == DEBUG_VIEW_DIFFUSE
+		colour = subsurface ? diffuse : vec3( 0.0 );
+	#elif DEBUG_VIEW == DEBUG_VIEW_SPECULAR
+		colour = subsurface ? light.rgb : vec3( 0.0 );
+	#elif DEBUG_VIEW == DEBUG_VIEW_DEPTH
+		colour = vec3( surface.r > 0.0 ? 1.0 - surface.r / debugDepthRange : 0.0 );
+	#elif DEBUG_VIEW == DEBUG_VIEW_MASK
+		colour = vec3( subsurface ? 1.0 : 0.0 );
+	#elif DEBUG_VIEW == DEBUG_VIEW_THICKNESS
+		colour = subsurface ? vec3( unscattered.r / debugThicknessRangeMm ) : vec3( 0.0 );
+	#elif DEBUG_VIEW == DEBUG_VIEW_TRANSMITTANCE
+		colour = subsurface ? unscattered.rgb : vec3( 0.0 );
+	#else
+		#error "DEBUG_VIEW is not one of src/4-compose/debugViews.js's views"
+	#endif
+	// Never hand NaN or Inf to tone mapping.
+	if ( ! sssFinite( colour ) ) colour = vec3( 0.0 );
+	gl_FragColor = vec4( colour, light.a );
+}

@@ -1,0 +1,27 @@
+// The rule every tap of the blur and the dense reference follows (the sampling model,
+// shaders/3-blur/subsurfaceBlur.frag.glsl): a texel off the mask (the diffuse light's alpha: 0 off
+// subsurface pixels, whatever their width) or with a non-finite colour weighs 0; in 'drop' mode
+// (FOLLOW_SURFACE_DROP) it weighs 1 - farness, farness = clamp(|depth - expectedDepth| /
+// threshold, 0, 1), so no light crosses a depth edge (Unreal, HDRP); in 'lerp' mode its colour
+// moves towards the centre's by the farness (Jimenez 2012). `expectedDepth` is the depth the
+// centre's plane predicts at the texel. Needs `tDiffuse`, `tSurface`, `depthFalloff` (1 / threshold)
+// and shaders/common/finite.glsl.
+
+float sssTapWeight( const in ivec2 texel, const in float expectedDepth, const in vec3 centre, out vec3 colour ) {
+	vec4 light = texelFetch( tDiffuse, texel, 0 );
+	colour = light.rgb;
+	if ( ! ( light.a > 0.0 ) || ! sssFinite( colour ) ) {
+		colour = vec3( 0.0 );
+		return 0.0;
+	}
+	float weight = 1.0;
+	#if FOLLOW_SURFACE != FOLLOW_SURFACE_OFF
+		float farness = clamp( abs( texelFetch( tSurface, texel, 0 ).r - expectedDepth ) * depthFalloff, 0.0, 1.0 );
+		#if FOLLOW_SURFACE == FOLLOW_SURFACE_DROP
+			weight = 1.0 - farness;
+		#else
+			colour = mix( colour, centre, farness );
+		#endif
+	#endif
+	return weight;
+}

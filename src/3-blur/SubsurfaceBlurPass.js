@@ -1,0 +1,149 @@
+// Stage 3: one direction of the separable subsurface blur, a SurfacePass (a ShaderPass). Two of
+// them (horizontal, then vertical) make the paper's two screen-space passes. Only subsurface
+// pixels change; taps on other pixels, off screen or on another surface are dropped and the rest
+// renormalised per channel (or lerped back to the centre colour, as in the reference).
+import { Vector3, Vector4 } from 'three';
+import blurGlsl from '../../shaders/3-blur/subsurfaceBlur.frag.glsl?raw';
+import finiteGlsl from '../../shaders/common/finite.glsl?raw';
+import screenScaleGlsl from '../../shaders/common/screenScale.glsl?raw';
+import surfaceSlopeGlsl from '../../shaders/common/surfaceSlope.glsl?raw';
+import surfaceTapGlsl from '../../shaders/common/surfaceTap.glsl?raw';
+import profileLookupGlsl from '../../shaders/common/profileLookup.glsl?raw';
+import { kernelRadiusMm } from '../profiles/kernel.js';
+import { ProfileLookup } from '../profiles/ProfileLookup.js';
+import { enumDefines, setDefines } from '../support/glsl.js';
+import { checkOneOf, checkRgb } from '../support/parameterChecks.js';
+import { describe } from '../support/rendererSupport.js';
+import { FOLLOW_SURFACE_MODES } from '../options.js';
+import { SurfacePass } from './SurfacePass.js';
+
+export { FOLLOW_SURFACE_MODES };
+/** How the blur weighs its taps: a kernel's fixed taps, or footprints snapped to pixels (see the shader). */
+export const KERNEL_MODES = Object.freeze(['taps', 'footprint']);
+const DIRECTIONS = Object.freeze(['horizontal', 'vertical']);
+
+const CHUNKS = Object.freeze({
+  'common/finite.glsl': finiteGlsl,
+  'common/screenScale.glsl': screenScaleGlsl,
+  'common/surfaceSlope.glsl': surfaceSlopeGlsl,
+  'common/surfaceTap.glsl': surfaceTapGlsl,
+  'common/profileLookup.glsl': profileLookupGlsl,
+});
+
+/**
+ * The footprints of the 'footprint' mode from a marginal kernel's positive offsets o_1 < … < o_H:
+ * edges between consecutive offsets, the tail sampled at o_H.
+ * @param {Float32Array} kernel
+ * @returns {{ edgesMm: number[], tailOffsetMm: number }}
+ */
+export function footprintsOf(kernel) {
+  const offsets = [];
+  for (let i = 1; i < kernel.length / 4; i++) if (kernel[i * 4 + 3] > 0) offsets.push(kernel[i * 4 + 3]);
+  offsets.sort((a, b) => a - b);
+  const edgesMm = [];
+  for (let j = 0; j + 1 < offsets.length; j++) edgesMm.push((offsets[j] + offsets[j + 1]) / 2);
+  return { edgesMm, tailOffsetMm: offsets[offsets.length - 1] ?? 0 };
+}
+
+/**
+ * One direction of the separable subsurface blur: blurs the diffuse light of subsurface pixels
+ * only, depth- and mask-aware, in physical units.
+ */
+export class SubsurfaceBlurPass extends SurfacePass {
+  /**
+   * @param {object} options
+   * @param {'horizontal'|'vertical'} options.direction
+   * @param {Float32Array} options.kernel from computeKernel: (weight R, G, B, offset mm) per tap, centre first
+   * @param {import('three').Camera} options.camera the camera the scene was rendered with
+   * @param {import('three').Texture} options.surfaceTexture the multi-target's surface attachment
+   *   (r: linear view depth in world units, g: world units per profile mm, 0 off subsurface pixels)
+   * @param {import('three').Texture|null} [options.diffuseTexture=null] the light to blur; null reads
+   *   the composer's read buffer. rgb 0 and alpha 0 outside subsurface pixels, alpha 1 on them.
+   * @param {'taps'|'footprint'} [options.mode='taps'] 'taps': the kernel's weights and offsets as
+   *   they are; 'footprint': the kernel's footprints snapped to pixels per pixel and weighted by the
+   *   exact marginal energy from `profileLookup` (see shaders/3-blur/subsurfaceBlur.frag.glsl)
+   * @param {ProfileLookup|null} [options.profileLookup=null] required by the 'footprint' mode
+   * @param {'drop'|'lerp'|'off'} [options.followSurface='drop'] what a tap on another surface does
+   * @param {number} [options.depthThresholdWorld=0.006] depth difference (world units) at which a tap
+   *   counts fully as another surface
+   * @param {boolean} [options.foreshortening=true] grazing angles: shrink the step by cos(tilt) of the
+   *   surface along the axis and compare depths with the local plane (see the shader's header)
+   * @param {number[]} [options.strength=[1, 1, 1]] RGB in [0, 1], 'footprint' mode: mix with no
+   *   scattering (fixed-tap kernels carry their strength in their weights)
+   */
+  constructor({ direction, kernel, mode = 'taps', profileLookup = null, strength = [1, 1, 1], ...surface } = {}) {
+    checkOneOf('direction', direction, DIRECTIONS);
+    checkOneOf('mode', mode, KERNEL_MODES);
+    if (mode === 'footprint' && !(profileLookup instanceof ProfileLookup)) {
+      throw new TypeError(`SubsurfaceBlurPass: the 'footprint' mode needs a ProfileLookup as profileLookup, got ${describe(profileLookup)}`);
+    }
+    super({
+      name: `SubsurfaceBlurPass(${direction})`,
+      fragmentShader: blurGlsl,
+      chunks: CHUNKS,
+      defines: { AXIS: DIRECTIONS.indexOf(direction), SAMPLES: 1, EDGE_ARRAY_SIZE: 1, ...enumDefines('KERNEL_MODE', KERNEL_MODES, mode) },
+      uniforms: {
+        kernel: { value: [] },
+        kernelRadiusMm: { value: 0 },
+        strength: { value: new Vector3(1, 1, 1) },
+        tProfile: { value: null },
+        marginalRangeMm: { value: 1 },
+        footprintEdgesMm: { value: [0] },
+        tailOffsetMm: { value: 0 },
+      },
+    }, surface);
+    this.direction = direction;
+    this.mode = mode;
+    this.profileLookup = profileLookup;
+    this.uniforms.tProfile.value = profileLookup?.texture ?? null;
+    this.setKernel(kernel);
+    this.setStrength(strength);
+  }
+
+  /** @param {number[]} strength RGB in [0, 1] ('footprint' mode; see the constructor) */
+  setStrength(strength) {
+    this.uniforms.strength.value.fromArray(checkRgb('strength', strength, { min: 0, max: 1 }));
+  }
+
+  /**
+   * The reach of the kernel, mm: below half a pixel of it a pixel does no work. 'taps': the outermost
+   * tap; 'footprint': the radius holding 99 % of the marginal (its tail is sampled at least a pixel out).
+   */
+  get radiusMm() {
+    return this.mode === 'footprint' ? this.profileLookup.marginalRadiusMm : kernelRadiusMm(this.kernel);
+  }
+
+  /** @param {'taps'|'footprint'} mode see the constructor */
+  setMode(mode) {
+    checkOneOf('mode', mode, KERNEL_MODES);
+    if (mode === 'footprint' && !this.profileLookup) {
+      throw new TypeError("SubsurfaceBlurPass.setMode: the 'footprint' mode needs the pass to have a profileLookup");
+    }
+    setDefines(this.material, enumDefines('KERNEL_MODE', KERNEL_MODES, mode));
+    this.mode = mode;
+  }
+
+  /** @param {Float32Array} kernel see computeKernel */
+  setKernel(kernel) {
+    if (!(kernel instanceof Float32Array) || kernel.length < 4 || kernel.length % 4 !== 0) {
+      throw new TypeError('SubsurfaceBlurPass: kernel must be a Float32Array of 4 numbers per tap (see computeKernel)');
+    }
+    if (!kernel.every(Number.isFinite)) throw new RangeError('SubsurfaceBlurPass: kernel holds NaN or Infinity');
+    const samples = kernel.length / 4;
+    const taps = [];
+    for (let i = 0; i < samples; i++) taps.push(new Vector4().fromArray(kernel, i * 4));
+    this.uniforms.kernel.value = taps;
+    this.uniforms.kernelRadiusMm.value = kernelRadiusMm(kernel);
+    const { edgesMm, tailOffsetMm } = footprintsOf(kernel);
+    this.uniforms.footprintEdgesMm.value = edgesMm.length > 0 ? edgesMm : [0];
+    this.uniforms.tailOffsetMm.value = tailOffsetMm;
+    setDefines(this.material, { SAMPLES: samples, EDGE_ARRAY_SIZE: Math.max(1, (samples - 1) / 2 - 1) });
+    this.kernel = kernel;
+  }
+
+  render(renderer, writeBuffer, readBuffer, deltaTime, maskActive) {
+    if (this.profileLookup) this.uniforms.marginalRangeMm.value = this.profileLookup.marginalRangeMm;
+    this.uniforms.kernelRadiusMm.value = this.radiusMm;
+    super.render(renderer, writeBuffer, readBuffer, deltaTime, maskActive);
+  }
+}

@@ -1,0 +1,112 @@
+// Stage 3's base: a full-screen ShaderPass over the multi-target's diffuse light that follows the
+// surface. The separable blur and the dense 2D reference share through it everything but their
+// kernels: the camera and the screen scale, the diffuse and surface inputs, the depth rule
+// (followSurface), the grazing-angle correction (foreshortening) and the sampling model's numbers.
+import { Vector2 } from 'three';
+import { ShaderPass } from 'three/addons/postprocessing/ShaderPass.js';
+import vertexShader from '../../shaders/common/fullscreen.vert.glsl?raw';
+import { assembleGlsl, enumDefines, glslFloat, setDefines } from '../support/glsl.js';
+import { checkNumber, checkOneOf } from '../support/parameterChecks.js';
+import { describe } from '../support/rendererSupport.js';
+import { isPerspective } from '../support/screenScale.js';
+import { FOLLOW_SURFACE_MODES } from '../options.js';
+import { ENERGY_LEFT, MAX_SLOPE, MIN_KERNEL_PIXELS } from './samplingModel.js';
+
+/** samplingModel.js's numbers as the GLSL defines the shaders read. */
+const SAMPLING_DEFINES = Object.freeze({
+  SSS_MIN_KERNEL_PIXELS: glslFloat(MIN_KERNEL_PIXELS),
+  SSS_MAX_SLOPE: glslFloat(MAX_SLOPE),
+  SSS_ENERGY_LEFT: glslFloat(ENERGY_LEFT),
+});
+
+export class SurfacePass extends ShaderPass {
+  /**
+   * @param {object} shader
+   * @param {string} shader.name the pass's name (messages, three's material name)
+   * @param {string} shader.fragmentShader GLSL with `#include "…"` lines
+   * @param {Record<string, string>} shader.chunks the chunks it includes (see assembleGlsl)
+   * @param {object} [shader.defines] the subclass's own defines
+   * @param {object} [shader.uniforms] the subclass's own uniforms
+   * @param {object} options
+   * @param {import('three').Camera} options.camera the camera the scene was rendered with (read every frame)
+   * @param {import('three').Texture} options.surfaceTexture the multi-target's surface attachment
+   * @param {import('three').Texture|null} [options.diffuseTexture=null] the light to blur; null reads the composer's read buffer
+   * @param {'drop'|'lerp'|'off'} [options.followSurface='drop'] what a tap on another surface does
+   * @param {number} [options.depthThresholdWorld=0.006] depth difference (world units) at which a tap
+   *   counts fully as another surface
+   * @param {boolean} [options.foreshortening=true] grazing angles: shrink the step by cos(tilt) of the
+   *   surface along each axis and compare depths with the local plane
+   */
+  constructor({ name, fragmentShader, chunks, defines = {}, uniforms = {} }, {
+    camera, surfaceTexture, diffuseTexture = null, followSurface = 'drop', depthThresholdWorld = 0.006, foreshortening = true,
+  }) {
+    if (!camera || camera.isCamera !== true) throw new TypeError(`${name}: camera must be a THREE.Camera, got ${describe(camera)}`);
+    if (!surfaceTexture || surfaceTexture.isTexture !== true) {
+      throw new TypeError(`${name}: surfaceTexture must be a THREE.Texture, got ${describe(surfaceTexture)}`);
+    }
+    super({
+      name,
+      defines: { ...SAMPLING_DEFINES, ...enumDefines('FOLLOW_SURFACE', FOLLOW_SURFACE_MODES, 'drop'), FORESHORTEN: 1, ...defines },
+      uniforms: {
+        tDiffuse: { value: null },
+        tSurface: { value: null },
+        projectionScale: { value: new Vector2(1, 1) },
+        resolution: { value: new Vector2(1, 1) },
+        depthFalloff: { value: 1 },
+        perspective: { value: true },
+        ...uniforms,
+      },
+      vertexShader,
+      fragmentShader: assembleGlsl(name, fragmentShader, chunks),
+    });
+    this.uniforms.tSurface.value = surfaceTexture; // after super: ShaderPass clones the textures it is given
+    /** The camera the scene was rendered with; its projection is read every frame. */
+    this.camera = camera;
+    this.diffuseTexture = diffuseTexture;
+    this.setFollowSurface(followSurface, depthThresholdWorld);
+    this.setForeshortening(foreshortening);
+  }
+
+  /** The light to blur: a texture, or null for the composer's read buffer. */
+  set diffuseTexture(texture) {
+    this._diffuseTexture = texture;
+    this.uniforms.tDiffuse.value = texture;
+    this.textureID = texture ? null : 'tDiffuse'; // ShaderPass wires readBuffer only to textureID
+  }
+
+  get diffuseTexture() {
+    return this._diffuseTexture;
+  }
+
+  /**
+   * @param {'drop'|'lerp'|'off'} mode
+   * @param {number} depthThresholdWorld world units, > 0
+   */
+  setFollowSurface(mode, depthThresholdWorld = this.depthThresholdWorld) {
+    checkOneOf('followSurface', mode, FOLLOW_SURFACE_MODES);
+    checkNumber('depthThresholdWorld', depthThresholdWorld, { min: 0, minExclusive: true, max: 1e9, unit: 'world units' });
+    setDefines(this.material, enumDefines('FOLLOW_SURFACE', FOLLOW_SURFACE_MODES, mode));
+    this.followSurface = mode;
+    this.depthThresholdWorld = depthThresholdWorld;
+    this.uniforms.depthFalloff.value = 1 / depthThresholdWorld;
+  }
+
+  /** @param {boolean} enabled the grazing-angle correction (see the constructor) */
+  setForeshortening(enabled) {
+    if (typeof enabled !== 'boolean') throw new TypeError(`${this.material.name}: foreshortening must be a boolean, got ${describe(enabled)}`);
+    setDefines(this.material, { FORESHORTEN: enabled ? 1 : 0 });
+    this.foreshortening = enabled;
+  }
+
+  /** @param {number} width device pixels @param {number} height device pixels */
+  setSize(width, height) {
+    this.uniforms.resolution.value.set(width, height);
+  }
+
+  render(renderer, writeBuffer, readBuffer, deltaTime, maskActive) {
+    const projection = this.camera.projectionMatrix.elements;
+    this.uniforms.projectionScale.value.set(projection[0], projection[5]);
+    this.uniforms.perspective.value = isPerspective(this.camera);
+    super.render(renderer, writeBuffer, readBuffer, deltaTime, maskActive);
+  }
+}

@@ -1,0 +1,23 @@
+// The numbers of the blur's sampling model (shaders/3-blur/subsurfaceBlur.frag.glsl's header),
+// shared by the shaders (as defines, through samplingDefines) and by the float64 oracle in
+// test/oracle/convolution.js, which imports the numbers but none of the code.
+
+/**
+ * Below half a pixel of on-screen radius a kernel cannot move light into another pixel: the pixel
+ * (and, for the largest radius of a frame, the whole blur) does no work.
+ */
+export const MIN_KERNEL_PIXELS = 0.5;
+
+/**
+ * A neighbour whose depth changes by more than this many world units per world unit across (76°)
+ * belongs to another surface: the slope estimate ignores it. At coarse resolutions a real depth
+ * edge (nose over cheek, about 20 mm) can be only a few pixel-widths deep and must not pass for a
+ * plane.
+ */
+export const MAX_SLOPE = 4;
+
+/**
+ * 'footprint' kernels stop once each side has less energy left than this: invisible even at
+ * radiance 1e4 in a half-float target (whose step there is about 8).
+ */
+export const ENERGY_LEFT = 1e-5;

@@ -1,0 +1,101 @@
+// Stage 4: adds the scattered diffuse light back on top of the rest of the scene's light (the
+// multi-target's colour attachment), in linear HDR. Pixels that are not subsurface come out as
+// their material wrote them. Also offers a split view (unblurred on the left) and debug views of
+// each ingredient (src/4-compose/debugViews.js).
+import { ShaderPass } from 'three/addons/postprocessing/ShaderPass.js';
+import vertexShader from '../../shaders/common/fullscreen.vert.glsl?raw';
+import composeGlsl from '../../shaders/4-compose/compose.frag.glsl?raw';
+import finiteGlsl from '../../shaders/common/finite.glsl?raw';
+import { assembleGlsl, enumDefines, setDefines } from '../support/glsl.js';
+import { describe } from '../support/rendererSupport.js';
+import { checkOneOf, checkNumber } from '../support/parameterChecks.js';
+import { DEBUG_VIEWS, DEBUG_VIEW } from './debugViews.js';
+
+export { DEBUG_VIEWS, DEBUG_VIEW };
+
+const fragmentShader = assembleGlsl('SubsurfaceComposePass', composeGlsl, { 'common/finite.glsl': finiteGlsl });
+
+/** Adds the scattered diffuse light to the colour attachment (a ShaderPass); split and debug views. */
+export class SubsurfaceComposePass extends ShaderPass {
+  /**
+   * @param {object} options
+   * @param {import('three').Texture} options.colorTexture the multi-target's colour attachment:
+   *   specular + emissive of subsurface pixels, full colour elsewhere (old name: lightTexture)
+   * @param {import('three').Texture} options.surfaceTexture the multi-target's surface attachment
+   * @param {import('three').Texture} options.diffuseTexture the diffuse light before the blur; its
+   *   alpha is the mask (split view, debug views; old name: unscatteredTexture)
+   * @param {import('three').Texture|null} [options.scatteredTexture=null] the blurred diffuse light;
+   *   null reads the composer's read buffer
+   */
+  constructor({
+    colorTexture, lightTexture, surfaceTexture, diffuseTexture, unscatteredTexture, scatteredTexture = null,
+  } = {}) {
+    const inputs = {
+      colorTexture: colorTexture ?? lightTexture,
+      surfaceTexture,
+      diffuseTexture: diffuseTexture ?? unscatteredTexture,
+    };
+    for (const [name, t] of Object.entries(inputs)) {
+      if (!t || t.isTexture !== true) throw new TypeError(`SubsurfaceComposePass: ${name} must be a THREE.Texture, got ${describe(t)}`);
+    }
+    super({
+      name: 'SubsurfaceComposePass',
+      defines: enumDefines('DEBUG_VIEW', DEBUG_VIEWS, DEBUG_VIEW.FINAL),
+      uniforms: {
+        tColor: { value: null }, tScattered: { value: null }, tDiffuse: { value: null }, tSurface: { value: null },
+        splitX: { value: 0 }, debugDepthRange: { value: 100 }, debugThicknessRangeMm: { value: 10 },
+      },
+      vertexShader,
+      fragmentShader,
+    }, 'tScattered');
+    this.uniforms.tColor.value = inputs.colorTexture;
+    this.uniforms.tSurface.value = inputs.surfaceTexture;
+    this.uniforms.tDiffuse.value = inputs.diffuseTexture;
+    this.scatteredTexture = scatteredTexture;
+    this.debugView = DEBUG_VIEW.FINAL;
+    this.split = 0;
+    this._width = 1;
+  }
+
+  /**
+   * Shows the final image or one ingredient: 'final', 'diffuse' (scattered), 'specular', 'depth'
+   * (near = white over `depthRange` world units), 'mask', 'thickness' (the thickness T(d) is read
+   * at, in profile mm: physical mm × (1 − translucency) / widthMm; `thicknessRangeMm` = white),
+   * 'transmittance'. The last two need the materials to write them (SubsurfaceScattering.setDebugView).
+   * @param {string} view one of DEBUG_VIEWS
+   * @param {{ depthRange?: number, thicknessRangeMm?: number }} [options]
+   */
+  setDebugView(view, { depthRange = 100, thicknessRangeMm = 10 } = {}) {
+    checkOneOf('view', view, DEBUG_VIEWS);
+    checkNumber('depthRange', depthRange, { min: 0, minExclusive: true, max: Infinity, unit: 'world units' });
+    checkNumber('thicknessRangeMm', thicknessRangeMm, { min: 0, minExclusive: true, max: Infinity, unit: 'mm' });
+    setDefines(this.material, enumDefines('DEBUG_VIEW', DEBUG_VIEWS, view));
+    this.uniforms.debugDepthRange.value = depthRange;
+    this.uniforms.debugThicknessRangeMm.value = thicknessRangeMm;
+    this.debugView = view;
+  }
+
+  /** Fraction of the width, from the left, shown without the blur (0 = none, 1 = all). */
+  setSplit(fraction) {
+    checkNumber('split', fraction, { min: 0, max: 1 });
+    this.split = fraction;
+    this.uniforms.splitX.value = fraction * this._width;
+  }
+
+  /** @param {number} width device pixels @param {number} height device pixels */
+  setSize(width) {
+    this._width = width;
+    this.uniforms.splitX.value = this.split * width;
+  }
+
+  /** The blurred diffuse light: a texture, or null for the composer's read buffer. */
+  set scatteredTexture(texture) {
+    this._scatteredTexture = texture;
+    this.uniforms.tScattered.value = texture;
+    this.textureID = texture ? null : 'tScattered';
+  }
+
+  get scatteredTexture() {
+    return this._scatteredTexture;
+  }
+}

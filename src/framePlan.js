@@ -1,0 +1,75 @@
+// What runs this frame, decided once per frame after the scene split and before the blur:
+// how far the kernel reaches on screen, how many taps 'auto' takes, and whether the blur runs at
+// all (not below half a pixel: it could not move light into another pixel). planFrame is pure
+// and estimatePixelsPerMm only reads the scene graph; both run in Node (test/unit/framePlan.test.js).
+import { Vector3 } from 'three';
+import { AUTO_REACH, AUTO_SAMPLES } from './options.js';
+import { MIN_KERNEL_PIXELS } from './3-blur/samplingModel.js';
+import { isPerspective, pixelsPerMm } from './support/screenScale.js';
+
+const _corner = new Vector3();
+
+/**
+ * 'auto' taps: the fewest of AUTO_SAMPLES whose (samples - 3) / 2 single-pixel footprints per side
+ * reach AUTO_REACH of `radiusPx`, the on-screen radius holding 99 % of the marginal's energy; the
+ * largest when none does.
+ * @param {number} radiusPx
+ * @returns {number}
+ */
+export function autoSampleCount(radiusPx) {
+  return AUTO_SAMPLES.find((n) => (n - 3) / 2 >= AUTO_REACH * radiusPx) ?? AUTO_SAMPLES[AUTO_SAMPLES.length - 1];
+}
+
+/**
+ * @param {object} frame
+ * @param {boolean} frame.scattering the blur is switched on (SubsurfaceScattering.scattering)
+ * @param {number} frame.pixelsPerMm the largest on-screen size of a profile millimetre over the
+ *   subsurface surfaces drawn, pixels (0 when none is drawn)
+ * @param {number|'auto'} frame.samples the taps asked for
+ * @param {number} frame.autoRadiusMm the radius 'auto' must resolve pixel by pixel (the marginal's 99 %)
+ * @param {(samples: number) => number} frame.radiusMmOf the blur's reach with that many taps, mm
+ * @returns {{ samples: number, kernelPixels: number, blur: boolean }} the taps to use, the largest
+ *   on-screen reach of the kernel (pixels), and whether the blur stage runs
+ */
+export function planFrame({ scattering, pixelsPerMm, samples, autoRadiusMm, radiusMmOf }) {
+  const taps = samples === 'auto' ? autoSampleCount(autoRadiusMm * pixelsPerMm) : samples;
+  const kernelPixels = radiusMmOf(taps) * pixelsPerMm;
+  return { samples: taps, kernelPixels, blur: scattering && kernelPixels >= MIN_KERNEL_PIXELS };
+}
+
+/**
+ * An upper bound on the on-screen size of a profile millimetre over `meshes`: each mesh's
+ * bounding box corner nearest the camera, with the largest width its subsurface materials write.
+ * @param {Iterable<import('three').Mesh>} meshes the meshes drawn with a subsurface material
+ * @param {import('three').Camera} camera (matrixWorldInverse and projection up to date)
+ * @param {{ width: number, height: number }} size the render target, pixels
+ * @param {(material: import('three').Material) => number|undefined} widthWorldOf world units per
+ *   profile mm a material writes; undefined for materials that do not scatter
+ * @returns {number} pixels per profile mm (0 without subsurface meshes)
+ */
+export function estimatePixelsPerMm(meshes, camera, { width, height }, widthWorldOf) {
+  const p = camera.projectionMatrix.elements;
+  const perspective = isPerspective(camera);
+  let largest = 0;
+  for (const mesh of meshes) {
+    // Instanced and skinned meshes have boxes of their own (all instances, the posed skin).
+    if (typeof mesh.computeBoundingBox === 'function' && !mesh.boundingBox) mesh.computeBoundingBox();
+    if (!mesh.geometry.boundingBox) mesh.geometry.computeBoundingBox();
+    const { min, max } = mesh.boundingBox ?? mesh.geometry.boundingBox;
+    let nearest = Infinity;
+    for (let corner = 0; corner < 8; corner++) {
+      _corner.set(corner & 1 ? max.x : min.x, corner & 2 ? max.y : min.y, corner & 4 ? max.z : min.z);
+      _corner.applyMatrix4(mesh.matrixWorld).applyMatrix4(camera.matrixWorldInverse);
+      nearest = Math.min(nearest, -_corner.z);
+    }
+    const depth = perspective ? Math.max(nearest, camera.near ?? 1e-6) : 1;
+    for (const material of Array.isArray(mesh.material) ? mesh.material : [mesh.material]) {
+      const widthWorld = widthWorldOf(material);
+      if (widthWorld === undefined) continue;
+      largest = Math.max(largest,
+        pixelsPerMm(widthWorld, depth, p[0], width, perspective),
+        pixelsPerMm(widthWorld, depth, p[5], height, perspective));
+    }
+  }
+  return largest;
+}

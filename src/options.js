@@ -1,0 +1,67 @@
+// The options of the pipeline and of its materials in one place: the accepted values, the
+// defaults (one copy each) and the method table. The classes validate against these.
+
+/**
+ * How the blur weighs its taps, and what each method needs:
+ * - kernel: which computeKernel method builds the separable passes' taps ('marginal' or 'reference');
+ * - blur: the blur stage's mode ('footprint' or 'taps' of SubsurfaceBlurPass, or 'dense' for
+ *   DenseSubsurfacePass instead of the two separable passes).
+ * 'footprint' (default): the marginal kernel's footprints snapped to pixels per pixel and weighed
+ * exactly; 'marginal' and 'reference': computeKernel's fixed taps ('reference' is Jimenez 2012's
+ * kernel, its profile built in); 'dense': the brute-force 2D reference, for validation only (its
+ * cost grows with the square of the on-screen radius).
+ */
+export const METHOD_TABLE = Object.freeze({
+  footprint: Object.freeze({ kernel: 'marginal', blur: 'footprint' }),
+  marginal: Object.freeze({ kernel: 'marginal', blur: 'taps' }),
+  reference: Object.freeze({ kernel: 'reference', blur: 'taps' }),
+  dense: Object.freeze({ kernel: 'marginal', blur: 'dense' }), // the kernel only waits for a switch back
+});
+
+/** The accepted `method` values. */
+export const METHODS = Object.freeze(Object.keys(METHOD_TABLE));
+
+/** What a tap on another surface does: dropped and renormalised, lerped to the centre, or nothing. */
+export const FOLLOW_SURFACE_MODES = Object.freeze(['off', 'drop', 'lerp']);
+
+/**
+ * Tap budgets 'auto' chooses from: each is compiled once, so few levels keep shader switches rare.
+ * The smallest is used whose (samples - 3) / 2 single-pixel footprints per side reach AUTO_REACH of
+ * the on-screen radius holding 99 % of the marginal's energy.
+ */
+export const AUTO_SAMPLES = Object.freeze([5, 9, 13, 17, 25, 33, 45, 63]);
+
+/**
+ * Measured (docs/BENCH.md, "Footprint taps and auto quality"): the error against the dense reference
+ * stops falling once (samples - 3) / 2 reaches 0.6-0.92 of the radius estimate, which is an upper
+ * bound (the nearest bounding-box corner); 0.92 is the conservative end.
+ */
+export const AUTO_REACH = 0.92;
+
+/** Upper bound on worldUnitInMm and depthThresholdMm: a kilometre per unit; beyond is a mistake. */
+export const MAX_SCALE_MM = 1e6;
+
+/** new SubsurfaceScattering({ ... }): every option's default. */
+export const PIPELINE_DEFAULTS = Object.freeze({
+  light: null,
+  worldUnitInMm: 1000, // three.js's unit is the metre
+  profile: 'skin',
+  method: 'footprint',
+  samples: 17,
+  followSurface: 'drop',
+  depthThresholdMm: 6, // close to the reference's follow-surface constant at its field of view
+  foreshortening: true,
+  lightDepthSize: 1024,
+});
+
+/**
+ * makeSubsurface(material, { ... }): every option's default. widthMm 1 is the profile at its
+ * physical size; shrinkMm 0.6 is the reference's 0.005 units at 1 unit = 1/8 m (REFERENCE §5).
+ */
+export const MATERIAL_DEFAULTS = Object.freeze({
+  widthMm: 1,
+  widthScale: 1,
+  transmittance: true,
+  translucency: 0,
+  shrinkMm: 0.6,
+});

@@ -1,0 +1,77 @@
+// The one way this library puts GLSL together, and the one way its enums reach GLSL.
+//
+// - assembleGlsl: a shader's own chunks are pulled in with `#include "common/finite.glsl"` (a path
+//   under shaders/), each at most once, recursively; three's `#include <chunk>` lines are left for
+//   three to resolve. An include with no chunk, or a chunk given but never included, throws: a
+//   renamed or forgotten chunk fails when the pass is built, not as a silently different shader.
+// - enumDefines: an option's accepted values become named defines (`DEBUG_VIEW_MASK`), and the
+//   current value the define `DEBUG_VIEW`, so shaders compare names (`#if DEBUG_VIEW ==
+//   DEBUG_VIEW_MASK`) and never an array position.
+// - glslFloat: a JS number as a GLSL float literal, for constants shared with the float64 oracle.
+
+const LOCAL_INCLUDE = /^[ \t]*#include[ \t]+"([^"]+)"[ \t]*$/gm;
+
+/**
+ * @param {string} name who the shader belongs to, for messages (e.g. 'SubsurfaceBlurPass')
+ * @param {string} source GLSL with `#include "path.glsl"` lines
+ * @param {Record<string, string>} chunks every chunk this shader includes, by its path under shaders/
+ * @returns {string} the source with every local include replaced by its chunk
+ * @throws {Error} on an include without a chunk, an include cycle, or a chunk never included
+ */
+export function assembleGlsl(name, source, chunks = {}) {
+  const used = new Set();
+  const expand = (text, stack) => text.replace(LOCAL_INCLUDE, (line, path) => {
+    if (!Object.hasOwn(chunks, path)) {
+      throw new Error(`${name}: the shader includes "${path}", which was not given (given: ${Object.keys(chunks).join(', ') || 'none'})`);
+    }
+    if (stack.includes(path)) throw new Error(`${name}: "${path}" includes itself (${[...stack, path].join(' → ')})`);
+    if (used.has(path)) return `// "${path}" is included above`;
+    used.add(path);
+    return `// ---- ${path}\n${expand(chunks[path], [...stack, path]).trimEnd()}\n// ---- end of ${path}`;
+  });
+  const out = expand(source, []);
+  const unused = Object.keys(chunks).filter((path) => !used.has(path));
+  if (unused.length > 0) throw new Error(`${name}: chunk${unused.length > 1 ? 's' : ''} ${unused.map((p) => `"${p}"`).join(', ')} given but never included`);
+  return out;
+}
+
+/** 'followSurface' → 'FOLLOW_SURFACE', 'skinBurley' → 'SKIN_BURLEY'. */
+export function constantCase(text) {
+  return String(text).replace(/([a-z0-9])([A-Z])/g, '$1_$2').replace(/[^A-Za-z0-9]+/g, '_').toUpperCase();
+}
+
+/**
+ * Named defines for an enumerated option: `PREFIX_VALUE` = its position for every accepted value,
+ * and `PREFIX` = the name of the current one.
+ * @param {string} prefix e.g. 'DEBUG_VIEW'
+ * @param {ReadonlyArray<string>} values the accepted values, e.g. DEBUG_VIEWS
+ * @param {string} current one of `values`
+ * @returns {Record<string, number|string>}
+ */
+export function enumDefines(prefix, values, current) {
+  if (!values.includes(current)) throw new RangeError(`${prefix}: ${JSON.stringify(current)} is not one of ${values.join(', ')}`);
+  const defines = { [prefix]: `${prefix}_${constantCase(current)}` };
+  values.forEach((value, i) => { defines[`${prefix}_${constantCase(value)}`] = i; });
+  return defines;
+}
+
+/**
+ * Sets defines on a material, flagging a recompile only when one changes.
+ * @param {import('three').Material} material
+ * @param {Record<string, number|string>} defines
+ */
+export function setDefines(material, defines) {
+  for (const [key, value] of Object.entries(defines)) {
+    if (material.defines[key] !== value) {
+      material.defines[key] = value;
+      material.needsUpdate = true;
+    }
+  }
+}
+
+/** A finite JS number as a GLSL float literal: 4 → '4.0', 1e-5 → '0.00001'. */
+export function glslFloat(value) {
+  if (!Number.isFinite(value)) throw new RangeError(`glslFloat: ${value} is not finite`);
+  const text = String(value);
+  return /[.e]/.test(text) ? text : `${text}.0`;
+}
