@@ -1,5 +1,5 @@
 // The numbers of the blur's sampling model (shaders/3-blur/subsurfaceBlur.frag.glsl's header),
-// shared by the shaders (as defines, through samplingDefines) and by the float64 oracle in
+// shared by the shaders (as defines: SurfacePass sets them) and by the float64 oracle in
 // test/oracle/convolution.js, which imports the numbers but none of the code.
 
 /**

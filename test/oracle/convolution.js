@@ -48,11 +48,11 @@ import { integrateAdaptive } from '../../src/math/quadrature.js';
 import { getProfile } from '../../src/profiles/presets.js';
 import { kernelRadiusMm } from '../../src/profiles/kernel.js';
 
+// The sampling model's numbers (not its code) are shared with the shaders: MIN_KERNEL_PIXELS (pixel
+// skip), MAX_SLOPE (steeper neighbours count as another surface), ENERGY_LEFT ('footprint' stop).
+import { ENERGY_LEFT, MAX_SLOPE, MIN_KERNEL_PIXELS } from '../../src/3-blur/samplingModel.js';
+
 const FOLLOW_SURFACE_MODES = ['drop', 'lerp', 'off'];
-/** 'footprint' mode: energy per side below which the rest of the kernel is left out (as the shader). */
-const ENERGY_LEFT = 1e-5;
-/** Steeper neighbours (world units of depth per world unit across) count as another surface. */
-const MAX_SLOPE = 4;
 
 const newVec2 = () => new Float64Array(2); // gl-matrix's create() would give float32 storage
 const newVec3 = () => new Float64Array(3);
@@ -191,7 +191,7 @@ function blurPass(args, src, axisIndex) {
       }
       // Depth the centre's plane predicts at texel (ii, jj) (zc itself without foreshortening).
       const expectedDepth = (ii, jj) => zc + slope * (axisIndex === 0 ? ii - i : jj - j);
-      if (!mask[idx] || stepPx * maxOffsetMm < 0.5) {
+      if (!mask[idx] || stepPx * maxOffsetMm < MIN_KERNEL_PIXELS) {
         out.set(centre, 3 * idx);
         continue;
       }
