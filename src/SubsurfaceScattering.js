@@ -12,8 +12,10 @@
 //                                         below half a pixel
 //   4. blur          src/3-blur/          horizontal then vertical over the diffuse light (or the
 //                                         dense 2D reference), into the scattered target
-//   5. compose       src/4-compose/       colour + scattered diffuse into the composer's buffer
-import { HalfFloatType, WebGLRenderTarget } from 'three';
+//   5. compose       src/4-compose/       colour + scattered diffuse into the composer's buffer,
+//                                         with the scene's depth
+//   6. transparent   src/2-scene-split/   transparent objects blended over it, depth-tested
+import { Color, HalfFloatType, WebGLRenderTarget } from 'three';
 import { Pass } from 'three/addons/postprocessing/Pass.js';
 import { computeKernel, kernelRadiusMm } from './profiles/kernel.js';
 import { getProfile } from './profiles/presets.js';
@@ -23,7 +25,8 @@ import { describe } from './support/rendererSupport.js';
 import { FOLLOW_SURFACE_MODES, MATERIAL_DEFAULTS, MAX_SCALE_MM, METHODS, METHOD_TABLE, PIPELINE_DEFAULTS } from './options.js';
 import { estimatePixelsPerMm, planFrame } from './framePlan.js';
 import { LightDepthTarget } from './1-light-depth/LightDepthTarget.js';
-import { makeSubsurface as hookMaterial, getSubsurface } from './2-scene-split/subsurfaceMaterial.js';
+import { makeSubsurface as hookMaterial, getSubsurface, subsurfaceBindingOf } from './2-scene-split/subsurfaceMaterial.js';
+import { isShining } from './2-scene-split/transmittance.js';
 import { SubsurfaceScenePass } from './2-scene-split/SubsurfaceScenePass.js';
 import { SubsurfaceBlurPass } from './3-blur/SubsurfaceBlurPass.js';
 import { DenseSubsurfacePass } from './3-blur/DenseSubsurfacePass.js';
@@ -76,6 +79,13 @@ export class SubsurfaceScattering extends Pass {
     checkDepthThreshold(o.depthThresholdMm);
 
     this.needsSwap = false; // like RenderPass: it draws into the read buffer
+    /** As RenderPass: true clears the target first; false draws over it (see render's step 5). */
+    this.clear = true;
+    /** As RenderPass: with clear false, true ignores the target's earlier depth. */
+    this.clearDepth = false;
+    /** As RenderPass: the clear colour and alpha of the scene (null: the renderer's). */
+    this.clearColor = null;
+    this.clearAlpha = null;
     /** The scene and camera rendered, read every frame. */
     this.scene = scene;
     this.camera = camera;
@@ -95,7 +105,7 @@ export class SubsurfaceScattering extends Pass {
     this.foreshortening = o.foreshortening;
 
     // Stage 2, 3 and 4 passes, and the two targets the blur writes.
-    this.scenePass = new SubsurfaceScenePass(scene, camera, { type: o.type });
+    this.scenePass = new SubsurfaceScenePass(scene, camera, { type: o.type, owner: this });
     const surface = this._surfaceOptions();
     const blur = { ...surface, kernel: this.kernel, mode: METHOD_TABLE[o.method].blur === 'footprint' ? 'footprint' : 'taps', profileLookup: this.profileLookup, strength: o.strength ?? [1, 1, 1] };
     this._blurTarget = new WebGLRenderTarget(1, 1, { type: o.type, depthBuffer: false });
@@ -110,6 +120,7 @@ export class SubsurfaceScattering extends Pass {
       surfaceTexture: this.scenePass.surfaceTexture,
       diffuseTexture: this.scenePass.diffuseTexture,
       scatteredTexture: this.scatteredTarget.texture,
+      depthTexture: this.scenePass.depthTexture,
     });
     this._size = { width: 1, height: 1 };
     /** The hooks of the materials made subsurface through this pipeline, with their options. */
@@ -124,19 +135,45 @@ export class SubsurfaceScattering extends Pass {
 
   render(renderer, writeBuffer, readBuffer) {
     const { scene, camera } = this;
-    // 1. Light depth: linear depth seen from the light, for transmittance.
-    if (this.lightDepth && this.transmittance) this._stage('lightDepth', () => this.lightDepth.render(renderer, scene));
-    // 2. Scene split: the scene into the multi-target (colour | diffuse | surface).
+    const target = this.renderToScreen ? null : readBuffer;
+    // 1. Light depth: linear depth seen from the light, for transmittance (not for a light that is off).
+    if (this.lightDepth && this.transmittance && isShining(this.lightDepth.light, scene, camera)) {
+      this._stage('lightDepth', () => this.lightDepth.render(renderer, scene));
+    }
+    // 2. Scene split: the opaque scene into the multi-target (colour | diffuse | surface | depth).
     Object.assign(this.scenePass, { scene, camera });
-    this._stage('scene', () => this.scenePass.render(renderer));
+    this._stage('scene', () => this._withClearColor(renderer, () => this.scenePass.render(renderer)));
     // 3. Plan: the kernel's reach on screen, the taps for 'auto', no blur under half a pixel.
     this.plan = this._planFrame();
     // 4. Blur: the diffuse light, horizontally then vertically (or densely), into scatteredTarget.
     if (this.plan.blur) this.renderScattering(renderer);
-    // 5. Compose: colour + the scattered (or, without blur, the unblurred) diffuse light.
+    // 5. Compose: colour + the scattered (without blur: the unblurred) diffuse light, and the
+    //    scene's depth, into the target: every pixel (clear), or over what it holds (clear false).
     this.composePass.scatteredTexture = this.plan.blur ? this.scatteredTarget.texture : this.scenePass.diffuseTexture;
     this.composePass.renderToScreen = this.renderToScreen;
-    this._stage('compose', () => this.composePass.render(renderer, readBuffer, null));
+    this.composePass.setClear(this.clear, this.clearDepth);
+    const autoClear = renderer.autoClear;
+    renderer.autoClear = false; // the full-screen quad would clear what clear = false keeps
+    try {
+      this._stage('compose', () => this.composePass.render(renderer, readBuffer, null));
+      // 6. Transparent objects over the composed image, depth-tested against the scene.
+      this._stage('transparent', () => this.scenePass.renderTransparent(renderer, target));
+    } finally {
+      renderer.autoClear = autoClear;
+    }
+  }
+
+  /** Runs `draw` with this pass's clearColor / clearAlpha, as RenderPass applies them. */
+  _withClearColor(renderer, draw) {
+    if (this.clearColor === null && this.clearAlpha === null) return draw();
+    const colour = renderer.getClearColor(new Color());
+    const alpha = renderer.getClearAlpha();
+    try {
+      renderer.setClearColor(this.clearColor ?? colour, this.clearAlpha ?? alpha);
+      return draw();
+    } finally {
+      renderer.setClearColor(colour, alpha);
+    }
   }
 
   /** Stage 4 alone over the last scene split, into scatteredTarget (the bench re-runs it to time it). */
@@ -235,13 +272,13 @@ export class SubsurfaceScattering extends Pass {
       transmittance: o.transmittance && this.transmittance && this.lightDepth
         ? { lightDepth: this.lightDepth, lookup: this.profileLookup, translucency: o.translucency, shrinkMm: o.shrinkMm }
         : null,
-    });
+    }, this);
     hook.debugOutput = materialOutputOf(this.composePass.debugView);
     this.materials.set(material, { hook, options: o });
     return hook;
   }
 
-  /** Turns transmittance on or off for every material of this pipeline (recompiles them once). */
+  /** Turns transmittance on or off for every material of this pipeline (a uniform: no recompile). */
   setTransmittance(enabled) {
     if (typeof enabled !== 'boolean') throw new TypeError(`setTransmittance: enabled must be a boolean, got ${describe(enabled)}`);
     if (enabled && !this.lightDepth) throw new Error('setTransmittance: this pipeline has no light (pass `light` to the constructor)');
@@ -328,10 +365,9 @@ export class SubsurfaceScattering extends Pass {
     this.foreshortening = enabled;
   }
 
-  /** World units per profile millimetre that `material` writes (width × widthScale). */
+  /** World units per profile millimetre `material` writes when this pipeline draws it (width × widthScale). */
   _widthWorld(material) {
-    const { sssWidthWorld, sssWidthScale } = getSubsurface(material).uniforms;
-    return sssWidthWorld.value * sssWidthScale.value;
+    return (subsurfaceBindingOf(material, this) ?? getSubsurface(material)).widthWorld;
   }
 
   /** @param {number} width device pixels @param {number} height device pixels */

@@ -1,5 +1,8 @@
 // Stage 4: the scattered diffuse light back on top of the rest of the scene's light, in linear
 // HDR, before OutputPass. Pixels that are not subsurface keep exactly what their material wrote.
+// The scene's depth goes out with the colour (gl_FragDepth), so that later passes and the
+// transparent objects drawn after this one depth-test against the scene. With KEEP_BACKGROUND
+// (the pass's clear = false) pixels where the scene drew nothing are left as the target had them.
 // DEBUG_VIEW (src/4-compose/debugViews.js) shows one ingredient instead; the thickness and
 // transmittance views need the materials to write them into the diffuse target
 // (SubsurfaceScattering.setDebugView does that).
@@ -8,6 +11,8 @@ uniform sampler2D tColor;      // the multi-target's colour: specular + emissive
 uniform sampler2D tScattered;  // the blurred diffuse light
 uniform sampler2D tDiffuse;    // the diffuse light before the blur; alpha 1 on subsurface pixels (the mask)
 uniform sampler2D tSurface;    // r: linear view depth (world units)
+uniform sampler2D tDepth;      // the multi-target's depth texture
+uniform float farDepth;        // the depth buffer's cleared value: 1 (0 with a reversed depth buffer)
 uniform float splitX;          // pixels left of this column show the unblurred diffuse light
 uniform float debugDepthRange; // world units mapped to white in the depth view
 uniform float debugThicknessRangeMm; // millimetres mapped to white in the thickness view
@@ -18,6 +23,11 @@ varying vec2 vUv;
 
 void main() {
 	ivec2 pixel = ivec2( gl_FragCoord.xy );
+	float depth = texelFetch( tDepth, pixel, 0 ).r;
+	#if KEEP_BACKGROUND == 1
+		if ( depth == farDepth ) discard; // the scene drew nothing here
+	#endif
+	gl_FragDepth = depth;
 	vec4 light = texelFetch( tColor, pixel, 0 );
 	vec2 surface = texelFetch( tSurface, pixel, 0 ).rg;
 	vec4 unscattered = texelFetch( tDiffuse, pixel, 0 );

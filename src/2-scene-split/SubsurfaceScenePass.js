@@ -1,22 +1,26 @@
-// Stage 2 (render): draws the scene into the multi-target (src/2-scene-split/subsurfaceTarget.js:
-// colour | diffuse | surface). Chromium refuses draws whose shader lacks an output for an active
-// draw buffer, and three's ordinary materials write location 0 only. So the scene is drawn in up
-// to three calls, each with its own draw buffers and the materials of one category shown:
+// Stage 2 (render): draws the scene's opaque part into the multi-target
+// (src/2-scene-split/subsurfaceTarget.js: colour | diffuse | surface | depth). Chromium refuses
+// draws whose shader lacks an output for an active draw buffer, and three's ordinary materials
+// write location 0 only. So the opaque scene is drawn in two calls, each with its own draw buffers
+// and the materials of one category shown:
 //   1. DEPTH: opaque ordinary materials into the colour attachment only; subsurface materials
-//      write depth only (shadow maps are rendered here, with every caster present);
+//      write depth only (shadow maps are rendered here, with every caster present: transparent
+//      materials are drawn with colour and depth writes off, only so that they still cast shadows);
 //   2. SPLIT: subsurface materials alone into all attachments, depth-tested against call 1, so
 //      occluded subsurface fragments never reach the diffuse and surface attachments, which stay 0
-//      there: the mask is exact by construction;
-//   3. PLAIN: transparent materials, colour attachment only, over everything. In call 1 they are
-//      drawn with colour and depth writes off, only so that they still cast shadows.
+//      there: the mask is exact by construction.
+// Transparent materials come after the compose (renderTransparent): blended over the scattered
+// image, depth-tested against the scene, exactly as three blends them over its opaque pass.
 import { FloatType, HalfFloatType } from 'three';
 import { Pass } from 'three/addons/postprocessing/Pass.js';
 import { getSubsurface } from './subsurfaceMaterial.js';
-import { ATTACHMENTS, DRAW_BUFFERS, DRAW_PHASES, createSubsurfaceTarget, setDrawPhase } from './subsurfaceTarget.js';
+import { ATTACHMENTS, DRAW_BUFFERS, DRAW_PHASES, createSubsurfaceTarget, drawingInto } from './subsurfaceTarget.js';
 import { assertFloatRenderTargets, describe } from '../support/rendererSupport.js';
 import { preservingRendererState } from '../support/rendererState.js';
 
 const ZERO = new Float32Array(4);
+/** Transparent subsurface materials already warned about (once each). */
+const warnedTransparent = new WeakSet();
 
 /** The category each visible material is drawn in. */
 const CATEGORIES = Object.freeze({ SUBSURFACE: 'subsurface', OPAQUE: 'opaque', TRANSPARENT: 'transparent' });
@@ -34,8 +38,10 @@ export class SubsurfaceScenePass extends Pass {
    * @param {import('../1-light-depth/LightDepthTarget.js').LightDepthTarget|null} [options.lightDepth=null]
    *   rendered first, when given (transmittance, when the pass is used on its own; the orchestrator
    *   renders its light depth itself)
+   * @param {object} [options.owner] whose material settings the subsurface materials draw with
+   *   (SubsurfaceScattering passes itself; default: this pass)
    */
-  constructor(scene, camera, { type = HalfFloatType, lightDepth = null } = {}) {
+  constructor(scene, camera, { type = HalfFloatType, lightDepth = null, owner = this } = {}) {
     super();
     if (!scene || scene.isScene !== true) throw new TypeError(`SubsurfaceScenePass: scene must be a THREE.Scene, got ${describe(scene)}`);
     if (!camera || camera.isCamera !== true) throw new TypeError(`SubsurfaceScenePass: camera must be a THREE.Camera, got ${describe(camera)}`);
@@ -45,6 +51,7 @@ export class SubsurfaceScenePass extends Pass {
     this.scene = scene;
     this.camera = camera;
     this.lightDepth = lightDepth;
+    this.owner = owner;
     this.needsSwap = false; // writes its own targets, not the composer's
     /** Meshes with a subsurface material seen in the last render (for the on-screen width estimate). */
     this.subsurfaceMeshes = [];
@@ -62,6 +69,8 @@ export class SubsurfaceScenePass extends Pass {
   get diffuseTexture() { return this.renderTarget.textures[ATTACHMENTS.DIFFUSE]; }
   /** The surface attachment: linear view depth and world units per profile mm. */
   get surfaceTexture() { return this.renderTarget.textures[ATTACHMENTS.SURFACE]; }
+  /** The scene's depth (of its opaque part), a DepthTexture. */
+  get depthTexture() { return this.renderTarget.depthTexture; }
   /** The old name of colorTexture (it holds more than light: see colorTexture). */
   get lightTexture() { return this.colorTexture; }
 
@@ -88,12 +97,17 @@ export class SubsurfaceScenePass extends Pass {
       for (const m of Array.isArray(material) ? material : [material]) {
         if (!m || !m.visible) continue;
         const category = m.transparent ? CATEGORIES.TRANSPARENT : getSubsurface(m) ? CATEGORIES.SUBSURFACE : CATEGORIES.OPAQUE;
+        if (m.transparent && getSubsurface(m) && !warnedTransparent.has(m)) {
+          warnedTransparent.add(m);
+          console.warn(`SubsurfaceScattering: material "${m.name || m.uuid}" is transparent, so it is blended over the scattered image without scattering (as three blends transparent objects). Set transparent = false to make it scatter; alphaTest or alphaHash keep its cut-outs.`);
+        }
         categories.set(m, category);
         if (category === CATEGORIES.TRANSPARENT) transparent++;
         if (category === CATEGORIES.SUBSURFACE) hasSubsurface = true;
       }
       if (hasSubsurface) this.subsurfaceMeshes.push(object);
     });
+    this.transparentCount = transparent;
     return transparent;
   }
 
@@ -111,25 +125,36 @@ export class SubsurfaceScenePass extends Pass {
 
   /** One call: the draw phase for hooked materials, the draw buffers, the categories shown. */
   _draw(renderer, phase, drawBuffers, category) {
-    setDrawPhase(this.renderTarget, phase);
-    renderer.getContext().drawBuffers(drawBuffers);
-    this._show(phase, category);
-    renderer.render(this.scene, this.camera);
+    drawingInto(this.renderTarget, phase, this.owner, () => {
+      renderer.getContext().drawBuffers(drawBuffers);
+      this._show(phase, category);
+      renderer.render(this.scene, this.camera);
+    });
   }
 
-  render(renderer /* , writeBuffer, readBuffer */) {
-    assertFloatRenderTargets(renderer, 'SubsurfaceScenePass');
-    const { scene, renderTarget: target } = this;
-    const gl = renderer.getContext();
-    const transparent = this._classify();
+  /** Runs `draw` and puts every classified material's visibility and writes back as they were. */
+  _restoringMaterials(draw) {
     this._visibility.clear();
     this._writes.clear();
     for (const material of this._categories.keys()) {
       this._visibility.set(material, material.visible);
       this._writes.set(material, { colorWrite: material.colorWrite, depthWrite: material.depthWrite });
     }
+    try {
+      draw();
+    } finally {
+      for (const [material, visible] of this._visibility) material.visible = visible;
+      for (const [material, { colorWrite, depthWrite }] of this._writes) Object.assign(material, { colorWrite, depthWrite });
+    }
+  }
 
-    preservingRendererState(renderer, scene, () => {
+  /** Draws the scene's opaque part into the multi-target (the two calls of the header). */
+  render(renderer /* , writeBuffer, readBuffer */) {
+    assertFloatRenderTargets(renderer, 'SubsurfaceScenePass');
+    const { scene, renderTarget: target } = this;
+    const gl = renderer.getContext();
+    this._classify();
+    preservingRendererState(renderer, scene, () => this._restoringMaterials(() => {
       try {
         if (this.lightDepth) this.lightDepth.render(renderer, scene);
         renderer.setRenderTarget(target);
@@ -137,23 +162,39 @@ export class SubsurfaceScenePass extends Pass {
         renderer.clear(true, true, true); // the colour attachment takes the clear colour, like RenderPass
         gl.clearBufferfv(gl.COLOR, ATTACHMENTS.DIFFUSE, ZERO);
         gl.clearBufferfv(gl.COLOR, ATTACHMENTS.SURFACE, ZERO);
-
         // 1. opaque ordinary materials + subsurface depth; background and shadow maps.
         this._draw(renderer, DRAW_PHASES.DEPTH, DRAW_BUFFERS.COLOR_ONLY);
-        scene.background = null; // drawn once; a Color background would clear the targets again
+        // 2. subsurface materials into every attachment (no background: a Color one would clear).
+        scene.background = null;
         renderer.shadowMap.autoUpdate = false;
-        // 2. subsurface materials into every attachment.
         if (this.subsurfaceMeshes.length > 0) this._draw(renderer, DRAW_PHASES.SPLIT, DRAW_BUFFERS.ALL, CATEGORIES.SUBSURFACE);
-        // 3. transparent materials over everything, colour only.
-        if (transparent > 0) this._draw(renderer, DRAW_PHASES.PLAIN, DRAW_BUFFERS.COLOR_ONLY, CATEGORIES.TRANSPARENT);
       } finally {
         // three caches draw buffers per target: leave them as it set them.
         if (renderer.getRenderTarget() === target) gl.drawBuffers(DRAW_BUFFERS.ALL);
-        setDrawPhase(target, DRAW_PHASES.PLAIN);
-        for (const [material, visible] of this._visibility) material.visible = visible;
-        for (const [material, { colorWrite, depthWrite }] of this._writes) Object.assign(material, { colorWrite, depthWrite });
       }
-    });
+    }));
+  }
+
+  /**
+   * Draws the transparent materials of the last render into `target` (null: the screen) over what
+   * it holds, depth-tested against its depth, which must be this scene's (the compose writes it):
+   * three's own order, back to front, after the opaque scene.
+   * @param {import('three').WebGLRenderer} renderer
+   * @param {import('three').WebGLRenderTarget|null} target
+   */
+  renderTransparent(renderer, target) {
+    if (!(this.transparentCount > 0)) return;
+    const { scene } = this;
+    preservingRendererState(renderer, scene, () => this._restoringMaterials(() => {
+      renderer.setRenderTarget(target);
+      renderer.autoClear = false;
+      scene.background = null;
+      renderer.shadowMap.autoUpdate = false; // drawn with this frame's, in call 1
+      drawingInto(target, DRAW_PHASES.PLAIN, this.owner, () => {
+        this._show(DRAW_PHASES.PLAIN, CATEGORIES.TRANSPARENT);
+        renderer.render(scene, this.camera);
+      });
+    }));
   }
 
   dispose() {

@@ -5,6 +5,11 @@
 // specular + emissive in the colour attachment. Drawn anywhere else it renders exactly as before,
 // plus transmittance when enabled.
 //
+// One material can serve several pipelines: each binds its own settings (width, light, profile,
+// debug output) to it, and every draw takes the settings of the pipeline drawing (draws outside
+// any pipeline take the latest binding's). One program serves them all: transmittance is a uniform
+// switch, not a define. Disposing one pipeline unbinds it; the last unbind restores the material.
+//
 // Our GLSL goes in at fixed points of three's MeshStandard/MeshPhysical fragment shader (`inject`,
 // which fails loudly when three's shader no longer has the point); the declarations are assembled
 // with the library's include resolver like every other shader.
@@ -20,21 +25,29 @@ import { assembleGlsl, enumDefines } from '../support/glsl.js';
 import { checkNumber, checkOneOf } from '../support/parameterChecks.js';
 import { describe } from '../support/rendererSupport.js';
 import { MATERIAL_DEFAULTS } from '../options.js';
-import { ATTACHMENT_DEFINES, DRAW_PHASES, drawPhaseOf } from './subsurfaceTarget.js';
+import { ATTACHMENT_DEFINES, DRAW_PHASES, currentDraw } from './subsurfaceTarget.js';
 import {
-  TRANSMITTANCE_CHUNKS, createTransmittanceUniforms, lightUniformSlots, transmittanceUniformSlots, updateLightUniforms,
+  TRANSMITTANCE_CHUNKS, isShining, lightUniformSlots, transmittanceSettings, transmittanceUniformSlots,
+  updateLightUniforms, writeTransmittanceUniforms,
 } from './transmittance.js';
 
 /** What the diffuse attachment receives: the diffuse light, or one ingredient for a debug view. */
 export const MATERIAL_OUTPUTS = Object.freeze(['diffuse', 'transmittance', 'thickness']);
 
-/** The kinds of light transmittance is shaded with (a define: a different program each). */
+/** The kinds of light transmittance is shaded with. */
 const LIGHT_TYPES = Object.freeze(['directional', 'spot']);
 
-/** The declarations before main(), with the finiteness check and (behind #ifdef) transmittance. */
-const declarations = assembleGlsl('makeSubsurface', parsGlsl, { 'common/finite.glsl': finiteGlsl, ...TRANSMITTANCE_CHUNKS });
+/** The key of bindings made by makeSubsurface called on its own, outside a pipeline. */
+const STANDALONE = Object.freeze({ name: 'makeSubsurface' });
 
-const hooks = new WeakMap();
+/** The declarations before main(), with the finiteness check and transmittance. */
+const declarations = assembleGlsl('makeSubsurface', parsGlsl, { 'common/finite.glsl': finiteGlsl, ...TRANSMITTANCE_CHUNKS });
+const defines = Object.freeze({
+  ...ATTACHMENT_DEFINES, ...enumDefines('SSS_OUTPUT', MATERIAL_OUTPUTS, 'diffuse'), ...enumDefines('SSS_LIGHT_TYPE', LIGHT_TYPES, 'spot'),
+});
+
+/** material → its patch: { uniforms, bindings: Map<owner, binding>, restore() } */
+const patches = new WeakMap();
 
 /** Replaces `needle` in `source`, failing loudly if three's shader no longer has it. */
 function inject(source, needle, replacement) {
@@ -44,98 +57,20 @@ function inject(source, needle, replacement) {
   return source.replace(needle, replacement);
 }
 
-/**
- * The material options with the old name `strength` read as `widthScale` (the name says what it
- * does; `strength` on the pipeline is Jimenez's RGB mix).
- */
-function withWidthScale(options) {
-  if (options.strength === undefined) return options;
-  const { strength, ...rest } = options;
-  checkNumber('strength', strength, { min: 0, max: 1 });
-  return { widthScale: strength, ...rest };
-}
-
-/**
- * Makes a MeshStandardMaterial or MeshPhysicalMaterial subsurface-scattering (idempotent: a second
- * call updates the options). The material keeps rendering normally outside SubsurfaceScattering.
- * @param {import('three').MeshStandardMaterial} material
- * @param {object} [options]
- * @param {number} [options.widthMm=1] scattering width: millimetres of material per profile
- *   millimetre (1 = the profile's physical size; 0 < widthMm ≤ 1000)
- * @param {number} [options.widthScale=1] 0..1, scales the width (0 = no scattering, the light kept);
- *   `strength` is its old name, still accepted
- * @param {number} [options.worldUnitInMm=1000] millimetres per world unit (three.js: metres)
- * @param {object|null} [options.transmittance=null] light through thin parts:
- *   `{ lightDepth: LightDepthTarget, lookup: ProfileLookup, translucency?, shrinkMm? }`
- * @returns {{ uniforms: object, options: object, update(options: object): void, dispose(): void }}
- */
-export function makeSubsurface(material, options = {}) {
-  if (!material || material.isMeshStandardMaterial !== true) {
-    throw new TypeError(`makeSubsurface: material must be a THREE.MeshStandardMaterial or MeshPhysicalMaterial, got ${describe(material)}`);
-  }
-  // The scene pass draws subsurface materials twice (depth, then everything) and relies on the
-  // second draw passing the depth test at equal depth.
-  if (material.depthFunc !== LessEqualDepth) {
-    throw new RangeError('makeSubsurface: material.depthFunc must be THREE.LessEqualDepth (the default) for the split draw');
-  }
-  const existing = hooks.get(material);
-  if (existing) {
-    existing.update(options);
-    return existing;
-  }
-
+/** Patches `material` once: its shader, its program cache key and a per-draw uniform refresh. */
+function patch(material) {
   const uniforms = {
     sssSplit: { value: false },
     sssDepthOnly: { value: false },
     sssWidthWorld: { value: 0 },
     sssWidthScale: { value: 1 },
     sssDebugOutput: { value: 0 },
+    sssTransmits: { value: false },
+    sssLightType: { value: 0 },
     ...lightUniformSlots(),
     ...transmittanceUniformSlots(),
   };
-  let transmittanceUniforms = null; // filled once, kept while transmittance is off: see transmittanceUniformSlots
-  const hook = {
-    material,
-    uniforms,
-    options: { widthMm: MATERIAL_DEFAULTS.widthMm, widthScale: MATERIAL_DEFAULTS.widthScale, worldUnitInMm: 1000, transmittance: null },
-    /** What the diffuse attachment receives: one of MATERIAL_OUTPUTS ('diffuse' normally; the others for debug views). */
-    set debugOutput(mode) {
-      uniforms.sssDebugOutput.value = MATERIAL_OUTPUTS.indexOf(checkOneOf('debugOutput', mode, MATERIAL_OUTPUTS));
-    },
-    get debugOutput() {
-      return MATERIAL_OUTPUTS[uniforms.sssDebugOutput.value];
-    },
-    transmittance: null,
-    update,
-    dispose,
-  };
-
-  function update(next = {}) {
-    const o = { ...hook.options, ...withWidthScale(next) };
-    checkNumber('widthMm', o.widthMm, { min: 0, minExclusive: true, max: 1000, unit: 'mm' });
-    checkNumber('widthScale', o.widthScale, { min: 0, max: 1 });
-    checkNumber('worldUnitInMm', o.worldUnitInMm, { min: 0, minExclusive: true, max: 1e9, unit: 'mm' });
-    const hadTransmittance = hook.transmittance !== null;
-    const lightType = hook.transmittance?.lightType;
-    if (o.transmittance) {
-      const t = o.transmittance;
-      const settings = { ...t, worldUnitInMm: o.worldUnitInMm, widthMm: o.widthMm };
-      if (transmittanceUniforms) transmittanceUniforms.set(settings);
-      else transmittanceUniforms = createTransmittanceUniforms(settings, uniforms);
-      hook.transmittance = transmittanceUniforms;
-      hook.transmittance.lightDepth = t.lightDepth;
-      hook.transmittance.lightType = t.lightDepth.light.isSpotLight ? 'spot' : 'directional';
-    } else {
-      hook.transmittance = null;
-    }
-    uniforms.sssWidthWorld.value = o.widthMm / o.worldUnitInMm;
-    uniforms.sssWidthScale.value = o.widthScale;
-    hook.options = o;
-    if (hadTransmittance !== (hook.transmittance !== null) || lightType !== hook.transmittance?.lightType) {
-      material.needsUpdate = true; // a different program
-    }
-  }
-
+  const bindings = new Map();
   const previous = {
     onBeforeCompile: material.onBeforeCompile,
     customProgramCacheKey: material.customProgramCacheKey,
@@ -145,10 +80,7 @@ export function makeSubsurface(material, options = {}) {
   material.onBeforeCompile = function (shader, renderer) {
     previous.onBeforeCompile.call(this, shader, renderer);
     Object.assign(shader.uniforms, uniforms);
-    shader.defines = { ...shader.defines, ...ATTACHMENT_DEFINES, ...enumDefines('SSS_OUTPUT', MATERIAL_OUTPUTS, 'diffuse') };
-    if (hook.transmittance) {
-      shader.defines = { ...shader.defines, SSS_TRANSMITTANCE: '', ...enumDefines('SSS_LIGHT_TYPE', LIGHT_TYPES, hook.transmittance.lightType) };
-    }
+    shader.defines = { ...shader.defines, ...defines };
     let fs = shader.fragmentShader;
     fs = inject(fs, 'void main() {', `${declarations}\nvoid main() {`);
     fs = inject(fs, '#include <alphahash_fragment>', `#include <alphahash_fragment>\n${depthOnlyGlsl}`);
@@ -160,41 +92,146 @@ export function makeSubsurface(material, options = {}) {
   };
 
   material.customProgramCacheKey = function () {
-    const t = hook.transmittance ? `T${hook.transmittance.lightType}` : '';
-    return `${previous.customProgramCacheKey.call(this)}|subsurface${t}`;
+    return `${previous.customProgramCacheKey.call(this)}|subsurface`;
   };
 
-  // Per draw: split only in the multi-target's SPLIT call, and refresh the view-dependent
-  // uniforms. Three uploads them once per material per render call, which is all they change at.
+  // Per draw: what to write (the phase) and whose settings (the pipeline drawing, else the latest
+  // binding). Three uploads uniforms once per material per render call, which is all these change at.
   material.onBeforeRender = function (renderer, scene, camera, geometry, object, group) {
     previous.onBeforeRender.call(this, renderer, scene, camera, geometry, object, group);
-    const phase = drawPhaseOf(renderer.getRenderTarget());
-    uniforms.sssSplit.value = phase === DRAW_PHASES.SPLIT;
-    uniforms.sssDepthOnly.value = phase === DRAW_PHASES.DEPTH;
-    if (hook.transmittance) {
-      hook.transmittance.update(camera);
-      updateLightUniforms(uniforms, hook.transmittance.lightDepth.light, camera);
-    }
+    const draw = currentDraw(renderer.getRenderTarget());
+    uniforms.sssSplit.value = draw.phase === DRAW_PHASES.SPLIT;
+    uniforms.sssDepthOnly.value = draw.phase === DRAW_PHASES.DEPTH;
+    const binding = bindings.get(draw.owner) ?? [...bindings.values()].pop();
+    if (binding) applyBinding(uniforms, binding, scene, camera);
   };
 
-  hooks.set(material, hook);
-  update(options);
+  const state = {
+    uniforms,
+    bindings,
+    restore() {
+      material.onBeforeCompile = previous.onBeforeCompile;
+      material.customProgramCacheKey = previous.customProgramCacheKey;
+      material.onBeforeRender = previous.onBeforeRender;
+      patches.delete(material);
+      material.needsUpdate = true;
+    },
+  };
+  patches.set(material, state);
   material.needsUpdate = true;
+  return state;
+}
 
-  function dispose() {
-    material.onBeforeCompile = previous.onBeforeCompile;
-    material.customProgramCacheKey = previous.customProgramCacheKey;
-    material.onBeforeRender = previous.onBeforeRender;
-    hooks.delete(material);
-    material.needsUpdate = true;
-  }
-  return hook;
+/** Writes one pipeline's settings into the material's uniforms for this draw. */
+function applyBinding(uniforms, binding, scene, camera) {
+  const { options, transmittance } = binding;
+  uniforms.sssWidthWorld.value = options.widthMm / options.worldUnitInMm;
+  uniforms.sssWidthScale.value = options.widthScale;
+  uniforms.sssDebugOutput.value = MATERIAL_OUTPUTS.indexOf(binding.debugOutput);
+  uniforms.sssTransmits.value = false;
+  if (!transmittance || !scene || !camera) return;
+  const { light } = transmittance.lightDepth;
+  uniforms.sssTransmits.value = isShining(light, scene, camera);
+  uniforms.sssLightType.value = LIGHT_TYPES.indexOf(light.isSpotLight ? 'spot' : 'directional');
+  updateLightUniforms(uniforms, light, scene, camera);
+  writeTransmittanceUniforms(uniforms, transmittance, camera);
+}
+
+/** The material options with the old name `strength` read as `widthScale` (the pipeline's `strength` is Jimenez's RGB mix). */
+function withWidthScale(options) {
+  if (options.strength === undefined) return options;
+  const { strength, ...rest } = options;
+  checkNumber('strength', strength, { min: 0, max: 1 });
+  return { widthScale: strength, ...rest };
 }
 
 /**
- * The hook of a material made subsurface, or undefined.
+ * Makes a MeshStandardMaterial or MeshPhysicalMaterial subsurface-scattering (idempotent: a second
+ * call with the same owner updates the options). The material keeps rendering normally outside
+ * SubsurfaceScattering.
+ * @param {import('three').MeshStandardMaterial} material
+ * @param {object} [options]
+ * @param {number} [options.widthMm=1] scattering width: millimetres of material per profile
+ *   millimetre (1 = the profile's physical size; 0 < widthMm ≤ 1000)
+ * @param {number} [options.widthScale=1] 0..1, scales the width (0 = no scattering, the light kept);
+ *   `strength` is its old name, still accepted
+ * @param {number} [options.worldUnitInMm=1000] millimetres per world unit (three.js: metres)
+ * @param {object|null} [options.transmittance=null] light through thin parts:
+ *   `{ lightDepth: LightDepthTarget, lookup: ProfileLookup, translucency?, shrinkMm? }`
+ * @param {object} [owner] the pipeline these settings are for (SubsurfaceScattering passes itself);
+ *   omitted: settings of their own, used wherever no pipeline with settings of its own draws
+ * @returns {{ material: object, uniforms: object, options: object, debugOutput: string, widthWorld: number, update(options: object): void, dispose(): void }}
+ */
+export function makeSubsurface(material, options = {}, owner = STANDALONE) {
+  if (!material || material.isMeshStandardMaterial !== true) {
+    throw new TypeError(`makeSubsurface: material must be a THREE.MeshStandardMaterial or MeshPhysicalMaterial, got ${describe(material)}`);
+  }
+  // The scene pass draws subsurface materials twice (depth, then everything) and relies on the
+  // second draw passing the depth test at equal depth.
+  if (material.depthFunc !== LessEqualDepth) {
+    throw new RangeError('makeSubsurface: material.depthFunc must be THREE.LessEqualDepth (the default) for the split draw');
+  }
+  const state = patches.get(material) ?? patch(material);
+  const existing = state.bindings.get(owner);
+  if (existing) {
+    existing.update(options);
+    return existing;
+  }
+
+  const binding = {
+    material,
+    uniforms: state.uniforms,
+    options: { widthMm: MATERIAL_DEFAULTS.widthMm, widthScale: MATERIAL_DEFAULTS.widthScale, worldUnitInMm: 1000, transmittance: null },
+    /** Checked transmittance settings, or null. */
+    transmittance: null,
+    _debugOutput: 'diffuse',
+    /** What the diffuse attachment receives: one of MATERIAL_OUTPUTS ('diffuse' normally; the others for debug views). */
+    set debugOutput(mode) {
+      this._debugOutput = checkOneOf('debugOutput', mode, MATERIAL_OUTPUTS);
+    },
+    get debugOutput() {
+      return this._debugOutput;
+    },
+    /** World units per profile millimetre this binding writes (width × widthScale). */
+    get widthWorld() {
+      return (this.options.widthMm / this.options.worldUnitInMm) * this.options.widthScale;
+    },
+    update(next = {}) {
+      const o = { ...this.options, ...withWidthScale(next) };
+      checkNumber('widthMm', o.widthMm, { min: 0, minExclusive: true, max: 1000, unit: 'mm' });
+      checkNumber('widthScale', o.widthScale, { min: 0, max: 1 });
+      checkNumber('worldUnitInMm', o.worldUnitInMm, { min: 0, minExclusive: true, max: 1e9, unit: 'mm' });
+      this.transmittance = o.transmittance ? transmittanceSettings({ ...o.transmittance, worldUnitInMm: o.worldUnitInMm, widthMm: o.widthMm }) : null;
+      this.options = o;
+      if ([...state.bindings.values()].pop() === this) applyBinding(state.uniforms, this); // the uniforms show the latest settings
+    },
+    /** Unbinds these settings; the material is restored once no binding is left. Idempotent. */
+    dispose() {
+      if (state.bindings.get(owner) !== this) return;
+      state.bindings.delete(owner);
+      if (state.bindings.size === 0) state.restore();
+    },
+  };
+  state.bindings.set(owner, binding);
+  binding.update(options);
+  return binding;
+}
+
+/**
+ * The settings a material made subsurface draws with outside any pipeline (its latest binding),
+ * or undefined for a material that is not subsurface.
  * @param {import('three').Material} material
  */
 export function getSubsurface(material) {
-  return hooks.get(material);
+  const state = patches.get(material);
+  return state ? [...state.bindings.values()].pop() : undefined;
+}
+
+/**
+ * The settings `owner` bound to `material`, or undefined.
+ * @param {import('three').Material} material
+ * @param {object} owner
+ */
+export function subsurfaceBindingOf(material, owner) {
+  return patches.get(material)?.bindings.get(owner);
 }

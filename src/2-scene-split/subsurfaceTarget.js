@@ -8,11 +8,12 @@
 //                                                    a: 1, the mask (whatever the width)
 //   2           surface   float RG                   r: linear view depth (world units)          0
 //                                                    g: world units per profile mm × widthScale
+//   depth       depth     24-bit depth texture       the scene's depth (what the compose hands on to the composer)
 //
 // The surface attachment is 32-bit float: depth differences of a millimetre at metres of distance
 // need its mantissa (half float has 11 bits). The mask is the diffuse alpha, not g > 0, so a
 // material with widthScale 0 keeps its diffuse light unblurred instead of losing it.
-import { FloatType, NearestFilter, RGFormat, WebGLRenderTarget } from 'three';
+import { DepthTexture, FloatType, NearestFilter, RGFormat, UnsignedIntType, WebGLRenderTarget } from 'three';
 
 /** Attachment indices of the multi-target (see the table above). */
 export const ATTACHMENTS = Object.freeze({ COLOR: 0, DIFFUSE: 1, SURFACE: 2 });
@@ -40,16 +41,16 @@ export const DRAW_BUFFERS = Object.freeze({
   ALL: Object.freeze([COLOR_ATTACHMENT0 + ATTACHMENTS.COLOR, COLOR_ATTACHMENT0 + ATTACHMENTS.DIFFUSE, COLOR_ATTACHMENT0 + ATTACHMENTS.SURFACE]),
 });
 
-/** The draw phase of each multi-target while the scene pass draws into it. */
-const phases = new WeakMap();
-
 /**
- * Creates the multi-target, 1 × 1 until setSize.
+ * Creates the multi-target, 1 × 1 until setSize, with a depth texture (the scene's depth, which
+ * the compose hands on to the composer's buffer).
  * @param {number} type HalfFloatType or FloatType for the colour and diffuse attachments
  * @returns {WebGLRenderTarget}
  */
 export function createSubsurfaceTarget(type) {
-  const target = new WebGLRenderTarget(1, 1, { count: 3, type, depthBuffer: true });
+  const depthTexture = new DepthTexture(1, 1, UnsignedIntType); // 24-bit, like three's depth renderbuffers
+  depthTexture.name = 'subsurface.depth';
+  const target = new WebGLRenderTarget(1, 1, { count: 3, type, depthBuffer: true, depthTexture });
   const { COLOR, DIFFUSE, SURFACE } = ATTACHMENTS;
   target.textures[COLOR].name = 'subsurface.color';
   target.textures[DIFFUSE].name = 'subsurface.diffuse';
@@ -58,25 +59,38 @@ export function createSubsurfaceTarget(type) {
   surface.type = FloatType;
   surface.format = RGFormat;
   surface.minFilter = surface.magFilter = NearestFilter;
-  phases.set(target, DRAW_PHASES.PLAIN);
   return target;
 }
 
+/** What is being drawn, while a pipeline draws: its target, the draw phase and the pipeline. */
+let drawing = null;
+const PLAIN_DRAW = Object.freeze({ target: undefined, phase: DRAW_PHASES.PLAIN, owner: null });
+
 /**
- * Tells hooked materials what to write while drawn into `target` (the scene pass sets it per call
- * and puts PLAIN back after).
- * @param {WebGLRenderTarget} target a multi-target from createSubsurfaceTarget
+ * Runs `draw()` with hooked materials told what to write into `target` and for which pipeline
+ * (`owner`, whose per-material settings they use).
+ * @param {WebGLRenderTarget|null} target the target the draw goes to (null: the screen)
  * @param {'depth'|'split'|'plain'} phase one of DRAW_PHASES
+ * @param {object} owner the pipeline drawing
+ * @param {() => void} draw
  */
-export function setDrawPhase(target, phase) {
-  phases.set(target, phase);
+export function drawingInto(target, phase, owner, draw) {
+  const outer = drawing;
+  drawing = { target, phase, owner };
+  try {
+    draw();
+  } finally {
+    drawing = outer;
+  }
 }
 
 /**
- * What a hooked material writes into `target`: its phase if it is a multi-target being drawn by
- * the scene pass, PLAIN for any other target (the screen, a cube camera, another composer).
+ * What a hooked material drawn into `target` now writes, and for which pipeline: the current
+ * draw's, if it goes to this target; otherwise PLAIN for no pipeline (the screen, a cube camera,
+ * another composer, a shadow map rendered meanwhile).
  * @param {WebGLRenderTarget|null} target
+ * @returns {{ phase: string, owner: object|null }}
  */
-export function drawPhaseOf(target) {
-  return (target && phases.get(target)) ?? DRAW_PHASES.PLAIN;
+export function currentDraw(target) {
+  return drawing !== null && drawing.target === target ? drawing : PLAIN_DRAW;
 }

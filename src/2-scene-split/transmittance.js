@@ -30,8 +30,8 @@ const _direction = new Vector3();
 
 /**
  * The uniform objects `transmittanceChunk` reads, with neutral values. A hooked material owns one
- * set for its whole life: three keeps the uniform objects of a program's first compile when it
- * switches back to that program, so they must never be replaced.
+ * set for its whole life (three keeps the uniform objects of a program's first compile), filled
+ * per draw from the drawing pipeline's settings.
  */
 export function transmittanceUniformSlots() {
   return {
@@ -43,6 +43,39 @@ export function transmittanceUniformSlots() {
     sssTransmittanceRangeMm: { value: 1 },
     sssThicknessToProfileMm: { value: 1 },
   };
+}
+
+/**
+ * Checked transmittance settings (see createTransmittanceUniforms' options), frozen.
+ * @returns {Readonly<{ lightDepth: LightDepthTarget, lookup: ProfileLookup, worldUnitInMm: number, widthMm: number, translucency: number, shrinkMm: number }>}
+ */
+export function transmittanceSettings({ lightDepth, lookup, worldUnitInMm, widthMm = MATERIAL_DEFAULTS.widthMm, translucency = MATERIAL_DEFAULTS.translucency, shrinkMm = MATERIAL_DEFAULTS.shrinkMm }) {
+  if (!(lightDepth instanceof LightDepthTarget)) throw new TypeError(`transmittance: lightDepth must be a LightDepthTarget, got ${describe(lightDepth)}`);
+  if (!(lookup instanceof ProfileLookup)) throw new TypeError(`transmittance: lookup must be a ProfileLookup, got ${describe(lookup)}`);
+  checkNumber('worldUnitInMm', worldUnitInMm, { min: 0, minExclusive: true, max: 1e9, unit: 'mm' });
+  checkNumber('widthMm', widthMm, { min: 0, minExclusive: true, max: 1000, unit: 'mm' });
+  checkNumber('translucency', translucency, { min: 0, max: 1, maxExclusive: true });
+  checkNumber('shrinkMm', shrinkMm, { min: 0, max: 1000, unit: 'mm' });
+  return Object.freeze({ lightDepth, lookup, worldUnitInMm, widthMm, translucency, shrinkMm });
+}
+
+/**
+ * Writes transmittanceUniformSlots' uniforms for `settings`, and with a camera the view-dependent
+ * ones too (the light camera as LightDepthTarget last placed it).
+ * @param {object} uniforms
+ * @param {ReturnType<typeof transmittanceSettings>} settings
+ * @param {import('three').Camera} [camera]
+ */
+export function writeTransmittanceUniforms(uniforms, settings, camera) {
+  const { lightDepth, lookup, worldUnitInMm, widthMm, translucency, shrinkMm } = settings;
+  uniforms.sssLightDepthMap.value = lightDepth.texture;
+  uniforms.sssProfileLookup.value = lookup.texture;
+  uniforms.sssShrinkWorld.value = shrinkMm / worldUnitInMm;
+  uniforms.sssThicknessToProfileMm.value = (worldUnitInMm * (1 - translucency)) / widthMm;
+  uniforms.sssTransmittanceRangeMm.value = lookup.transmittanceRangeMm;
+  if (!camera) return;
+  uniforms.sssViewToLightView.value.multiplyMatrices(lightDepth.camera.matrixWorldInverse, camera.matrixWorld);
+  uniforms.sssLightProjection.value.copy(lightDepth.camera.projectionMatrix);
 }
 
 /**
@@ -59,36 +92,34 @@ export function transmittanceUniformSlots() {
  * @returns {{ uniforms: object, update(camera: import('three').Camera): void, set(options: object): void }}
  */
 export function createTransmittanceUniforms(options, uniforms = transmittanceUniformSlots()) {
-  const { widthMm, translucency, shrinkMm } = MATERIAL_DEFAULTS;
-  const state = { widthMm, translucency, shrinkMm };
-  function set(next) {
-    Object.assign(state, Object.fromEntries(Object.entries(next).filter(([, v]) => v !== undefined)));
-    if (!(state.lightDepth instanceof LightDepthTarget)) {
-      throw new TypeError(`transmittance: lightDepth must be a LightDepthTarget, got ${describe(state.lightDepth)}`);
-    }
-    if (!(state.lookup instanceof ProfileLookup)) {
-      throw new TypeError(`transmittance: lookup must be a ProfileLookup, got ${describe(state.lookup)}`);
-    }
-    checkNumber('worldUnitInMm', state.worldUnitInMm, { min: 0, minExclusive: true, max: 1e9, unit: 'mm' });
-    checkNumber('widthMm', state.widthMm, { min: 0, minExclusive: true, max: 1000, unit: 'mm' });
-    checkNumber('translucency', state.translucency, { min: 0, max: 1, maxExclusive: true });
-    checkNumber('shrinkMm', state.shrinkMm, { min: 0, max: 1000, unit: 'mm' });
-    uniforms.sssLightDepthMap.value = state.lightDepth.texture;
-    uniforms.sssProfileLookup.value = state.lookup.texture;
-    uniforms.sssShrinkWorld.value = state.shrinkMm / state.worldUnitInMm;
-    uniforms.sssThicknessToProfileMm.value = (state.worldUnitInMm * (1 - state.translucency)) / state.widthMm;
-  }
-  set(options);
+  let settings = transmittanceSettings(options);
+  writeTransmittanceUniforms(uniforms, settings);
   return {
     uniforms,
-    set,
+    set(next) {
+      settings = transmittanceSettings({ ...settings, ...Object.fromEntries(Object.entries(next).filter(([, v]) => v !== undefined)) });
+      writeTransmittanceUniforms(uniforms, settings);
+    },
     update(camera) {
-      const { lightDepth, lookup } = state;
-      uniforms.sssViewToLightView.value.multiplyMatrices(lightDepth.camera.matrixWorldInverse, camera.matrixWorld);
-      uniforms.sssLightProjection.value.copy(lightDepth.camera.projectionMatrix);
-      uniforms.sssTransmittanceRangeMm.value = lookup.transmittanceRangeMm;
+      writeTransmittanceUniforms(uniforms, settings, camera);
     },
   };
+}
+
+/**
+ * Whether `light` lights `scene` as three would light it from `camera`: visible with all its
+ * ancestors, in the scene's graph, on a layer the camera sees, with a non-zero intensity. A light
+ * removed from the scene, never added, or hidden sends no transmittance (and its depth pass is
+ * skipped).
+ * @param {import('three').Light} light
+ * @param {import('three').Scene} scene
+ * @param {import('three').Camera} camera
+ */
+export function isShining(light, scene, camera) {
+  if (!(light.intensity > 0) || !light.layers.test(camera.layers)) return false;
+  let node = light;
+  while (node.visible && node.parent) node = node.parent;
+  return node.visible && node === scene;
 }
 
 /** The uniform objects of the light the hooked material shades transmittance with. */
@@ -106,18 +137,17 @@ export function lightUniformSlots() {
 
 /**
  * Refreshes lightUniformSlots' uniforms for `light` seen from `camera` (view space, three's
- * conventions: the direction points from the target towards the light).
+ * conventions: the direction points from the target towards the light); a light that does not
+ * shine in `scene` (isShining) gets colour 0.
  * @param {object} uniforms
  * @param {import('three').SpotLight|import('three').DirectionalLight} light
+ * @param {import('three').Scene} scene
  * @param {import('three').Camera} camera
  */
-export function updateLightUniforms(uniforms, light, camera) {
+export function updateLightUniforms(uniforms, light, scene, camera) {
   const view = camera.matrixWorldInverse;
-  // Like three's own lights: a hidden light (or one under a hidden parent) sends nothing.
-  let shining = true;
-  light.traverseAncestors((a) => { if (!a.visible) shining = false; });
   uniforms.sssLightColor.value.set(light.color.r, light.color.g, light.color.b)
-    .multiplyScalar(shining && light.visible ? light.intensity : 0);
+    .multiplyScalar(isShining(light, scene, camera) ? light.intensity : 0);
   _position.setFromMatrixPosition(light.matrixWorld);
   _direction.setFromMatrixPosition(light.target.matrixWorld);
   _direction.subVectors(_position, _direction).transformDirection(view);

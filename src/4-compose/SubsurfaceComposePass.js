@@ -2,6 +2,7 @@
 // multi-target's colour attachment), in linear HDR. Pixels that are not subsurface come out as
 // their material wrote them. Also offers a split view (unblurred on the left) and debug views of
 // each ingredient (src/4-compose/debugViews.js).
+import { AlwaysDepth, LessEqualDepth } from 'three';
 import { ShaderPass } from 'three/addons/postprocessing/ShaderPass.js';
 import vertexShader from '../../shaders/common/fullscreen.vert.glsl?raw';
 import composeGlsl from '../../shaders/4-compose/compose.frag.glsl?raw';
@@ -26,23 +27,27 @@ export class SubsurfaceComposePass extends ShaderPass {
    *   alpha is the mask (split view, debug views; old name: unscatteredTexture)
    * @param {import('three').Texture|null} [options.scatteredTexture=null] the blurred diffuse light;
    *   null reads the composer's read buffer
+   * @param {import('three').DepthTexture} options.depthTexture the multi-target's depth, written
+   *   out as the target's depth
    */
   constructor({
-    colorTexture, lightTexture, surfaceTexture, diffuseTexture, unscatteredTexture, scatteredTexture = null,
+    colorTexture, lightTexture, surfaceTexture, diffuseTexture, unscatteredTexture, scatteredTexture = null, depthTexture,
   } = {}) {
     const inputs = {
       colorTexture: colorTexture ?? lightTexture,
       surfaceTexture,
       diffuseTexture: diffuseTexture ?? unscatteredTexture,
+      depthTexture,
     };
     for (const [name, t] of Object.entries(inputs)) {
       if (!t || t.isTexture !== true) throw new TypeError(`SubsurfaceComposePass: ${name} must be a THREE.Texture, got ${describe(t)}`);
     }
     super({
       name: 'SubsurfaceComposePass',
-      defines: enumDefines('DEBUG_VIEW', DEBUG_VIEWS, DEBUG_VIEW.FINAL),
+      defines: { ...enumDefines('DEBUG_VIEW', DEBUG_VIEWS, DEBUG_VIEW.FINAL), KEEP_BACKGROUND: 0 },
       uniforms: {
         tColor: { value: null }, tScattered: { value: null }, tDiffuse: { value: null }, tSurface: { value: null },
+        tDepth: { value: null }, farDepth: { value: 1 },
         splitX: { value: 0 }, debugDepthRange: { value: 100 }, debugThicknessRangeMm: { value: 10 },
       },
       vertexShader,
@@ -51,7 +56,9 @@ export class SubsurfaceComposePass extends ShaderPass {
     this.uniforms.tColor.value = inputs.colorTexture;
     this.uniforms.tSurface.value = inputs.surfaceTexture;
     this.uniforms.tDiffuse.value = inputs.diffuseTexture;
+    this.uniforms.tDepth.value = inputs.depthTexture;
     this.scatteredTexture = scatteredTexture;
+    this.setClear(true);
     this.debugView = DEBUG_VIEW.FINAL;
     this.split = 0;
     this._width = 1;
@@ -73,6 +80,25 @@ export class SubsurfaceComposePass extends ShaderPass {
     this.uniforms.debugDepthRange.value = depthRange;
     this.uniforms.debugThicknessRangeMm.value = thicknessRangeMm;
     this.debugView = view;
+  }
+
+  /**
+   * How the output meets what the target already holds, as RenderPass's `clear` and `clearDepth`:
+   * clear = true writes every pixel, colour and depth; clear = false keeps the target's pixels where
+   * the scene drew nothing and, unless `clearDepth`, where the target's depth is nearer.
+   * @param {boolean} clear
+   * @param {boolean} [clearDepth=false]
+   */
+  setClear(clear, clearDepth = false) {
+    setDefines(this.material, { KEEP_BACKGROUND: clear ? 0 : 1 });
+    this.material.depthTest = true; // depth is written only while the depth test is on
+    this.material.depthWrite = true;
+    this.material.depthFunc = clear || clearDepth ? AlwaysDepth : LessEqualDepth;
+  }
+
+  render(renderer, writeBuffer, readBuffer, deltaTime, maskActive) {
+    this.uniforms.farDepth.value = renderer.state.buffers.depth.getReversed() ? 0 : 1;
+    super.render(renderer, writeBuffer, readBuffer, deltaTime, maskActive);
   }
 
   /** Fraction of the width, from the left, shown without the blur (0 = none, 1 = all). */

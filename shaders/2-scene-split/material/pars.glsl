@@ -11,15 +11,18 @@ uniform float sssWidthWorld; // widthMm / worldUnitInMm: world units per profile
 uniform float sssWidthScale; // 0..1, scales the width (0 = no scattering, the light kept)
 uniform int sssDebugOutput;  // what the diffuse attachment holds: SSS_OUTPUT_DIFFUSE, _TRANSMITTANCE or _THICKNESS (mm)
 
-#include "common/finite.glsl"
 
-#ifdef SSS_TRANSMITTANCE
-	uniform vec3 sssLightColor;          // colour * intensity
-	uniform vec3 sssLightPositionView;   // point/spot position, view space
-	uniform vec3 sssLightDirectionView;  // unit vector towards the light (directional and spot axis)
-	uniform float sssLightCutoffDistance;
-	uniform float sssLightDecay;
-	uniform float sssSpotConeCos;
-	uniform float sssSpotPenumbraCos;
-	#include "2-scene-split/transmittance.glsl"
-#endif
+// Transmittance (shaders/2-scene-split/material/transmittedLight.glsl), set per draw from the
+// drawing pipeline's settings.
+uniform bool sssTransmits;           // this draw's pipeline has a shining light and the material transmits
+uniform int sssLightType;            // SSS_LIGHT_TYPE_DIRECTIONAL or SSS_LIGHT_TYPE_SPOT
+uniform vec3 sssLightColor;          // colour * intensity (0 when the light does not shine in this scene)
+uniform vec3 sssLightPositionView;   // spot position, view space
+uniform vec3 sssLightDirectionView;  // unit vector towards the light (directional and spot axis)
+uniform float sssLightCutoffDistance;
+uniform float sssLightDecay;
+uniform float sssSpotConeCos;
+uniform float sssSpotPenumbraCos;
+
+#include "common/finite.glsl"
+#include "2-scene-split/transmittance.glsl"
