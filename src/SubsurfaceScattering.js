@@ -20,9 +20,11 @@ import { Pass } from 'three/addons/postprocessing/Pass.js';
 import { computeKernel, kernelRadiusMm } from './profiles/kernel.js';
 import { getProfile } from './profiles/presets.js';
 import { ProfileLookup } from './profiles/ProfileLookup.js';
-import { checkNumber, checkOneOf } from './support/parameterChecks.js';
+import { checkInteger, checkNumber, checkOneOf } from './support/parameterChecks.js';
 import { describe } from './support/rendererSupport.js';
-import { FOLLOW_SURFACE_MODES, MATERIAL_DEFAULTS, MAX_SCALE_MM, METHODS, METHOD_TABLE, PIPELINE_DEFAULTS } from './options.js';
+import {
+  FOLLOW_SURFACE_MODES, MATERIAL_DEFAULTS, MAX_MULTISAMPLING, MAX_SCALE_MM, METHODS, METHOD_TABLE, PIPELINE_DEFAULTS,
+} from './options.js';
 import { estimatePixelsPerMm, planFrame } from './framePlan.js';
 import { LightDepthTarget } from './1-light-depth/LightDepthTarget.js';
 import { makeSubsurface as hookMaterial, getSubsurface, subsurfaceBindingOf } from './2-scene-split/subsurfaceMaterial.js';
@@ -63,6 +65,8 @@ export class SubsurfaceScattering extends Pass {
    * @param {boolean} [options.foreshortening=true] narrow the blur on surfaces seen at grazing angles
    * @param {number} [options.lightDepthSize=1024] light depth map resolution, pixels
    * @param {number} [options.type=HalfFloatType] HalfFloatType or FloatType light targets
+   * @param {number|'auto'} [options.multisampling='auto'] MSAA samples of the scene split (0: none);
+   *   'auto' takes the composer buffer's `samples`, so a composer made with samples: 4 antialiases
    */
   constructor(options = {}) {
     super();
@@ -123,6 +127,7 @@ export class SubsurfaceScattering extends Pass {
       depthTexture: this.scenePass.depthTexture,
     });
     this._size = { width: 1, height: 1 };
+    this.multisampling = o.multisampling;
     /** The hooks of the materials made subsurface through this pipeline, with their options. */
     this.materials = new Map();
     /** What the last frame ran: { samples, kernelPixels, blur } (see planFrame). */
@@ -140,8 +145,10 @@ export class SubsurfaceScattering extends Pass {
     if (this.lightDepth && this.transmittance && isShining(this.lightDepth.light, scene, camera)) {
       this._stage('lightDepth', () => this.lightDepth.render(renderer, scene));
     }
-    // 2. Scene split: the opaque scene into the multi-target (colour | diffuse | surface | depth).
+    // 2. Scene split: the opaque scene into the multi-target (colour | diffuse | surface | depth),
+    //    multisampled as asked (or as the composer's buffer is).
     Object.assign(this.scenePass, { scene, camera });
+    this._matchMultisampling(readBuffer);
     this._stage('scene', () => this._withClearColor(renderer, () => this.scenePass.render(renderer)));
     // 3. Plan: the kernel's reach on screen, the taps for 'auto', no blur under half a pixel.
     this.plan = this._planFrame();
@@ -161,6 +168,26 @@ export class SubsurfaceScattering extends Pass {
     } finally {
       renderer.autoClear = autoClear;
     }
+  }
+
+  /** MSAA samples of the scene split: 'auto' (the composer buffer's) or 0..MAX_MULTISAMPLING. */
+  get multisampling() {
+    return this._multisampling;
+  }
+
+  set multisampling(samples) {
+    if (samples !== 'auto') checkInteger('multisampling', samples, 0, MAX_MULTISAMPLING, "samples (or 'auto')");
+    this._multisampling = samples;
+  }
+
+  /** Gives the multi-target the samples asked for; the surface passes then read coverage-weighted inputs. */
+  _matchMultisampling(readBuffer) {
+    const samples = this._multisampling === 'auto' ? (readBuffer?.samples ?? 0) : this._multisampling;
+    const target = this.scenePass.renderTarget;
+    if (target.samples === samples) return;
+    target.samples = samples;
+    target.dispose(); // three rebuilds its buffers, multisampled or not, on the next use
+    for (const pass of this._surfacePasses()) pass.setMultisampled(samples > 0);
   }
 
   /** Runs `draw` with this pass's clearColor / clearAlpha, as RenderPass applies them. */
@@ -215,6 +242,11 @@ export class SubsurfaceScattering extends Pass {
     return plan;
   }
 
+  /** The scene's depth from the last frame (its opaque part), a DepthTexture, for passes of your own. */
+  get depthTexture() {
+    return this.scenePass.depthTexture;
+  }
+
   /** The stage passes in frame order (each usable on its own). */
   get passes() {
     return [this.scenePass, this.horizontalPass, this.verticalPass, this.composePass];
@@ -225,6 +257,7 @@ export class SubsurfaceScattering extends Pass {
     if (!this._densePass) {
       this._densePass = new DenseSubsurfacePass({ ...this._surfaceOptions(), profile: this._kernelOptions.profile, maxRadiusPx: DENSE_MAX_RADIUS_PX });
       this._densePass.setSize(this._size.width, this._size.height);
+      this._densePass.setMultisampled(this.scenePass.renderTarget.samples > 0);
     }
     return this._densePass;
   }

@@ -52,7 +52,11 @@ export const PIPELINE_DEFAULTS = Object.freeze({
   depthThresholdMm: 6, // close to the reference's follow-surface constant at its field of view
   foreshortening: true,
   lightDepthSize: 1024,
+  multisampling: 'auto', // MSAA samples of the scene split: 'auto' follows the composer's buffer
 });
+
+/** The most MSAA samples accepted (GPUs offer 4 or 8; three clamps to the renderer's maximum). */
+export const MAX_MULTISAMPLING = 16;
 
 /**
  * makeSubsurface(material, { ... }): every option's default. widthMm 1 is the profile at its

@@ -5,7 +5,8 @@
 // depth rules as the separable blur (shaders/3-blur/subsurfaceBlur.frag.glsl); without FORESHORTEN,
 // test/oracle/convolution.js's denseConvolutionOracle computes the same in float64.
 // Defines (src/3-blur/DenseSubsurfacePass.js): FOLLOW_SURFACE (FOLLOW_SURFACE_OFF, _DROP, _LERP),
-// FORESHORTEN (0 or 1), SSS_MAX_SLOPE.
+// FORESHORTEN (0 or 1), SSS_MAX_SLOPE, SSS_COVERAGE (0 or 1: MSAA-resolved inputs,
+// shaders/common/surfaceSample.glsl).
 //
 // Per pixel c: pixels per mm along x and y, s = shaders/common/screenScale.glsl's
 // widthWorld * (P0, P5) / (2 * depth) * (width, height). With FORESHORTEN, each axis as the blur does it: s is
@@ -31,6 +32,7 @@ uniform int maxRadiusPx;       // bound on the loops (the bench checks the radiu
 
 #include "common/finite.glsl"
 #include "common/screenScale.glsl"
+#include "common/surfaceSample.glsl"
 #include "common/surfaceSlope.glsl"
 #include "common/surfaceTap.glsl"
 #include "common/quadrantEnergy.glsl"
@@ -50,15 +52,20 @@ void addPixel( const in ivec2 pixel, const in ivec2 offset, const in vec3 energy
 
 void main() {
 	ivec2 pixel = ivec2( gl_FragCoord.xy );
-	vec2 surface = texelFetch( tSurface, pixel, 0 ).rg;
 	vec4 centreLight = texelFetch( tDiffuse, pixel, 0 );
 	vec3 centre = sssFinite( centreLight.rgb ) ? centreLight.rgb : vec3( 0.0 );
 	if ( ! ( centreLight.a > 0.0 ) ) {
 		gl_FragColor = vec4( centre, 0.0 ); // not subsurface: as it was, like the blur
 		return;
 	}
+	// The output keeps the input's coverage (1 without MSAA), as the blur does.
+	float coverage = centreLight.a;
+	vec2 surface = sssUncovered( texelFetch( tSurface, pixel, 0 ).rg, coverage );
+	#if SSS_COVERAGE == 1
+		centre /= coverage;
+	#endif
 	if ( ! ( surface.g > 0.0 ) ) {
-		gl_FragColor = vec4( centre, 1.0 ); // no width (strength 0): no scattering
+		gl_FragColor = vec4( centre * coverage, coverage ); // no width (widthScale 0): no scattering
 		return;
 	}
 
@@ -98,5 +105,5 @@ void main() {
 		}
 	}
 	vec3 result = sum / weightSum;
-	gl_FragColor = vec4( sssFinite( result ) ? result : centre, 1.0 );
+	gl_FragColor = vec4( ( sssFinite( result ) ? result : centre ) * coverage, coverage );
 }

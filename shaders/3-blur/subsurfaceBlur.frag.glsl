@@ -1,7 +1,8 @@
 // Stage 3: one direction of the separable, depth- and mask-aware subsurface blur.
 // Defines (src/3-blur/SubsurfaceBlurPass.js sets them): AXIS (0 = horizontal, 1 = vertical: an
 // index into vectors), SAMPLES (taps, odd), FOLLOW_SURFACE (FOLLOW_SURFACE_OFF, _DROP, _LERP),
-// FORESHORTEN (0 or 1: grazing-angle correction, below), SSS_MAX_SLOPE, SSS_MIN_KERNEL_PIXELS,
+// FORESHORTEN (0 or 1: grazing-angle correction, below), SSS_COVERAGE (0 or 1: the inputs were
+// resolved from MSAA, shaders/common/surfaceSample.glsl), SSS_MAX_SLOPE, SSS_MIN_KERNEL_PIXELS,
 // SSS_ENERGY_LEFT (the numbers of src/3-blur/samplingModel.js) and KERNEL_MODE:
 //   KERNEL_MODE_TAPS: fixed weights and offsets (computeKernel's reference or marginal kernel);
 //   KERNEL_MODE_FOOTPRINT: per pixel, the marginal kernel's footprints are snapped to the pixel grid (at
@@ -18,7 +19,8 @@
 //   1 - farness in 'drop' mode; its colour lerped to the centre's in 'lerp' mode), so no colour
 //   crosses a depth edge or the mask through filtering;
 // - the tap's kernel weight is scaled by the sum of its texel weights and each channel is
-//   renormalised by the weights used;
+//   renormalised by the weights used; with SSS_COVERAGE each texel also weighs its coverage, and
+//   the output is premultiplied by the centre's, like the input, so the compose adds it as is;
 // - grazing angles (FORESHORTEN, default on): the surface's depth slope along the axis, in world
 //   units per pixel, comes from the two neighbours (central difference; one-sided when a neighbour
 //   is off the mask or steeper than SSS_MAX_SLOPE; 0 when both are). A surface tilted by theta puts
@@ -39,6 +41,7 @@ uniform bool perspective;       // false for an orthographic camera: the step do
 
 #include "common/finite.glsl"
 #include "common/screenScale.glsl"
+#include "common/surfaceSample.glsl"
 #include "common/surfaceSlope.glsl"
 #include "common/surfaceTap.glsl"
 
@@ -78,7 +81,6 @@ void addTap( const in float offsetPx, const in vec3 weight, const in ivec2 pixel
 
 void main() {
 	ivec2 pixel = ivec2( gl_FragCoord.xy );
-	vec2 surface = texelFetch( tSurface, pixel, 0 ).rg;
 	vec4 centreLight = texelFetch( tDiffuse, pixel, 0 );
 	vec3 centre = sssFinite( centreLight.rgb ) ? centreLight.rgb : vec3( 0.0 );
 
@@ -87,6 +89,12 @@ void main() {
 		gl_FragColor = vec4( centre, 0.0 );
 		return;
 	}
+	// The output keeps the input's coverage (1 without MSAA): colour premultiplied by it, as read.
+	float coverage = centreLight.a;
+	vec2 surface = sssUncovered( texelFetch( tSurface, pixel, 0 ).rg, coverage );
+	#if SSS_COVERAGE == 1
+		centre /= coverage;
+	#endif
 
 	float stepPx = sssPixelsPerMm( surface )[ AXIS ];
 	float slope = 0.0; // depth change per pixel along the axis, world units
@@ -98,7 +106,7 @@ void main() {
 	#endif
 	// Below half a pixel the kernel cannot move light to another pixel: no work.
 	if ( ! ( stepPx * kernelRadiusMm >= SSS_MIN_KERNEL_PIXELS ) ) {
-		gl_FragColor = vec4( centre, 1.0 );
+		gl_FragColor = vec4( centre * coverage, coverage );
 		return;
 	}
 
@@ -141,5 +149,5 @@ void main() {
 	#if KERNEL_MODE == KERNEL_MODE_FOOTPRINT
 		result = mix( centre, result, strength ); // fixed-tap kernels have the strength built in
 	#endif
-	gl_FragColor = vec4( sssFinite( result ) ? result : centre, 1.0 );
+	gl_FragColor = vec4( ( sssFinite( result ) ? result : centre ) * coverage, coverage );
 }

@@ -5,7 +5,11 @@
 // threshold, 0, 1), so no light crosses a depth edge (Unreal, HDRP); in 'lerp' mode its colour
 // moves towards the centre's by the farness (Jimenez 2012). `expectedDepth` is the depth the
 // centre's plane predicts at the texel. Needs `tDiffuse`, `tSurface`, `depthFalloff` (1 / threshold)
-// and shaders/common/finite.glsl.
+// and shaders/common/finite.glsl and surfaceSample.glsl.
+//
+// With SSS_COVERAGE (the multi-target was resolved from MSAA) a texel's alpha is the fraction of
+// its samples on subsurface surfaces and its colour, depth and width are premultiplied by it: the
+// texel weighs its coverage, with its colour and depth divided back out.
 
 float sssTapWeight( const in ivec2 texel, const in float expectedDepth, const in vec3 centre, out vec3 colour ) {
 	vec4 light = texelFetch( tDiffuse, texel, 0 );
@@ -15,10 +19,14 @@ float sssTapWeight( const in ivec2 texel, const in float expectedDepth, const in
 		return 0.0;
 	}
 	float weight = 1.0;
+	#if SSS_COVERAGE == 1
+		colour /= light.a;
+		weight = light.a;
+	#endif
 	#if FOLLOW_SURFACE != FOLLOW_SURFACE_OFF
-		float farness = clamp( abs( texelFetch( tSurface, texel, 0 ).r - expectedDepth ) * depthFalloff, 0.0, 1.0 );
+		float farness = clamp( abs( sssUncovered( texelFetch( tSurface, texel, 0 ).rg, light.a ).r - expectedDepth ) * depthFalloff, 0.0, 1.0 );
 		#if FOLLOW_SURFACE == FOLLOW_SURFACE_DROP
-			weight = 1.0 - farness;
+			weight *= 1.0 - farness;
 		#else
 			colour = mix( colour, centre, farness );
 		#endif

@@ -11,7 +11,7 @@
 //      there: the mask is exact by construction.
 // Transparent materials come after the compose (renderTransparent): blended over the scattered
 // image, depth-tested against the scene, exactly as three blends them over its opaque pass.
-import { FloatType, HalfFloatType } from 'three';
+import { Color, FloatType, HalfFloatType } from 'three';
 import { Pass } from 'three/addons/postprocessing/Pass.js';
 import { getSubsurface } from './subsurfaceMaterial.js';
 import { ATTACHMENTS, DRAW_BUFFERS, DRAW_PHASES, createSubsurfaceTarget, drawingInto } from './subsurfaceTarget.js';
@@ -19,6 +19,7 @@ import { assertFloatRenderTargets, describe } from '../support/rendererSupport.j
 import { preservingRendererState } from '../support/rendererState.js';
 
 const ZERO = new Float32Array(4);
+const _clearColor = new Color();
 /** Transparent subsurface materials already warned about (once each). */
 const warnedTransparent = new WeakSet();
 
@@ -159,7 +160,10 @@ export class SubsurfaceScenePass extends Pass {
         if (this.lightDepth) this.lightDepth.render(renderer, scene);
         renderer.setRenderTarget(target);
         renderer.autoClear = false;
-        renderer.clear(true, true, true); // the colour attachment takes the clear colour, like RenderPass
+        // The colour attachment takes the clear colour, like RenderPass. Set again now: three
+        // converts it for the target current when it is set, and this one holds linear light.
+        renderer.setClearColor(renderer.getClearColor(_clearColor), renderer.getClearAlpha());
+        renderer.clear(true, true, true);
         gl.clearBufferfv(gl.COLOR, ATTACHMENTS.DIFFUSE, ZERO);
         gl.clearBufferfv(gl.COLOR, ATTACHMENTS.SURFACE, ZERO);
         // 1. opaque ordinary materials + subsurface depth; background and shadow maps.

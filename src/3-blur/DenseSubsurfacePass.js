@@ -7,6 +7,7 @@
 import denseGlsl from '../../shaders/3-blur/denseSubsurface.frag.glsl?raw';
 import finiteGlsl from '../../shaders/common/finite.glsl?raw';
 import screenScaleGlsl from '../../shaders/common/screenScale.glsl?raw';
+import surfaceSampleGlsl from '../../shaders/common/surfaceSample.glsl?raw';
 import surfaceSlopeGlsl from '../../shaders/common/surfaceSlope.glsl?raw';
 import surfaceTapGlsl from '../../shaders/common/surfaceTap.glsl?raw';
 import quadrantEnergyGlsl from '../../shaders/common/quadrantEnergy.glsl?raw';
@@ -19,6 +20,7 @@ import { SurfacePass } from './SurfacePass.js';
 const CHUNKS = Object.freeze({
   'common/finite.glsl': finiteGlsl,
   'common/screenScale.glsl': screenScaleGlsl,
+  'common/surfaceSample.glsl': surfaceSampleGlsl,
   'common/surfaceSlope.glsl': surfaceSlopeGlsl,
   'common/surfaceTap.glsl': surfaceTapGlsl,
   'common/quadrantEnergy.glsl': quadrantEnergyGlsl,

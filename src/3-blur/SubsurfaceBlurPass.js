@@ -6,6 +6,7 @@ import { Vector3, Vector4 } from 'three';
 import blurGlsl from '../../shaders/3-blur/subsurfaceBlur.frag.glsl?raw';
 import finiteGlsl from '../../shaders/common/finite.glsl?raw';
 import screenScaleGlsl from '../../shaders/common/screenScale.glsl?raw';
+import surfaceSampleGlsl from '../../shaders/common/surfaceSample.glsl?raw';
 import surfaceSlopeGlsl from '../../shaders/common/surfaceSlope.glsl?raw';
 import surfaceTapGlsl from '../../shaders/common/surfaceTap.glsl?raw';
 import profileLookupGlsl from '../../shaders/common/profileLookup.glsl?raw';
@@ -25,6 +26,7 @@ const DIRECTIONS = Object.freeze(['horizontal', 'vertical']);
 const CHUNKS = Object.freeze({
   'common/finite.glsl': finiteGlsl,
   'common/screenScale.glsl': screenScaleGlsl,
+  'common/surfaceSample.glsl': surfaceSampleGlsl,
   'common/surfaceSlope.glsl': surfaceSlopeGlsl,
   'common/surfaceTap.glsl': surfaceTapGlsl,
   'common/profileLookup.glsl': profileLookupGlsl,

@@ -46,7 +46,7 @@ export class SurfacePass extends ShaderPass {
     }
     super({
       name,
-      defines: { ...SAMPLING_DEFINES, ...enumDefines('FOLLOW_SURFACE', FOLLOW_SURFACE_MODES, 'drop'), FORESHORTEN: 1, ...defines },
+      defines: { ...SAMPLING_DEFINES, ...enumDefines('FOLLOW_SURFACE', FOLLOW_SURFACE_MODES, 'drop'), FORESHORTEN: 1, SSS_COVERAGE: 0, ...defines },
       uniforms: {
         tDiffuse: { value: null },
         tSurface: { value: null },
@@ -65,6 +65,7 @@ export class SurfacePass extends ShaderPass {
     this.diffuseTexture = diffuseTexture;
     this.setFollowSurface(followSurface, depthThresholdWorld);
     this.setForeshortening(foreshortening);
+    this.multisampled = false;
   }
 
   /** The light to blur: a texture, or null for the composer's read buffer. */
@@ -96,6 +97,16 @@ export class SurfacePass extends ShaderPass {
     if (typeof enabled !== 'boolean') throw new TypeError(`${this.material.name}: foreshortening must be a boolean, got ${describe(enabled)}`);
     setDefines(this.material, { FORESHORTEN: enabled ? 1 : 0 });
     this.foreshortening = enabled;
+  }
+
+  /**
+   * @param {boolean} multisampled the inputs were rendered with MSAA and resolved: their alpha is the
+   *   coverage, their colour, depth and width premultiplied by it (shaders/common/surfaceSample.glsl)
+   */
+  setMultisampled(multisampled) {
+    if (typeof multisampled !== 'boolean') throw new TypeError(`${this.material.name}: multisampled must be a boolean, got ${describe(multisampled)}`);
+    setDefines(this.material, { SSS_COVERAGE: multisampled ? 1 : 0 });
+    this.multisampled = multisampled;
   }
 
   /** @param {number} width device pixels @param {number} height device pixels */

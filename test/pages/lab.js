@@ -18,10 +18,10 @@ function createRenderer(width, height, parameters = {}) {
   return renderer;
 }
 
-/** A composer with half-float (or float) buffers and no OutputPass: linear HDR out. */
-function createComposer(renderer, { type = THREE.HalfFloatType } = {}) {
+/** A composer with half-float (or float) buffers (MSAA with `samples`) and no OutputPass: linear HDR out. */
+function createComposer(renderer, { type = THREE.HalfFloatType, samples = 0 } = {}) {
   const size = renderer.getDrawingBufferSize(new THREE.Vector2());
-  const composer = new EffectComposer(renderer, new THREE.WebGLRenderTarget(size.x, size.y, { type }));
+  const composer = new EffectComposer(renderer, new THREE.WebGLRenderTarget(size.x, size.y, { type, samples }));
   composer.renderToScreen = false;
   return composer;
 }
@@ -145,7 +145,7 @@ async function run(options) {
   const renderer = createRenderer(o.width, o.height);
   const built = SCENES[o.scene](o);
   const type = o.type === 'float' ? THREE.FloatType : THREE.HalfFloatType;
-  const composer = createComposer(renderer, { type });
+  const composer = createComposer(renderer, { type, samples: o.samples ?? 0 });
   const result = { width: o.width, height: o.height };
   let sss = null;
   if (o.pipeline === 'sss') {
@@ -192,5 +192,13 @@ async function run(options) {
   return result;
 }
 
-window.lab = { THREE, SSS, EffectComposer, RenderPass, ShaderPass, OutputPass, createRenderer, createComposer, read, dataTexture, run };
+/** Builds one of SCENES with the defaults above (aspect from width and height). */
+function buildScene(name, options = {}) {
+  const o = { ...DEFAULTS, ...options };
+  return SCENES[name]({ ...o, aspect: o.aspect ?? o.width / o.height });
+}
+
+window.lab = {
+  THREE, SSS, EffectComposer, RenderPass, ShaderPass, OutputPass, createRenderer, createComposer, read, dataTexture, run, buildScene, DEFAULTS,
+};
 window.testReady = true;
