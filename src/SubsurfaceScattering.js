@@ -7,7 +7,8 @@
 //
 // One frame, in order (render() below is this recipe; each stage lives in its own folder):
 //   1. light depth   src/1-light-depth/   linear depth seen from the light (transmittance only)
-//   2. scene split   src/2-scene-split/   the scene into the multi-target: colour | diffuse | surface
+//   2. scene split   src/2-scene-split/   the opaque scene into the multi-target:
+//                                         colour | diffuse | surface | depth
 //   3. plan          src/framePlan.js     the kernel's on-screen reach, 'auto' taps, blur skipped
 //                                         below half a pixel
 //   4. blur          src/3-blur/          horizontal then vertical over the diffuse light (or the
@@ -15,31 +16,24 @@
 //   5. compose       src/4-compose/       colour + scattered diffuse into the composer's buffer,
 //                                         with the scene's depth
 //   6. transparent   src/2-scene-split/   transparent objects blended over it, depth-tested
-import { Color, HalfFloatType, WebGLRenderTarget } from 'three';
+import { HalfFloatType } from 'three';
 import { Pass } from 'three/addons/postprocessing/Pass.js';
-import { computeKernel, kernelRadiusMm } from './profiles/kernel.js';
 import { getProfile } from './profiles/presets.js';
 import { ProfileLookup } from './profiles/ProfileLookup.js';
 import { checkInteger, checkNumber, checkOneOf } from './support/parameterChecks.js';
 import { describe } from './support/rendererSupport.js';
-import {
-  FOLLOW_SURFACE_MODES, MATERIAL_DEFAULTS, MAX_MULTISAMPLING, MAX_SCALE_MM, METHODS, METHOD_TABLE, PIPELINE_DEFAULTS,
-} from './options.js';
+import { FOLLOW_SURFACE_MODES, MAX_MULTISAMPLING, MAX_SCALE_MM, METHODS, PIPELINE_DEFAULTS } from './options.js';
 import { estimatePixelsPerMm, planFrame } from './framePlan.js';
 import { LightDepthTarget } from './1-light-depth/LightDepthTarget.js';
-import { makeSubsurface as hookMaterial, getSubsurface, subsurfaceBindingOf } from './2-scene-split/subsurfaceMaterial.js';
+import { PipelineMaterials } from './2-scene-split/PipelineMaterials.js';
 import { isShining } from './2-scene-split/transmittance.js';
 import { SubsurfaceScenePass } from './2-scene-split/SubsurfaceScenePass.js';
-import { SubsurfaceBlurPass } from './3-blur/SubsurfaceBlurPass.js';
-import { DenseSubsurfacePass } from './3-blur/DenseSubsurfacePass.js';
+import { BlurStage } from './3-blur/BlurStage.js';
 import { SubsurfaceComposePass } from './4-compose/SubsurfaceComposePass.js';
 import { materialOutputOf } from './4-compose/debugViews.js';
 
 export { METHODS, AUTO_SAMPLES, AUTO_REACH } from './options.js';
 export { MIN_KERNEL_PIXELS } from './3-blur/samplingModel.js';
-
-/** The dense reference's loop bound, pixels of radius (method 'dense' is for validation). */
-const DENSE_MAX_RADIUS_PX = 256;
 
 function checkDepthThreshold(depthThresholdMm) {
   return checkNumber('depthThresholdMm', depthThresholdMm, { min: 0, minExclusive: true, max: MAX_SCALE_MM, unit: 'mm' });
@@ -96,42 +90,37 @@ export class SubsurfaceScattering extends Pass {
     this.worldUnitInMm = o.worldUnitInMm;
     /** false turns the blur off: the compose adds the unblurred diffuse light (transmittance stays). */
     this.scattering = true;
-    this.autoSamples = o.samples === 'auto';
-    this.method = o.method;
-    this._kernelOptions = { profile: getProfile(o.profile), samples: this.autoSamples ? 17 : o.samples, strength: o.strength, falloff: o.falloff };
-    this._kernels = new Map(); // computed kernels by their arguments: 'auto' switches between a few
-    this.kernel = this._computeKernel(this._kernelOptions, o.method);
-    this.profileLookup = new ProfileLookup(this._kernelOptions.profile);
+    this.profileLookup = new ProfileLookup(getProfile(o.profile));
     this.lightDepth = light ? new LightDepthTarget(light, { size: o.lightDepthSize }) : null;
     this.transmittance = light !== null;
-    this.followSurface = o.followSurface;
     this.depthThresholdMm = o.depthThresholdMm;
-    this.foreshortening = o.foreshortening;
+    this.multisampling = o.multisampling;
 
-    // Stage 2, 3 and 4 passes, and the two targets the blur writes.
+    // Stages 2, 3 and 4.
     this.scenePass = new SubsurfaceScenePass(scene, camera, { type: o.type, owner: this });
-    const surface = this._surfaceOptions();
-    const blur = { ...surface, kernel: this.kernel, mode: METHOD_TABLE[o.method].blur === 'footprint' ? 'footprint' : 'taps', profileLookup: this.profileLookup, strength: o.strength ?? [1, 1, 1] };
-    this._blurTarget = new WebGLRenderTarget(1, 1, { type: o.type, depthBuffer: false });
-    this.scatteredTarget = new WebGLRenderTarget(1, 1, { type: o.type, depthBuffer: false });
-    this._blurTarget.texture.name = 'subsurface.horizontal';
-    this.scatteredTarget.texture.name = 'subsurface.scattered';
-    this.horizontalPass = new SubsurfaceBlurPass({ ...blur, direction: 'horizontal', diffuseTexture: this.scenePass.diffuseTexture });
-    this.verticalPass = new SubsurfaceBlurPass({ ...blur, direction: 'vertical', diffuseTexture: this._blurTarget.texture });
-    this._densePass = null; // method 'dense', built when first asked for
+    this.blur = new BlurStage({
+      type: o.type, profileLookup: this.profileLookup, method: o.method, samples: o.samples, strength: o.strength, falloff: o.falloff,
+      surface: {
+        camera, surfaceTexture: this.scenePass.surfaceTexture, diffuseTexture: this.scenePass.diffuseTexture,
+        followSurface: o.followSurface, depthThresholdWorld: o.depthThresholdMm / o.worldUnitInMm, foreshortening: o.foreshortening,
+      },
+    });
     this.composePass = new SubsurfaceComposePass({
       colorTexture: this.scenePass.colorTexture,
       surfaceTexture: this.scenePass.surfaceTexture,
       diffuseTexture: this.scenePass.diffuseTexture,
-      scatteredTexture: this.scatteredTarget.texture,
+      scatteredTexture: this.blur.scatteredTarget.texture,
       depthTexture: this.scenePass.depthTexture,
     });
-    this._size = { width: 1, height: 1 };
-    this.multisampling = o.multisampling;
-    /** The hooks of the materials made subsurface through this pipeline, with their options. */
-    this.materials = new Map();
+    /** The materials made subsurface through this pipeline (see makeSubsurface). */
+    this.subsurfaceMaterials = new PipelineMaterials(this, () => ({
+      worldUnitInMm: this.worldUnitInMm,
+      lightDepth: this.transmittance ? this.lightDepth : null,
+      lookup: this.profileLookup,
+      debugOutput: materialOutputOf(this.composePass.debugView),
+    }));
     /** What the last frame ran: { samples, kernelPixels, blur } (see planFrame). */
-    this.plan = { samples: this._kernelOptions.samples, kernelPixels: 0, blur: false };
+    this.plan = { samples: this.blur.kernelOptions.samples, kernelPixels: 0, blur: false };
     /** The largest on-screen kernel radius of the last frame, pixels (plan.kernelPixels). */
     this.kernelPixels = 0;
     /** Optional { begin(stage), end(stage) } around each stage (dev/gpuTimer.js measures with it). */
@@ -147,16 +136,17 @@ export class SubsurfaceScattering extends Pass {
     }
     // 2. Scene split: the opaque scene into the multi-target (colour | diffuse | surface | depth),
     //    multisampled as asked (or as the composer's buffer is).
-    Object.assign(this.scenePass, { scene, camera });
-    this._matchMultisampling(readBuffer);
-    this._stage('scene', () => this._withClearColor(renderer, () => this.scenePass.render(renderer)));
+    Object.assign(this.scenePass, { scene, camera, clearColor: this.clearColor, clearAlpha: this.clearAlpha });
+    const samples = this._multisampling === 'auto' ? (readBuffer?.samples ?? 0) : this._multisampling;
+    if (this.scenePass.setSamples(samples)) this.blur.setMultisampled(samples > 0);
+    this._stage('scene', () => this.scenePass.render(renderer));
     // 3. Plan: the kernel's reach on screen, the taps for 'auto', no blur under half a pixel.
     this.plan = this._planFrame();
     // 4. Blur: the diffuse light, horizontally then vertically (or densely), into scatteredTarget.
     if (this.plan.blur) this.renderScattering(renderer);
     // 5. Compose: colour + the scattered (without blur: the unblurred) diffuse light, and the
     //    scene's depth, into the target: every pixel (clear), or over what it holds (clear false).
-    this.composePass.scatteredTexture = this.plan.blur ? this.scatteredTarget.texture : this.scenePass.diffuseTexture;
+    this.composePass.scatteredTexture = this.plan.blur ? this.blur.scatteredTarget.texture : this.scenePass.diffuseTexture;
     this.composePass.renderToScreen = this.renderToScreen;
     this.composePass.setClear(this.clear, this.clearDepth);
     const autoClear = renderer.autoClear;
@@ -170,48 +160,9 @@ export class SubsurfaceScattering extends Pass {
     }
   }
 
-  /** MSAA samples of the scene split: 'auto' (the composer buffer's) or 0..MAX_MULTISAMPLING. */
-  get multisampling() {
-    return this._multisampling;
-  }
-
-  set multisampling(samples) {
-    if (samples !== 'auto') checkInteger('multisampling', samples, 0, MAX_MULTISAMPLING, "samples (or 'auto')");
-    this._multisampling = samples;
-  }
-
-  /** Gives the multi-target the samples asked for; the surface passes then read coverage-weighted inputs. */
-  _matchMultisampling(readBuffer) {
-    const samples = this._multisampling === 'auto' ? (readBuffer?.samples ?? 0) : this._multisampling;
-    const target = this.scenePass.renderTarget;
-    if (target.samples === samples) return;
-    target.samples = samples;
-    target.dispose(); // three rebuilds its buffers, multisampled or not, on the next use
-    for (const pass of this._surfacePasses()) pass.setMultisampled(samples > 0);
-  }
-
-  /** Runs `draw` with this pass's clearColor / clearAlpha, as RenderPass applies them. */
-  _withClearColor(renderer, draw) {
-    if (this.clearColor === null && this.clearAlpha === null) return draw();
-    const colour = renderer.getClearColor(new Color());
-    const alpha = renderer.getClearAlpha();
-    try {
-      renderer.setClearColor(this.clearColor ?? colour, this.clearAlpha ?? alpha);
-      return draw();
-    } finally {
-      renderer.setClearColor(colour, alpha);
-    }
-  }
-
   /** Stage 4 alone over the last scene split, into scatteredTarget (the bench re-runs it to time it). */
   renderScattering(renderer) {
-    for (const pass of this._surfacePasses()) pass.camera = this.camera;
-    if (METHOD_TABLE[this.method].blur === 'dense') {
-      this._stage('dense', () => this.densePass.render(renderer, this.scatteredTarget, null));
-    } else {
-      this._stage('blurH', () => this.horizontalPass.render(renderer, this._blurTarget, null));
-      this._stage('blurV', () => this.verticalPass.render(renderer, this.scatteredTarget, null));
-    }
+    this.blur.render(renderer, this.camera, (stage, draw) => this._stage(stage, draw));
   }
 
   _stage(name, draw) {
@@ -226,20 +177,27 @@ export class SubsurfaceScattering extends Pass {
   _planFrame() {
     const { width, height } = this.scenePass.renderTarget;
     const pixelsPerMm = estimatePixelsPerMm(this.scenePass.subsurfaceMeshes, this.camera, { width, height },
-      (m) => (this.scenePass.categoryOf(m) === 'subsurface' ? this._widthWorld(m) : undefined));
-    const blurMode = METHOD_TABLE[this.method].blur;
+      (m) => (this.scenePass.categoryOf(m) === 'subsurface' ? this.subsurfaceMaterials.widthWorldOf(m) : undefined));
     const plan = planFrame({
       scattering: this.scattering,
       pixelsPerMm,
-      samples: this.autoSamples ? 'auto' : this._kernelOptions.samples,
+      samples: this.blur.samples,
       autoRadiusMm: this.profileLookup.marginalRadiusMm,
-      radiusMmOf: (samples) => (blurMode === 'dense' ? this.densePass.radiusMm
-        : blurMode === 'footprint' ? this.profileLookup.marginalRadiusMm
-          : kernelRadiusMm(this._computeKernel({ ...this._kernelOptions, samples }, this.method))),
+      radiusMmOf: (samples) => this.blur.radiusMmOf(samples),
     });
-    if (plan.samples !== this._kernelOptions.samples) this._applyKernel({ samples: plan.samples });
+    if (plan.samples !== this.blur.kernelOptions.samples) this.blur.applyKernel({ samples: plan.samples });
     this.kernelPixels = plan.kernelPixels;
     return plan;
+  }
+
+  /** MSAA samples of the scene split: 'auto' (the composer buffer's) or 0..MAX_MULTISAMPLING. */
+  get multisampling() {
+    return this._multisampling;
+  }
+
+  set multisampling(samples) {
+    if (samples !== 'auto') checkInteger('multisampling', samples, 0, MAX_MULTISAMPLING, "samples (or 'auto')");
+    this._multisampling = samples;
   }
 
   /** The scene's depth from the last frame (its opaque part), a DepthTexture, for passes of your own. */
@@ -249,30 +207,23 @@ export class SubsurfaceScattering extends Pass {
 
   /** The stage passes in frame order (each usable on its own). */
   get passes() {
-    return [this.scenePass, this.horizontalPass, this.verticalPass, this.composePass];
+    return [this.scenePass, this.blur.horizontalPass, this.blur.verticalPass, this.composePass];
   }
 
+  // Stage 3's parts and settings (see BlurStage).
+  get horizontalPass() { return this.blur.horizontalPass; }
+  get verticalPass() { return this.blur.verticalPass; }
   /** The dense 2D reference (method 'dense'), built on first use. */
-  get densePass() {
-    if (!this._densePass) {
-      this._densePass = new DenseSubsurfacePass({ ...this._surfaceOptions(), profile: this._kernelOptions.profile, maxRadiusPx: DENSE_MAX_RADIUS_PX });
-      this._densePass.setSize(this._size.width, this._size.height);
-      this._densePass.setMultisampled(this.scenePass.renderTarget.samples > 0);
-    }
-    return this._densePass;
-  }
-
-  _surfaceOptions() {
-    return {
-      camera: this.camera, surfaceTexture: this.scenePass.surfaceTexture, diffuseTexture: this.scenePass.diffuseTexture,
-      followSurface: this.followSurface, depthThresholdWorld: this.depthThresholdMm / this.worldUnitInMm, foreshortening: this.foreshortening,
-    };
-  }
-
-  /** The passes following the surface (both blurs, and the dense reference once built). */
-  _surfacePasses() {
-    return [this.horizontalPass, this.verticalPass, ...(this._densePass ? [this._densePass] : [])];
-  }
+  get densePass() { return this.blur.densePass; }
+  /** The last frame's scattered diffuse light. */
+  get scatteredTarget() { return this.blur.scatteredTarget; }
+  get kernel() { return this.blur.kernel; }
+  get method() { return this.blur.method; }
+  get autoSamples() { return this.blur.autoSamples; }
+  get followSurface() { return this.blur.horizontalPass.followSurface; }
+  get foreshortening() { return this.blur.horizontalPass.foreshortening; }
+  /** The kernel's current settings: { profile, samples, strength, falloff }, plus method. */
+  get kernelOptions() { return { ...this.blur.kernelOptions, method: this.method }; }
 
   /**
    * Adds this pass to `composer` (in place of a RenderPass); the same as composer.addPass(sss).
@@ -287,28 +238,18 @@ export class SubsurfaceScattering extends Pass {
   }
 
   /**
-   * Makes `material` scatter with this pipeline's profile, scale and light (see makeSubsurface).
+   * Makes `material` scatter with this pipeline's profile, scale and light (see makeSubsurface):
+   * settings of this pipeline's own, so another pipeline can draw the same material with its own.
    * @param {import('three').MeshStandardMaterial} material
    * @param {{ widthMm?: number, widthScale?: number, transmittance?: boolean, translucency?: number, shrinkMm?: number }} [options]
    */
   makeSubsurface(material, options = {}) {
-    const { strength, ...rest } = options; // `strength`: widthScale's old name
-    const o = { ...MATERIAL_DEFAULTS, ...this.materials.get(material)?.options, ...rest };
-    if (strength !== undefined) o.widthScale = checkNumber('strength', strength, { min: 0, max: 1 });
-    // Checked here too, so a later setTransmittance(true) cannot fail half-way.
-    checkNumber('translucency', o.translucency, { min: 0, max: 1, maxExclusive: true });
-    checkNumber('shrinkMm', o.shrinkMm, { min: 0, max: 1000, unit: 'mm' });
-    const hook = hookMaterial(material, {
-      widthMm: o.widthMm,
-      widthScale: o.widthScale,
-      worldUnitInMm: this.worldUnitInMm,
-      transmittance: o.transmittance && this.transmittance && this.lightDepth
-        ? { lightDepth: this.lightDepth, lookup: this.profileLookup, translucency: o.translucency, shrinkMm: o.shrinkMm }
-        : null,
-    }, this);
-    hook.debugOutput = materialOutputOf(this.composePass.debugView);
-    this.materials.set(material, { hook, options: o });
-    return hook;
+    return this.subsurfaceMaterials.bind(material, options);
+  }
+
+  /** The materials made subsurface through this pipeline, each with its binding and options. */
+  get materials() {
+    return this.subsurfaceMaterials.entries;
   }
 
   /** Turns transmittance on or off for every material of this pipeline (a uniform: no recompile). */
@@ -316,7 +257,7 @@ export class SubsurfaceScattering extends Pass {
     if (typeof enabled !== 'boolean') throw new TypeError(`setTransmittance: enabled must be a boolean, got ${describe(enabled)}`);
     if (enabled && !this.lightDepth) throw new Error('setTransmittance: this pipeline has no light (pass `light` to the constructor)');
     this.transmittance = enabled;
-    for (const material of this.materials.keys()) this.makeSubsurface(material);
+    this.subsurfaceMaterials.rebindAll();
   }
 
   /**
@@ -325,7 +266,7 @@ export class SubsurfaceScattering extends Pass {
    */
   setDebugView(view, options) {
     this.composePass.setDebugView(view, options);
-    for (const { hook } of this.materials.values()) hook.debugOutput = materialOutputOf(view);
+    this.subsurfaceMaterials.setDebugOutput(materialOutputOf(view));
   }
 
   /** Fraction of the width, from the left, shown without scattering (0..1; 0 = none). */
@@ -333,52 +274,13 @@ export class SubsurfaceScattering extends Pass {
     this.composePass.setSplit(fraction);
   }
 
-  /** computeKernel for `method` (see METHOD_TABLE: 'footprint' builds on the marginal kernel), cached. */
-  _computeKernel(options, method) {
-    const args = { ...options, method: METHOD_TABLE[method].kernel };
-    const key = JSON.stringify([args.profile.name, args.method, args.samples, args.strength, args.falloff]);
-    if (!this._kernels.has(key)) this._kernels.set(key, computeKernel(args));
-    return this._kernels.get(key);
-  }
-
   /**
    * Rebuilds the kernel (and the profile tables when the profile changes). Changing the method
    * between 'footprint' and the fixed-tap ones recompiles the blur shaders once.
    * @param {{ profile?: string|object, method?: string, samples?: number|'auto', strength?: number[], falloff?: number[] }} options
    */
-  setKernel({ method = this.method, samples, ...options } = {}) {
-    checkOneOf('method', method, METHODS);
-    if (samples === 'auto') this.autoSamples = true;
-    else if (samples !== undefined) {
-      this.autoSamples = false;
-      options.samples = samples;
-    }
-    this._applyKernel(options, method);
-  }
-
-  _applyKernel(options, method = this.method) {
-    const next = { ...this._kernelOptions, ...options };
-    if (options.profile !== undefined) next.profile = getProfile(options.profile);
-    const kernel = this._computeKernel(next, method);
-    const profileChanged = next.profile !== this.profileLookup.profile;
-    this._kernelOptions = next;
-    this.method = method;
-    this.kernel = kernel;
-    if (profileChanged) {
-      this.profileLookup.setProfile(next.profile); // tens of ms: only on a change
-      this._densePass?.setProfile(next.profile);
-    }
-    const mode = METHOD_TABLE[method].blur === 'footprint' ? 'footprint' : 'taps';
-    for (const pass of [this.horizontalPass, this.verticalPass]) {
-      pass.setMode(mode);
-      pass.setKernel(kernel);
-      pass.setStrength(next.strength ?? [1, 1, 1]);
-    }
-  }
-
-  /** The kernel's current settings: { profile, samples, strength, falloff }, plus method. */
-  get kernelOptions() {
-    return { ...this._kernelOptions, method: this.method };
+  setKernel(options) {
+    this.blur.setKernel(options);
   }
 
   /**
@@ -387,38 +289,28 @@ export class SubsurfaceScattering extends Pass {
    */
   setFollowSurface(mode, depthThresholdMm = this.depthThresholdMm) {
     checkDepthThreshold(depthThresholdMm);
-    for (const pass of this._surfacePasses()) pass.setFollowSurface(mode, depthThresholdMm / this.worldUnitInMm);
-    this.followSurface = mode;
+    this.blur.setFollowSurface(mode, depthThresholdMm / this.worldUnitInMm);
     this.depthThresholdMm = depthThresholdMm;
   }
 
   /** @param {boolean} enabled narrow the blur on surfaces seen at grazing angles */
   setForeshortening(enabled) {
-    for (const pass of this._surfacePasses()) pass.setForeshortening(enabled);
-    this.foreshortening = enabled;
-  }
-
-  /** World units per profile millimetre `material` writes when this pipeline draws it (width × widthScale). */
-  _widthWorld(material) {
-    return (subsurfaceBindingOf(material, this) ?? getSubsurface(material)).widthWorld;
+    this.blur.setForeshortening(enabled);
   }
 
   /** @param {number} width device pixels @param {number} height device pixels */
   setSize(width, height) {
-    this._size = { width, height };
-    for (const pass of [...this.passes, ...(this._densePass ? [this._densePass] : [])]) pass.setSize(width, height);
-    this._blurTarget.setSize(width, height);
-    this.scatteredTarget.setSize(width, height);
+    this.scenePass.setSize(width, height);
+    this.blur.setSize(width, height);
+    this.composePass.setSize(width, height);
   }
 
-  /** Frees every target, material, texture and quad the pipeline created, and unhooks its materials. */
+  /** Frees every target, material, texture and quad the pipeline created, and unbinds its materials. */
   dispose() {
-    for (const { hook } of this.materials.values()) hook.dispose();
-    this.materials.clear();
-    for (const pass of this.passes) pass.dispose();
-    this._densePass?.dispose();
-    this._blurTarget.dispose();
-    this.scatteredTarget.dispose();
+    this.subsurfaceMaterials.dispose();
+    this.scenePass.dispose();
+    this.blur.dispose();
+    this.composePass.dispose();
     this.lightDepth?.dispose();
     this.profileLookup.dispose();
   }

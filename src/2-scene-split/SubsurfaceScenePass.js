@@ -53,6 +53,9 @@ export class SubsurfaceScenePass extends Pass {
     this.camera = camera;
     this.lightDepth = lightDepth;
     this.owner = owner;
+    /** As RenderPass: the clear colour and alpha of the colour attachment (null: the renderer's). */
+    this.clearColor = null;
+    this.clearAlpha = null;
     this.needsSwap = false; // writes its own targets, not the composer's
     /** Meshes with a subsurface material seen in the last render (for the on-screen width estimate). */
     this.subsurfaceMeshes = [];
@@ -78,6 +81,19 @@ export class SubsurfaceScenePass extends Pass {
   /** @param {number} width device pixels @param {number} height device pixels */
   setSize(width, height) {
     this.renderTarget.setSize(width, height);
+  }
+
+  /**
+   * MSAA samples of the multi-target (0: none); three resolves it by averaging, so the blur must
+   * then read its inputs as coverage-weighted (SurfacePass.setMultisampled).
+   * @param {number} samples
+   * @returns {boolean} whether the count changed
+   */
+  setSamples(samples) {
+    if (this.renderTarget.samples === samples) return false;
+    this.renderTarget.samples = samples;
+    this.renderTarget.dispose(); // three rebuilds its buffers, multisampled or not, on the next use
+    return true;
   }
 
   /** 'subsurface', 'opaque' or 'transparent' for a material seen in the last render, else undefined. */
@@ -160,9 +176,9 @@ export class SubsurfaceScenePass extends Pass {
         if (this.lightDepth) this.lightDepth.render(renderer, scene);
         renderer.setRenderTarget(target);
         renderer.autoClear = false;
-        // The colour attachment takes the clear colour, like RenderPass. Set again now: three
-        // converts it for the target current when it is set, and this one holds linear light.
-        renderer.setClearColor(renderer.getClearColor(_clearColor), renderer.getClearAlpha());
+        // The colour attachment takes the clear colour, like RenderPass. Set now, with the target
+        // bound: three converts it for the target current when it is set, and this one is linear.
+        renderer.setClearColor(this.clearColor ?? renderer.getClearColor(_clearColor), this.clearAlpha ?? renderer.getClearAlpha());
         renderer.clear(true, true, true);
         gl.clearBufferfv(gl.COLOR, ATTACHMENTS.DIFFUSE, ZERO);
         gl.clearBufferfv(gl.COLOR, ATTACHMENTS.SURFACE, ZERO);

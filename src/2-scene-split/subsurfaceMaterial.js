@@ -49,6 +49,13 @@ const defines = Object.freeze({
 /** material → its patch: { uniforms, bindings: Map<owner, binding>, restore() } */
 const patches = new WeakMap();
 
+/** The latest binding of a patch (Map order: the last one set), without allocating. */
+function latest(bindings) {
+  let last;
+  for (const binding of bindings.values()) last = binding;
+  return last;
+}
+
 /** Replaces `needle` in `source`, failing loudly if three's shader no longer has it. */
 function inject(source, needle, replacement) {
   if (!source.includes(needle)) {
@@ -102,7 +109,7 @@ function patch(material) {
     const draw = currentDraw(renderer.getRenderTarget());
     uniforms.sssSplit.value = draw.phase === DRAW_PHASES.SPLIT;
     uniforms.sssDepthOnly.value = draw.phase === DRAW_PHASES.DEPTH;
-    const binding = bindings.get(draw.owner) ?? [...bindings.values()].pop();
+    const binding = bindings.get(draw.owner) ?? latest(bindings);
     if (binding) applyBinding(uniforms, binding, scene, camera);
   };
 
@@ -203,7 +210,7 @@ export function makeSubsurface(material, options = {}, owner = STANDALONE) {
       checkNumber('worldUnitInMm', o.worldUnitInMm, { min: 0, minExclusive: true, max: 1e9, unit: 'mm' });
       this.transmittance = o.transmittance ? transmittanceSettings({ ...o.transmittance, worldUnitInMm: o.worldUnitInMm, widthMm: o.widthMm }) : null;
       this.options = o;
-      if ([...state.bindings.values()].pop() === this) applyBinding(state.uniforms, this); // the uniforms show the latest settings
+      if (latest(state.bindings) === this) applyBinding(state.uniforms, this); // the uniforms show the latest settings
     },
     /** Unbinds these settings; the material is restored once no binding is left. Idempotent. */
     dispose() {
@@ -224,7 +231,7 @@ export function makeSubsurface(material, options = {}, owner = STANDALONE) {
  */
 export function getSubsurface(material) {
   const state = patches.get(material);
-  return state ? [...state.bindings.values()].pop() : undefined;
+  return state ? latest(state.bindings) : undefined;
 }
 
 /**

@@ -1,0 +1,65 @@
+// The materials one pipeline made subsurface, with the options it was given for each: what
+// SubsurfaceScattering.makeSubsurface binds (the material hook keeps one binding per pipeline),
+// rebinds when transmittance is switched, points at a debug output, and unbinds on dispose.
+import { checkNumber } from '../support/parameterChecks.js';
+import { MATERIAL_DEFAULTS } from '../options.js';
+import { makeSubsurface, getSubsurface, subsurfaceBindingOf } from './subsurfaceMaterial.js';
+
+export class PipelineMaterials {
+  /**
+   * @param {object} owner the pipeline whose settings the bindings are
+   * @param {() => { worldUnitInMm: number, lightDepth: object|null, lookup: object, debugOutput: string }} settings
+   *   the pipeline's current scale, light depth (null: no transmittance), profile tables and debug output
+   */
+  constructor(owner, settings) {
+    this.owner = owner;
+    this.settings = settings;
+    /** material → { hook: its binding, options } */
+    this.entries = new Map();
+  }
+
+  /**
+   * Binds (or rebinds) `material` with `options` on top of those it had.
+   * @param {import('three').MeshStandardMaterial} material
+   * @param {{ widthMm?: number, widthScale?: number, strength?: number, transmittance?: boolean, translucency?: number, shrinkMm?: number }} options
+   */
+  bind(material, options = {}) {
+    const { strength, ...rest } = options; // `strength`: widthScale's old name
+    const o = { ...MATERIAL_DEFAULTS, ...this.entries.get(material)?.options, ...rest };
+    if (strength !== undefined) o.widthScale = checkNumber('strength', strength, { min: 0, max: 1 });
+    // Checked here too, so a later switch of transmittance cannot fail half-way.
+    checkNumber('translucency', o.translucency, { min: 0, max: 1, maxExclusive: true });
+    checkNumber('shrinkMm', o.shrinkMm, { min: 0, max: 1000, unit: 'mm' });
+    const { worldUnitInMm, lightDepth, lookup, debugOutput } = this.settings();
+    const hook = makeSubsurface(material, {
+      widthMm: o.widthMm,
+      widthScale: o.widthScale,
+      worldUnitInMm,
+      transmittance: o.transmittance && lightDepth ? { lightDepth, lookup, translucency: o.translucency, shrinkMm: o.shrinkMm } : null,
+    }, this.owner);
+    hook.debugOutput = debugOutput;
+    this.entries.set(material, { hook, options: o });
+    return hook;
+  }
+
+  /** Rebinds every material with the pipeline's current settings. */
+  rebindAll() {
+    for (const material of this.entries.keys()) this.bind(material);
+  }
+
+  /** @param {string} output one of the material hook's MATERIAL_OUTPUTS */
+  setDebugOutput(output) {
+    for (const { hook } of this.entries.values()) hook.debugOutput = output;
+  }
+
+  /** World units per profile millimetre `material` writes when this pipeline draws it (width × widthScale). */
+  widthWorldOf(material) {
+    return (subsurfaceBindingOf(material, this.owner) ?? getSubsurface(material)).widthWorld;
+  }
+
+  /** Unbinds every material (each is restored once no pipeline has it). */
+  dispose() {
+    for (const { hook } of this.entries.values()) hook.dispose();
+    this.entries.clear();
+  }
+}

@@ -1,0 +1,171 @@
+// Stage 3 as the orchestrator runs it: the kernel settings (method, taps, profile, strength,
+// falloff), the two separable passes and the dense reference they can be swapped for, and the two
+// targets they write (the horizontal pass's output, then the scattered light). One object, so
+// the orchestrator's frame calls `blur.render()` and its setters forward here.
+import { WebGLRenderTarget } from 'three';
+import { computeKernel, kernelRadiusMm } from '../profiles/kernel.js';
+import { getProfile } from '../profiles/presets.js';
+import { checkOneOf } from '../support/parameterChecks.js';
+import { METHODS, METHOD_TABLE } from '../options.js';
+import { SubsurfaceBlurPass } from './SubsurfaceBlurPass.js';
+import { DenseSubsurfacePass } from './DenseSubsurfacePass.js';
+
+/** The dense reference's loop bound, pixels of radius (method 'dense' is for validation). */
+const DENSE_MAX_RADIUS_PX = 256;
+
+/** The separable passes' mode for a method: footprints snapped to pixels, or fixed taps. */
+const blurModeOf = (method) => (METHOD_TABLE[method].blur === 'footprint' ? 'footprint' : 'taps');
+
+export class BlurStage {
+  /**
+   * @param {object} options
+   * @param {number} options.type HalfFloatType or FloatType for the two targets
+   * @param {import('../profiles/ProfileLookup.js').ProfileLookup} options.profileLookup the pipeline's
+   *   profile tables (refilled here when the profile changes)
+   * @param {string} options.method one of METHODS
+   * @param {number|'auto'} options.samples
+   * @param {number[]} [options.strength]
+   * @param {number[]} [options.falloff]
+   * @param {object} options.surface SurfacePass options (camera, surface and diffuse textures,
+   *   followSurface, depthThresholdWorld, foreshortening)
+   */
+  constructor({ type, profileLookup, method, samples, strength, falloff, surface }) {
+    checkOneOf('method', method, METHODS);
+    this.profileLookup = profileLookup;
+    this.method = method;
+    this.autoSamples = samples === 'auto';
+    this.kernelOptions = { profile: profileLookup.profile, samples: this.autoSamples ? 17 : samples, strength, falloff };
+    this._kernels = new Map(); // computed kernels by their arguments: 'auto' switches between a few
+    this.kernel = this._computeKernel(this.kernelOptions, method);
+    this._surface = surface;
+    this._blurTarget = new WebGLRenderTarget(1, 1, { type, depthBuffer: false });
+    this._blurTarget.texture.name = 'subsurface.horizontal';
+    /** The scattered diffuse light, premultiplied by its coverage like the multi-target's. */
+    this.scatteredTarget = new WebGLRenderTarget(1, 1, { type, depthBuffer: false });
+    this.scatteredTarget.texture.name = 'subsurface.scattered';
+    const blur = { ...surface, kernel: this.kernel, mode: blurModeOf(method), profileLookup, strength: strength ?? [1, 1, 1] };
+    this.horizontalPass = new SubsurfaceBlurPass({ ...blur, direction: 'horizontal' });
+    this.verticalPass = new SubsurfaceBlurPass({ ...blur, direction: 'vertical', diffuseTexture: this._blurTarget.texture });
+    this._densePass = null; // built when first asked for
+    this._size = { width: 1, height: 1 };
+    this._multisampled = false;
+  }
+
+  /** The dense 2D reference (method 'dense'), built on first use. */
+  get densePass() {
+    if (!this._densePass) {
+      this._densePass = new DenseSubsurfacePass({ ...this._surface, profile: this.kernelOptions.profile, maxRadiusPx: DENSE_MAX_RADIUS_PX });
+      this._densePass.setSize(this._size.width, this._size.height);
+      this._densePass.setMultisampled(this._multisampled);
+    }
+    return this._densePass;
+  }
+
+  /** The passes following the surface (both blurs, and the dense reference once built). */
+  get surfacePasses() {
+    return [this.horizontalPass, this.verticalPass, ...(this._densePass ? [this._densePass] : [])];
+  }
+
+  /** The taps asked for: a count, or 'auto'. */
+  get samples() {
+    return this.autoSamples ? 'auto' : this.kernelOptions.samples;
+  }
+
+  /** The blur's reach with `samples` taps, mm: below half a pixel of it nothing moves. */
+  radiusMmOf(samples) {
+    const blur = METHOD_TABLE[this.method].blur;
+    if (blur === 'dense') return this.densePass.radiusMm;
+    if (blur === 'footprint') return this.profileLookup.marginalRadiusMm;
+    return kernelRadiusMm(this._computeKernel({ ...this.kernelOptions, samples }, this.method));
+  }
+
+  /**
+   * Stage 3 over the multi-target, into scatteredTarget.
+   * @param {import('three').WebGLRenderer} renderer
+   * @param {import('three').Camera} camera the camera of the scene split
+   * @param {(stage: string, draw: () => void) => void} timed runs each pass, timed as `stage`
+   */
+  render(renderer, camera, timed) {
+    for (const pass of this.surfacePasses) pass.camera = camera;
+    if (METHOD_TABLE[this.method].blur === 'dense') {
+      timed('dense', () => this.densePass.render(renderer, this.scatteredTarget, null));
+    } else {
+      timed('blurH', () => this.horizontalPass.render(renderer, this._blurTarget, null));
+      timed('blurV', () => this.verticalPass.render(renderer, this.scatteredTarget, null));
+    }
+  }
+
+  /** computeKernel for `method` (see METHOD_TABLE: 'footprint' builds on the marginal kernel), cached. */
+  _computeKernel(options, method) {
+    const args = { ...options, method: METHOD_TABLE[method].kernel };
+    const key = JSON.stringify([args.profile.name, args.method, args.samples, args.strength, args.falloff]);
+    if (!this._kernels.has(key)) this._kernels.set(key, computeKernel(args));
+    return this._kernels.get(key);
+  }
+
+  /**
+   * Rebuilds the kernel (and the profile tables when the profile changes).
+   * @param {{ profile?: string|object, method?: string, samples?: number|'auto', strength?: number[], falloff?: number[] }} options
+   */
+  setKernel({ method = this.method, samples, ...options } = {}) {
+    checkOneOf('method', method, METHODS);
+    if (samples === 'auto') this.autoSamples = true;
+    else if (samples !== undefined) {
+      this.autoSamples = false;
+      options.samples = samples;
+    }
+    this.applyKernel(options, method);
+  }
+
+  /** Sets kernel options without touching 'auto' (the frame plan's taps go through here). */
+  applyKernel(options, method = this.method) {
+    const next = { ...this.kernelOptions, ...options };
+    if (options.profile !== undefined) next.profile = getProfile(options.profile);
+    const kernel = this._computeKernel(next, method);
+    const profileChanged = next.profile !== this.profileLookup.profile;
+    this.kernelOptions = next;
+    this.method = method;
+    this.kernel = kernel;
+    if (profileChanged) {
+      this.profileLookup.setProfile(next.profile); // tens of ms: only on a change
+      this._densePass?.setProfile(next.profile);
+    }
+    for (const pass of [this.horizontalPass, this.verticalPass]) {
+      pass.setMode(blurModeOf(method));
+      pass.setKernel(kernel);
+      pass.setStrength(next.strength ?? [1, 1, 1]);
+    }
+  }
+
+  /** @param {'drop'|'lerp'|'off'} mode @param {number} depthThresholdWorld */
+  setFollowSurface(mode, depthThresholdWorld) {
+    for (const pass of this.surfacePasses) pass.setFollowSurface(mode, depthThresholdWorld);
+    Object.assign(this._surface, { followSurface: mode, depthThresholdWorld });
+  }
+
+  /** @param {boolean} enabled */
+  setForeshortening(enabled) {
+    for (const pass of this.surfacePasses) pass.setForeshortening(enabled);
+    this._surface.foreshortening = enabled;
+  }
+
+  /** @param {boolean} multisampled the multi-target is MSAA-resolved (see SurfacePass.setMultisampled) */
+  setMultisampled(multisampled) {
+    for (const pass of this.surfacePasses) pass.setMultisampled(multisampled);
+    this._multisampled = multisampled;
+  }
+
+  /** @param {number} width device pixels @param {number} height device pixels */
+  setSize(width, height) {
+    this._size = { width, height };
+    for (const pass of this.surfacePasses) pass.setSize(width, height);
+    this._blurTarget.setSize(width, height);
+    this.scatteredTarget.setSize(width, height);
+  }
+
+  dispose() {
+    for (const pass of this.surfacePasses) pass.dispose();
+    this._blurTarget.dispose();
+    this.scatteredTarget.dispose();
+  }
+}
