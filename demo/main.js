@@ -63,7 +63,8 @@ async function start() {
   sss.makeSubsurface(material);
 
   // Linear HDR all the way to OutputPass (tone mapping + sRGB last).
-  const composer = new EffectComposer(renderer, new WebGLRenderTarget(1, 1, { type: HalfFloatType }));
+  // MSAA: the scene split follows the composer's samples, so silhouettes and creases are antialiased.
+  const composer = new EffectComposer(renderer, new WebGLRenderTarget(1, 1, { type: HalfFloatType, samples: 4 }));
   composer.addPass(sss); // in place of a RenderPass
   const outputPass = new OutputPass();
   composer.addPass(outputPass);
