@@ -121,7 +121,10 @@ function patch(material) {
       material.customProgramCacheKey = previous.customProgramCacheKey;
       material.onBeforeRender = previous.onBeforeRender;
       patches.delete(material);
-      material.needsUpdate = true;
+      // Release the material's compiled programs: three keeps them per material by cache key,
+      // with the uniform objects of the last compile, so a later patch would find its key's old
+      // program and run it with stale (or no) uniforms. three recompiles on the next draw.
+      material.dispose();
     },
   };
   patches.set(material, state);

@@ -436,3 +436,39 @@ describe('live scene, camera and lights', () => {
     }
   });
 });
+
+describe('disposal', () => {
+  it('a material made subsurface again after its pipeline was disposed renders as the first time, drawn plainly in between or not', async () => {
+    const r = await evaluateFloats(page, async () => {
+      const { SSS, createRenderer, createComposer, read, buildScene, RenderPass, DEFAULTS } = window.lab;
+      const renderer = createRenderer(64, 36);
+      const built = buildScene('slab', { pattern: 'noise', aspect: 64 / 36 });
+      const material = built.subsurface[0];
+      const plain = createComposer(renderer);
+      plain.addPass(new RenderPass(built.scene, built.camera));
+      const frame = async (composer) => { composer.render(); return read(renderer, composer.readBuffer); };
+      const pipeline = async (between) => {
+        const sss = new SSS.SubsurfaceScattering({ scene: built.scene, camera: built.camera, worldUnitInMm: DEFAULTS.worldUnitInMm });
+        sss.makeSubsurface(material);
+        const composer = createComposer(renderer);
+        composer.addPass(sss);
+        const out = await frame(composer);
+        const plainWhileHooked = await frame(plain);
+        sss.dispose();
+        composer.dispose();
+        const after = between ? await frame(plain) : null;
+        return { out, plainWhileHooked, after };
+      };
+      const unhooked = await frame(plain);
+      const first = await pipeline(true);
+      const second = await pipeline(false); // drawn plainly in between (by `first`)
+      const third = await pipeline(false); // not drawn in between
+      return { unhooked, first, second, third };
+    });
+    for (const name of ['second', 'third']) {
+      expect(maxDifference(r[name].out, r.first.out).worst, name).toBeLessThan(1e-6);
+      expect(maxDifference(r[name].plainWhileHooked, r.unhooked).worst, name).toBeLessThan(1e-3);
+    }
+    expect(maxDifference(r.first.after, r.unhooked).worst).toBeLessThan(1e-6);
+  });
+});
