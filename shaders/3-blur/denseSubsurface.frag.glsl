@@ -52,20 +52,15 @@ void addPixel( const in ivec2 pixel, const in ivec2 offset, const in vec3 energy
 
 void main() {
 	ivec2 pixel = ivec2( gl_FragCoord.xy );
-	vec4 centreLight = texelFetch( tDiffuse, pixel, 0 );
-	vec3 centre = sssFinite( centreLight.rgb ) ? centreLight.rgb : vec3( 0.0 );
-	if ( ! ( centreLight.a > 0.0 ) ) {
+	SssCentre pixelCentre = sssCentreAt( pixel );
+	vec3 centre = pixelCentre.colour;
+	if ( ! ( pixelCentre.coverage > 0.0 ) ) {
 		gl_FragColor = vec4( centre, 0.0 ); // not subsurface: as it was, like the blur
 		return;
 	}
-	// The output keeps the input's coverage (1 without MSAA), as the blur does.
-	float coverage = centreLight.a;
-	vec2 surface = sssUncovered( texelFetch( tSurface, pixel, 0 ).rg, coverage );
-	#if SSS_COVERAGE == 1
-		centre /= coverage;
-	#endif
+	vec2 surface = pixelCentre.surface;
 	if ( ! ( surface.g > 0.0 ) ) {
-		gl_FragColor = vec4( centre * coverage, coverage ); // no width (widthScale 0): no scattering
+		gl_FragColor = sssCovered( centre, pixelCentre.coverage ); // no width (widthScale 0): no scattering
 		return;
 	}
 
@@ -105,5 +100,5 @@ void main() {
 		}
 	}
 	vec3 result = sum / weightSum;
-	gl_FragColor = vec4( ( sssFinite( result ) ? result : centre ) * coverage, coverage );
+	gl_FragColor = sssCovered( sssFinite( result ) ? result : centre, pixelCentre.coverage );
 }

@@ -81,20 +81,14 @@ void addTap( const in float offsetPx, const in vec3 weight, const in ivec2 pixel
 
 void main() {
 	ivec2 pixel = ivec2( gl_FragCoord.xy );
-	vec4 centreLight = texelFetch( tDiffuse, pixel, 0 );
-	vec3 centre = sssFinite( centreLight.rgb ) ? centreLight.rgb : vec3( 0.0 );
-
+	SssCentre pixelCentre = sssCentreAt( pixel );
+	vec3 centre = pixelCentre.colour;
 	// Not a subsurface pixel: pass through so the next pass sees the same mask.
-	if ( ! ( centreLight.a > 0.0 ) ) {
+	if ( ! ( pixelCentre.coverage > 0.0 ) ) {
 		gl_FragColor = vec4( centre, 0.0 );
 		return;
 	}
-	// The output keeps the input's coverage (1 without MSAA): colour premultiplied by it, as read.
-	float coverage = centreLight.a;
-	vec2 surface = sssUncovered( texelFetch( tSurface, pixel, 0 ).rg, coverage );
-	#if SSS_COVERAGE == 1
-		centre /= coverage;
-	#endif
+	vec2 surface = pixelCentre.surface;
 
 	float stepPx = sssPixelsPerMm( surface )[ AXIS ];
 	float slope = 0.0; // depth change per pixel along the axis, world units
@@ -106,7 +100,7 @@ void main() {
 	#endif
 	// Below half a pixel the kernel cannot move light to another pixel: no work.
 	if ( ! ( stepPx * kernelRadiusMm >= SSS_MIN_KERNEL_PIXELS ) ) {
-		gl_FragColor = vec4( centre * coverage, coverage );
+		gl_FragColor = sssCovered( centre, pixelCentre.coverage );
 		return;
 	}
 
@@ -149,5 +143,5 @@ void main() {
 	#if KERNEL_MODE == KERNEL_MODE_FOOTPRINT
 		result = mix( centre, result, strength ); // fixed-tap kernels have the strength built in
 	#endif
-	gl_FragColor = vec4( ( sssFinite( result ) ? result : centre ) * coverage, coverage );
+	gl_FragColor = sssCovered( sssFinite( result ) ? result : centre, pixelCentre.coverage );
 }

@@ -4,7 +4,8 @@
 // samples, and samples off subsurface surfaces hold 0: its diffuse alpha is the coverage c, and
 // colour, depth and width are c times the covered samples' values. Dividing by c gives them back
 // exactly where one surface meets the background or an ordinary material (silhouettes); where two
-// subsurface surfaces share a pixel, their coverage-weighted mean. Needs `tSurface`, `tDiffuse`.
+// subsurface surfaces share a pixel, their coverage-weighted mean. Needs `tSurface`, `tDiffuse`
+// and shaders/common/finite.glsl.
 
 // Divides a premultiplied value by its coverage (a no-op without SSS_COVERAGE).
 vec2 sssUncovered( const in vec2 value, const in float coverage ) {
@@ -21,4 +22,29 @@ vec2 sssSurfaceAt( const in ivec2 texel ) {
 		surface = sssUncovered( surface, texelFetch( tDiffuse, texel, 0 ).a );
 	#endif
 	return surface;
+}
+
+// The pixel a surface pass shades.
+struct SssCentre {
+	vec3 colour;    // its diffuse light (0 if not finite), coverage divided out
+	float coverage; // the diffuse alpha: 0 off subsurface pixels (or NaN), 1 on them, the MSAA coverage between
+	vec2 surface;   // linear view depth and world units per profile mm, coverage divided out
+};
+
+SssCentre sssCentreAt( const in ivec2 pixel ) {
+	vec4 light = texelFetch( tDiffuse, pixel, 0 );
+	SssCentre centre;
+	centre.colour = sssFinite( light.rgb ) ? light.rgb : vec3( 0.0 );
+	centre.coverage = light.a > 0.0 ? light.a : 0.0;
+	centre.surface = sssUncovered( texelFetch( tSurface, pixel, 0 ).rg, centre.coverage );
+	#if SSS_COVERAGE == 1
+		if ( centre.coverage > 0.0 ) centre.colour /= centre.coverage;
+	#endif
+	return centre;
+}
+
+// A surface pass's output: its colour premultiplied by the centre's coverage (1 without MSAA), as
+// its input was, so the next pass and the compose read it the same way.
+vec4 sssCovered( const in vec3 colour, const in float coverage ) {
+	return vec4( colour * coverage, coverage );
 }

@@ -5,11 +5,6 @@
 // rules as SubsurfaceBlurPass, through their shared base SurfacePass; see
 // shaders/3-blur/denseSubsurface.frag.glsl.
 import denseGlsl from '../../shaders/3-blur/denseSubsurface.frag.glsl?raw';
-import finiteGlsl from '../../shaders/common/finite.glsl?raw';
-import screenScaleGlsl from '../../shaders/common/screenScale.glsl?raw';
-import surfaceSampleGlsl from '../../shaders/common/surfaceSample.glsl?raw';
-import surfaceSlopeGlsl from '../../shaders/common/surfaceSlope.glsl?raw';
-import surfaceTapGlsl from '../../shaders/common/surfaceTap.glsl?raw';
 import quadrantEnergyGlsl from '../../shaders/common/quadrantEnergy.glsl?raw';
 import { QuadrantEnergyLookup } from '../profiles/QuadrantEnergyLookup.js';
 import { getProfile } from '../profiles/presets.js';
@@ -17,14 +12,7 @@ import { checkInteger, checkNumber } from '../support/parameterChecks.js';
 import { describe } from '../support/rendererSupport.js';
 import { SurfacePass } from './SurfacePass.js';
 
-const CHUNKS = Object.freeze({
-  'common/finite.glsl': finiteGlsl,
-  'common/screenScale.glsl': screenScaleGlsl,
-  'common/surfaceSample.glsl': surfaceSampleGlsl,
-  'common/surfaceSlope.glsl': surfaceSlopeGlsl,
-  'common/surfaceTap.glsl': surfaceTapGlsl,
-  'common/quadrantEnergy.glsl': quadrantEnergyGlsl,
-});
+const CHUNKS = Object.freeze({ 'common/quadrantEnergy.glsl': quadrantEnergyGlsl });
 
 export class DenseSubsurfacePass extends SurfacePass {
   /**

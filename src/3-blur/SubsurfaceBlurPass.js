@@ -4,11 +4,6 @@
 // renormalised per channel (or lerped back to the centre colour, as in the reference).
 import { Vector3, Vector4 } from 'three';
 import blurGlsl from '../../shaders/3-blur/subsurfaceBlur.frag.glsl?raw';
-import finiteGlsl from '../../shaders/common/finite.glsl?raw';
-import screenScaleGlsl from '../../shaders/common/screenScale.glsl?raw';
-import surfaceSampleGlsl from '../../shaders/common/surfaceSample.glsl?raw';
-import surfaceSlopeGlsl from '../../shaders/common/surfaceSlope.glsl?raw';
-import surfaceTapGlsl from '../../shaders/common/surfaceTap.glsl?raw';
 import profileLookupGlsl from '../../shaders/common/profileLookup.glsl?raw';
 import { kernelRadiusMm } from '../profiles/kernel.js';
 import { ProfileLookup } from '../profiles/ProfileLookup.js';
@@ -23,14 +18,7 @@ export { FOLLOW_SURFACE_MODES };
 export const KERNEL_MODES = Object.freeze(['taps', 'footprint']);
 const DIRECTIONS = Object.freeze(['horizontal', 'vertical']);
 
-const CHUNKS = Object.freeze({
-  'common/finite.glsl': finiteGlsl,
-  'common/screenScale.glsl': screenScaleGlsl,
-  'common/surfaceSample.glsl': surfaceSampleGlsl,
-  'common/surfaceSlope.glsl': surfaceSlopeGlsl,
-  'common/surfaceTap.glsl': surfaceTapGlsl,
-  'common/profileLookup.glsl': profileLookupGlsl,
-});
+const CHUNKS = Object.freeze({ 'common/profileLookup.glsl': profileLookupGlsl });
 
 /**
  * The footprints of the 'footprint' mode from a marginal kernel's positive offsets o_1 < … < o_H:

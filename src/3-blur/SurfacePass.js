@@ -5,6 +5,11 @@
 import { Vector2 } from 'three';
 import { ShaderPass } from 'three/addons/postprocessing/ShaderPass.js';
 import vertexShader from '../../shaders/common/fullscreen.vert.glsl?raw';
+import finiteGlsl from '../../shaders/common/finite.glsl?raw';
+import screenScaleGlsl from '../../shaders/common/screenScale.glsl?raw';
+import surfaceSampleGlsl from '../../shaders/common/surfaceSample.glsl?raw';
+import surfaceSlopeGlsl from '../../shaders/common/surfaceSlope.glsl?raw';
+import surfaceTapGlsl from '../../shaders/common/surfaceTap.glsl?raw';
 import { assembleGlsl, enumDefines, glslFloat, setDefines } from '../support/glsl.js';
 import { checkNumber, checkOneOf } from '../support/parameterChecks.js';
 import { describe } from '../support/rendererSupport.js';
@@ -19,12 +24,21 @@ const SAMPLING_DEFINES = Object.freeze({
   SSS_ENERGY_LEFT: glslFloat(ENERGY_LEFT),
 });
 
+/** The chunks every surface pass includes: finiteness, screen scale, reading the surface, its slope, the tap rule. */
+const SURFACE_CHUNKS = Object.freeze({
+  'common/finite.glsl': finiteGlsl,
+  'common/screenScale.glsl': screenScaleGlsl,
+  'common/surfaceSample.glsl': surfaceSampleGlsl,
+  'common/surfaceSlope.glsl': surfaceSlopeGlsl,
+  'common/surfaceTap.glsl': surfaceTapGlsl,
+});
+
 export class SurfacePass extends ShaderPass {
   /**
    * @param {object} shader
    * @param {string} shader.name the pass's name (messages, three's material name)
    * @param {string} shader.fragmentShader GLSL with `#include "…"` lines
-   * @param {Record<string, string>} shader.chunks the chunks it includes (see assembleGlsl)
+   * @param {Record<string, string>} [shader.chunks] the chunks it includes besides SURFACE_CHUNKS (see assembleGlsl)
    * @param {object} [shader.defines] the subclass's own defines
    * @param {object} [shader.uniforms] the subclass's own uniforms
    * @param {object} options
@@ -37,7 +51,7 @@ export class SurfacePass extends ShaderPass {
    * @param {boolean} [options.foreshortening=true] grazing angles: shrink the step by cos(tilt) of the
    *   surface along each axis and compare depths with the local plane
    */
-  constructor({ name, fragmentShader, chunks, defines = {}, uniforms = {} }, {
+  constructor({ name, fragmentShader, chunks = {}, defines = {}, uniforms = {} }, {
     camera, surfaceTexture, diffuseTexture = null, followSurface = 'drop', depthThresholdWorld = 0.006, foreshortening = true,
   }) {
     if (!camera || camera.isCamera !== true) throw new TypeError(`${name}: camera must be a THREE.Camera, got ${describe(camera)}`);
@@ -57,7 +71,7 @@ export class SurfacePass extends ShaderPass {
         ...uniforms,
       },
       vertexShader,
-      fragmentShader: assembleGlsl(name, fragmentShader, chunks),
+      fragmentShader: assembleGlsl(name, fragmentShader, { ...SURFACE_CHUNKS, ...chunks }),
     });
     this.uniforms.tSurface.value = surfaceTexture; // after super: ShaderPass clones the textures it is given
     /** The camera the scene was rendered with; its projection is read every frame. */
