@@ -11,10 +11,11 @@ import {
   ACESFilmicToneMapping, FloatType, HalfFloatType, UnsignedByteType, Vector2, WebGLRenderer, WebGLRenderTarget,
 } from 'three';
 import { EffectComposer } from 'three/addons/postprocessing/EffectComposer.js';
+import { RenderPass } from 'three/addons/postprocessing/RenderPass.js';
 import { OutputPass } from 'three/addons/postprocessing/OutputPass.js';
 import { SubsurfaceScattering, AUTO_SAMPLES, AUTO_REACH, pixelsPerMm } from '/src/index.js';
 import { readRenderTargetFloats } from '/dev/readback.js';
-import { GpuStageTimer } from '/dev/gpuTimer.js';
+import { GpuStageTimer, median } from '/dev/gpuTimer.js';
 import { radianceErrors, maskedSsim } from '/dev/metrics.js';
 import { buildScene } from './scenes.js';
 import { drawChart } from './chart.js';
@@ -266,5 +267,41 @@ async function readDense({ profile, coverage = 0.997, followSurface = 'drop', fo
   };
 }
 
-window.bench = { info, open, close, reference, measure, readDense, drawChart };
+/**
+ * Per-stage GPU times of whole frames of the pipeline as it stands, and of a plain three.js frame
+ * (a RenderPass of the same scene into the same kind of composer), interleaved frame by frame.
+ * @param {{ frames?: number }} [options]
+ * @returns {Promise<{ stages: object, plainMs: number, frames: number }>} medians, ms
+ */
+async function breakdown({ frames = 9 } = {}) {
+  const { renderer, built, composer, timer, sss } = session;
+  const plain = new EffectComposer(renderer, composer.readBuffer.clone());
+  plain.renderToScreen = false;
+  plain.addPass(new RenderPass(built.scene, built.camera));
+  plain.render();
+  composer.render();
+  await timer.collect();
+  const times = [];
+  timer.recording = true;
+  try {
+    for (let i = 0; i < frames; i++) {
+      composer.render();
+      timer.begin('plain');
+      plain.render();
+      timer.end('plain');
+      await nextTask();
+      times.push(...await timer.collect());
+    }
+  } finally {
+    timer.recording = false;
+    plain.renderTarget1.dispose();
+    plain.renderTarget2.dispose();
+  }
+  const byStage = {};
+  for (const { stage, ms } of times) (byStage[stage] ??= []).push(ms);
+  const stages = Object.fromEntries(Object.entries(byStage).map(([stage, list]) => [stage, median(list)]));
+  return { stages, frames, kernelPixels: sss.kernelPixels, samples: sss.kernel.length / 4 };
+}
+
+window.bench = { info, open, close, reference, measure, readDense, breakdown, drawChart };
 window.testReady = true;
