@@ -32,5 +32,7 @@ export { dipoleProfile } from './profiles/dipole.js';
 export { gaussianSumProfile } from './profiles/gaussianSum.js';
 export { radialProfile } from './profiles/radialProfile.js';
 export { ProfileLookup } from './profiles/ProfileLookup.js';
+export { FootprintTable } from './profiles/FootprintTable.js';
+export { footprintAllocation, footprintTable, FOOTPRINT_SCALES } from './profiles/footprints.js';
 export { QuadrantEnergyLookup } from './profiles/QuadrantEnergyLookup.js';
 export { pixelsPerMm, isPerspective } from './support/screenScale.js';

@@ -5,11 +5,14 @@
 // resolved from MSAA, shaders/common/surfaceSample.glsl), SSS_MAX_SLOPE, SSS_MIN_KERNEL_PIXELS,
 // SSS_ENERGY_LEFT (the numbers of src/3-blur/samplingModel.js) and KERNEL_MODE:
 //   KERNEL_MODE_TAPS: fixed weights and offsets (computeKernel's reference or marginal kernel);
-//   KERNEL_MODE_FOOTPRINT: per pixel, the marginal kernel's footprints are snapped to the pixel grid (at
-//     least one pixel each) and weighted by the exact energy of the profile's marginal over them,
-//     read from the ProfileLookup. Where the taps cover the on-screen kernel pixel by pixel this is
-//     the exact 1D convolution of the pixel image; beyond, footprints follow the profile's energy.
-//     It stops as soon as the energy left is negligible, so small kernels cost fewer taps.
+//   KERNEL_MODE_FOOTPRINT: per pixel, contiguous footprints of whole pixels, allocated for the
+//     pixel's scale so that the worst step-edge error is least for the budget (src/profiles/
+//     footprints.js: single pixels where the profile is steep, wide footprints where it is flat),
+//     read from the FootprintTable (the row nearest the pixel's scale; edges in mm times its scale,
+//     snapped, at least one pixel each) and weighted by the exact energy of the profile's marginal
+//     over them, read from the ProfileLookup. Where the budget covers the on-screen kernel pixel by
+//     pixel this is the exact 1D convolution of the pixel image. It stops as soon as the energy left
+//     is negligible, so small kernels cost fewer taps.
 //
 // Sampling model (the float64 oracle in test/oracle/convolution.js implements the same):
 // - the step per kernel millimetre, in pixels, is shaders/common/screenScale.glsl's
@@ -49,8 +52,10 @@ uniform bool perspective;       // false for an orthographic camera: the step do
 	#define BLOCKS ( ( SAMPLES - 1 ) / 2 - 1 ) // footprints per side before the tail
 	uniform sampler2D tProfile;                 // ProfileLookup.texture, row 1: G(x) = ∫_0^x marginal
 	uniform float marginalRangeMm;              // ProfileLookup.marginalRangeMm
-	uniform float footprintEdgesMm[ EDGE_ARRAY_SIZE ]; // outer edge of each footprint, mm (max(BLOCKS, 1) entries)
-	uniform float tailOffsetMm;                 // where the tail beyond the last edge is sampled, mm
+	// FootprintTable.texture: row r is scale SSS_FOOTPRINT_SCALE_MIN * 2^(r / SSS_FOOTPRINT_PER_OCTAVE)
+	// px/mm; texel j holds footprint j's outer edge (infinite for the last one) and where it is
+	// sampled (where it keeps the kernel's variance: footprintSamplePosition), in profile mm.
+	uniform sampler2D tFootprints;
 	#include "common/profileLookup.glsl"
 #endif
 
@@ -114,28 +119,29 @@ void main() {
 			addTap( kernel[ i ].a * stepPx, kernel[ i ].rgb, pixel, surface.r, slope, centre, sum, weightSum );
 		}
 	#else
+		// The table row nearest this pixel's scale (src/profiles/footprints.js's footprintRowOf).
+		int row = clamp( int( floor( log2( stepPx / SSS_FOOTPRINT_SCALE_MIN ) * SSS_FOOTPRINT_PER_OCTAVE + 0.5 ) ), 0, SSS_FOOTPRINT_ROWS - 1 );
 		// The centre pixel is its own footprint: |x| < 0.5 px.
 		vec3 energyBelow = sssReadProfile( tProfile, 1, 0.5 / stepPx, marginalRangeMm );
 		weightSum = 2.0 * energyBelow;
 		sum = centre * weightSum;
 		int lastEdge = 0; // pixels; footprint j covers pixels lastEdge + 1 .. edge on each side
-		for ( int j = 0; j < BLOCKS; j ++ ) {
+		for ( int j = 0; j <= BLOCKS; j ++ ) {
 			if ( all( greaterThan( energyBelow, vec3( 0.5 - SSS_ENERGY_LEFT ) ) ) ) break; // nothing left
-			int edge = max( int( floor( footprintEdgesMm[ j ] * stepPx + 0.5 ) ), lastEdge + 1 );
-			vec3 energy = sssReadProfile( tProfile, 1, ( float( edge ) + 0.5 ) / stepPx, marginalRangeMm );
+			vec2 footprint = texelFetch( tFootprints, ivec2( j, row ), 0 ).rg; // outer edge, sample offset (mm)
+			// The last footprint runs to the kernel's end and takes all the energy left.
+			bool last = j == BLOCKS || isinf( footprint.x );
+			int edge = last ? lastEdge + 1 : max( int( floor( footprint.x * stepPx + 0.5 ) ), lastEdge + 1 );
+			vec3 energy = last ? vec3( 0.5 ) : sssReadProfile( tProfile, 1, ( float( edge ) + 0.5 ) / stepPx, marginalRangeMm );
 			vec3 weight = energy - energyBelow;
-			float offsetPx = 0.5 * float( lastEdge + 1 + edge ); // the footprint's middle
+			// Sampled where the table says, kept inside the footprint as snapped at this pixel's scale.
+			float offsetPx = max( footprint.y * stepPx, float( lastEdge + 1 ) );
+			if ( ! last ) offsetPx = min( offsetPx, float( edge ) );
 			addTap( offsetPx, weight, pixel, surface.r, slope, centre, sum, weightSum );
 			addTap( - offsetPx, weight, pixel, surface.r, slope, centre, sum, weightSum );
+			if ( last ) break;
 			energyBelow = energy;
 			lastEdge = edge;
-		}
-		// The tail beyond the last edge, sampled where the kernel put its outermost tap.
-		vec3 tail = vec3( 0.5 ) - energyBelow;
-		if ( any( greaterThan( tail, vec3( SSS_ENERGY_LEFT ) ) ) ) {
-			float offsetPx = max( tailOffsetMm * stepPx, float( lastEdge + 1 ) );
-			addTap( offsetPx, tail, pixel, surface.r, slope, centre, sum, weightSum );
-			addTap( - offsetPx, tail, pixel, surface.r, slope, centre, sum, weightSum );
 		}
 	#endif
 

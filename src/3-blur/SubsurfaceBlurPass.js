@@ -7,7 +7,9 @@ import blurGlsl from '../../shaders/3-blur/subsurfaceBlur.frag.glsl?raw';
 import profileLookupGlsl from '../../shaders/common/profileLookup.glsl?raw';
 import { kernelRadiusMm } from '../profiles/kernel.js';
 import { ProfileLookup } from '../profiles/ProfileLookup.js';
-import { enumDefines, setDefines } from '../support/glsl.js';
+import { FootprintTable } from '../profiles/FootprintTable.js';
+import { FOOTPRINT_ROWS, FOOTPRINT_SCALES } from '../profiles/footprints.js';
+import { enumDefines, glslFloat, setDefines } from '../support/glsl.js';
 import { checkOneOf, checkRgb } from '../support/parameterChecks.js';
 import { describe } from '../support/rendererSupport.js';
 import { FOLLOW_SURFACE_MODES } from '../options.js';
@@ -20,9 +22,17 @@ const DIRECTIONS = Object.freeze(['horizontal', 'vertical']);
 
 const CHUNKS = Object.freeze({ 'common/profileLookup.glsl': profileLookupGlsl });
 
+/** The footprint table's scales as the GLSL defines the shader reads. */
+const FOOTPRINT_DEFINES = Object.freeze({
+  SSS_FOOTPRINT_SCALE_MIN: glslFloat(FOOTPRINT_SCALES.min),
+  SSS_FOOTPRINT_PER_OCTAVE: glslFloat(FOOTPRINT_SCALES.perOctave),
+  SSS_FOOTPRINT_ROWS: FOOTPRINT_ROWS,
+});
+
 /**
- * The footprints of the 'footprint' mode from a marginal kernel's positive offsets o_1 < … < o_H:
- * edges between consecutive offsets, the tail sampled at o_H.
+ * Footprints from a marginal kernel's positive offsets o_1 < … < o_H: edges between consecutive
+ * offsets, the tail sampled at o_H. (Version 0.1's 'footprint' allocation, for every scale alike;
+ * the blur now allocates per scale from the profile's energy: see src/profiles/footprints.js.)
  * @param {Float32Array} kernel
  * @returns {{ edgesMm: number[], tailOffsetMm: number }}
  */
@@ -50,8 +60,9 @@ export class SubsurfaceBlurPass extends SurfacePass {
    * @param {import('three').Texture|null} [options.diffuseTexture=null] the light to blur; null reads
    *   the composer's read buffer. rgb 0 and alpha 0 outside subsurface pixels, alpha 1 on them.
    * @param {'taps'|'footprint'} [options.mode='taps'] 'taps': the kernel's weights and offsets as
-   *   they are; 'footprint': the kernel's footprints snapped to pixels per pixel and weighted by the
-   *   exact marginal energy from `profileLookup` (see shaders/3-blur/subsurfaceBlur.frag.glsl)
+   *   they are; 'footprint': per pixel, footprints of whole pixels allocated for the pixel's scale
+   *   (src/profiles/footprints.js), as many taps as the kernel has, weighted by the exact marginal
+   *   energy from `profileLookup` (see shaders/3-blur/subsurfaceBlur.frag.glsl)
    * @param {ProfileLookup|null} [options.profileLookup=null] required by the 'footprint' mode
    * @param {'drop'|'lerp'|'off'} [options.followSurface='drop'] what a tap on another surface does
    * @param {number} [options.depthThresholdWorld=0.006] depth difference (world units) at which a tap
@@ -71,21 +82,22 @@ export class SubsurfaceBlurPass extends SurfacePass {
       name: `SubsurfaceBlurPass(${direction})`,
       fragmentShader: blurGlsl,
       chunks: CHUNKS,
-      defines: { AXIS: DIRECTIONS.indexOf(direction), SAMPLES: 1, EDGE_ARRAY_SIZE: 1, ...enumDefines('KERNEL_MODE', KERNEL_MODES, mode) },
+      defines: { AXIS: DIRECTIONS.indexOf(direction), SAMPLES: 1, ...FOOTPRINT_DEFINES, ...enumDefines('KERNEL_MODE', KERNEL_MODES, mode) },
       uniforms: {
         kernel: { value: [] },
         kernelRadiusMm: { value: 0 },
         strength: { value: new Vector3(1, 1, 1) },
         tProfile: { value: null },
         marginalRangeMm: { value: 1 },
-        footprintEdgesMm: { value: [0] },
-        tailOffsetMm: { value: 0 },
+        tFootprints: { value: null },
       },
     }, surface);
     this.direction = direction;
     this.mode = mode;
     this.profileLookup = profileLookup;
     this.uniforms.tProfile.value = profileLookup?.texture ?? null;
+    /** The footprint allocation for the profile and the kernel's tap count ('footprint' mode). */
+    this.footprintTable = profileLookup ? new FootprintTable(profileLookup) : null;
     this.setKernel(kernel);
     this.setStrength(strength);
   }
@@ -124,16 +136,19 @@ export class SubsurfaceBlurPass extends SurfacePass {
     for (let i = 0; i < samples; i++) taps.push(new Vector4().fromArray(kernel, i * 4));
     this.uniforms.kernel.value = taps;
     this.uniforms.kernelRadiusMm.value = kernelRadiusMm(kernel);
-    const { edgesMm, tailOffsetMm } = footprintsOf(kernel);
-    this.uniforms.footprintEdgesMm.value = edgesMm.length > 0 ? edgesMm : [0];
-    this.uniforms.tailOffsetMm.value = tailOffsetMm;
-    setDefines(this.material, { SAMPLES: samples, EDGE_ARRAY_SIZE: Math.max(1, (samples - 1) / 2 - 1) });
+    setDefines(this.material, { SAMPLES: samples });
     this.kernel = kernel;
   }
 
   render(renderer, writeBuffer, readBuffer, deltaTime, maskActive) {
     if (this.profileLookup) this.uniforms.marginalRangeMm.value = this.profileLookup.marginalRangeMm;
+    if (this.mode === 'footprint') this.uniforms.tFootprints.value = this.footprintTable.update(this.kernel.length / 4);
     this.uniforms.kernelRadiusMm.value = this.radiusMm;
     super.render(renderer, writeBuffer, readBuffer, deltaTime, maskActive);
+  }
+
+  dispose() {
+    super.dispose();
+    this.footprintTable?.dispose();
   }
 }

@@ -51,6 +51,25 @@ export class ProfileLookup {
     this.texture.needsUpdate = true;
   }
 
+  /**
+   * G(x) = ∫_0^x marginal, per channel, read from the table exactly as shaders/common/profileLookup.glsl
+   * reads row 1 (square-root spacing, linear between texels, held past the range).
+   * @param {number} xMm
+   * @returns {number[]} [r, g, b]
+   */
+  marginalEnergy(xMm) {
+    return this._read(1, xMm, this.marginalRangeMm);
+  }
+
+  _read(row, xMm, rangeMm) {
+    const { data, width } = this.texture.image;
+    const position = Math.sqrt(Math.min(Math.max(xMm / rangeMm, 0), 1)) * (width - 1);
+    const below = Math.min(Math.floor(position), width - 2);
+    const t = position - below;
+    const i = (row * width + below) * 4;
+    return [0, 1, 2].map((c) => data[i + c] * (1 - t) + data[i + 4 + c] * t);
+  }
+
   dispose() {
     this.texture.dispose();
   }

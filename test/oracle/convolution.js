@@ -225,26 +225,29 @@ function blurPass(args, src, axisIndex) {
       } else {
         // 'footprint' (header): the centre pixel, then footprints snapped to pixels, then the tail.
         const G = (xMm) => footprint.profile.marginalIntegral(0, xMm);
+        // The table row nearest this pixel's scale; per footprint (outer edge, sample offset), mm.
+        const { data, columns, rows } = footprint.table;
+        const { min, perOctave } = footprint.scales;
+        const row = Math.min(Math.max(Math.floor(Math.log2(stepPx / min) * perOctave + 0.5), 0), rows - 1);
         let below = G(0.5 / stepPx);
         vec3.set(weightSum, 2 * below[0], 2 * below[1], 2 * below[2]);
         vec3.multiply(sum, weightSum, centre);
         let lastEdge = 0;
-        for (const edgeMm of footprint.edgesMm) {
+        for (let j = 0; j < columns; j++) {
           if (below.every((g) => g > 0.5 - ENERGY_LEFT)) break;
-          const edge = Math.max(Math.floor(edgeMm * stepPx + 0.5), lastEdge + 1);
-          const energy = G((edge + 0.5) / stepPx);
+          const edgeMm = data[2 * (row * columns + j)];
+          const offsetMm = data[2 * (row * columns + j) + 1];
+          const last = j === columns - 1 || edgeMm === Infinity;
+          const edge = last ? lastEdge + 1 : Math.max(Math.floor(edgeMm * stepPx + 0.5), lastEdge + 1);
+          const energy = last ? [0.5, 0.5, 0.5] : G((edge + 0.5) / stepPx);
           const w = energy.map((e, c) => e - below[c]);
-          const offsetPx = 0.5 * (lastEdge + 1 + edge);
+          let offsetPx = Math.max(offsetMm * stepPx, lastEdge + 1);
+          if (!last) offsetPx = Math.min(offsetPx, edge);
           addTap(offsetPx, w);
           addTap(-offsetPx, w);
+          if (last) break;
           below = energy;
           lastEdge = edge;
-        }
-        const tail = below.map((g) => 0.5 - g);
-        if (tail.some((t) => t > ENERGY_LEFT)) {
-          const offsetPx = Math.max(footprint.tailOffsetMm * stepPx, lastEdge + 1);
-          addTap(offsetPx, tail);
-          addTap(-offsetPx, tail);
         }
       }
       for (let c = 0; c < 3; c++) {
@@ -272,11 +275,15 @@ function blurPass(args, src, axisIndex) {
  * @param {'drop'|'lerp'|'off'} [args.followSurface='off']
  * @param {number} [args.depthThresholdWorld] > 0 unless followSurface is 'off'
  * @param {(x: number) => number} [args.storeIntermediate] applied to each value stored between the passes
- * @param {{ profile: object, edgesMm: number[], tailOffsetMm: number, strength?: number[] }} [args.footprint] the GPU's 'footprint'
- *   kernel mode instead of the kernel's fixed taps: per pixel, the centre pixel weighs 2·G(0.5 px), then
- *   footprint j covers the pixels (lastEdge, edge_j] with edge_j = max(round(edgesMm_j · stepPx), lastEdge + 1),
- *   weighs G(edge_j + 0.5 px) − G(lastEdge + 0.5 px) and is sampled at its middle; it stops once every
- *   channel's G exceeds 0.5 − 1e-5; the tail 0.5 − G is sampled at max(tailOffsetMm · stepPx, lastEdge + 1).
+ * @param {{ profile: object, table: { data: ArrayLike<number>, columns: number, rows: number },
+ *   scales: { min: number, perOctave: number }, strength?: number[] }} [args.footprint] the GPU's 'footprint'
+ *   kernel mode instead of the kernel's fixed taps: per pixel, the table row r = clamp(round(log2(stepPx / min)
+ *   · perOctave), 0, rows − 1) gives per footprint j an outer edge and a sample offset (mm, pairs); the
+ *   centre pixel weighs 2·G(0.5 px), then footprint j covers the pixels (lastEdge, edge_j] with
+ *   edge_j = max(round(edge_j mm · stepPx), lastEdge + 1), weighs G(edge_j + 0.5 px) − G(lastEdge + 0.5 px)
+ *   and is sampled at clamp(offset_j mm · stepPx, lastEdge + 1, edge_j); the last footprint (the last
+ *   column, or an infinite edge) takes 0.5 − G and is sampled at max(offset · stepPx, lastEdge + 1); it stops
+ *   once every channel's G exceeds 0.5 − 1e-5.
  *   G(x) = profile.marginalIntegral(0, x), in float64 (the GPU reads it from a table).
  * @param {ArrayLike<number>} [args.mask] width·height, nonzero on subsurface pixels (the GPU's diffuse alpha);
  *   default: widthWorld > 0. A masked pixel with width 0 (strength 0) keeps its colour and still serves as a tap.

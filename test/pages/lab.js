@@ -178,7 +178,9 @@ async function run(options) {
     const p = built.camera.projectionMatrix.elements;
     Object.assign(result, {
       kernel: sss.kernel, kernelPixels: sss.kernelPixels, blurEnabled: sss.plan.blur,
-      method: sss.method, footprint: SSS.footprintsOf(sss.kernel), profile: sss.profileLookup.profile.name,
+      method: sss.method, profile: sss.profileLookup.profile.name,
+      footprint: sss.horizontalPass.footprintTable?.table
+        ? { table: sss.horizontalPass.footprintTable.table, scales: SSS.FOOTPRINT_SCALES } : undefined,
       projectionScale: [p[0], p[5]], depthThresholdWorld: sss.horizontalPass.depthThresholdWorld,
       thicknessWorld: built.thicknessWorld,
     });
