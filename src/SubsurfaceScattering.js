@@ -184,6 +184,7 @@ export class SubsurfaceScattering extends Pass {
       samples: this.blur.samples,
       autoRadiusMm: this.profileLookup.marginalRadiusMm,
       radiusMmOf: (samples) => this.blur.radiusMmOf(samples),
+      autoSamples: (radiusPx) => this.blur.autoSamplesFor(radiusPx),
     });
     if (plan.samples !== this.blur.kernelOptions.samples) this.blur.applyKernel({ samples: plan.samples });
     this.kernelPixels = plan.kernelPixels;

@@ -28,11 +28,13 @@ export function autoSampleCount(radiusPx) {
  * @param {number|'auto'} frame.samples the taps asked for
  * @param {number} frame.autoRadiusMm the radius 'auto' must resolve pixel by pixel (the marginal's 99 %)
  * @param {(samples: number) => number} frame.radiusMmOf the blur's reach with that many taps, mm
+ * @param {(radiusPx: number) => number} [frame.autoSamples=autoSampleCount] the taps 'auto' takes for
+ *   the on-screen radius holding 99 % of the marginal's energy
  * @returns {{ samples: number, kernelPixels: number, blur: boolean }} the taps to use, the largest
  *   on-screen reach of the kernel (pixels), and whether the blur stage runs
  */
-export function planFrame({ scattering, pixelsPerMm, samples, autoRadiusMm, radiusMmOf }) {
-  const taps = samples === 'auto' ? autoSampleCount(autoRadiusMm * pixelsPerMm) : samples;
+export function planFrame({ scattering, pixelsPerMm, samples, autoRadiusMm, radiusMmOf, autoSamples = autoSampleCount }) {
+  const taps = samples === 'auto' ? autoSamples(autoRadiusMm * pixelsPerMm) : samples;
   const kernelPixels = radiusMmOf(taps) * pixelsPerMm;
   return { samples: taps, kernelPixels, blur: scattering && kernelPixels >= MIN_KERNEL_PIXELS };
 }

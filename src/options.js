@@ -25,9 +25,10 @@ export const METHODS = Object.freeze(Object.keys(METHOD_TABLE));
 export const FOLLOW_SURFACE_MODES = Object.freeze(['off', 'drop', 'lerp']);
 
 /**
- * Tap budgets 'auto' chooses from: each is compiled once, so few levels keep shader switches rare.
- * The smallest is used whose (samples - 3) / 2 single-pixel footprints per side reach AUTO_REACH of
- * the on-screen radius holding 99 % of the marginal's energy.
+ * Tap budgets 'auto' chooses from for the fixed-tap methods ('marginal', 'reference'; the
+ * 'footprint' method chooses per pixel instead): each is compiled once, so few levels keep shader
+ * switches rare. The smallest is used whose (samples - 3) / 2 single-pixel footprints per side
+ * reach AUTO_REACH of the on-screen radius holding 99 % of the marginal's energy.
  */
 export const AUTO_SAMPLES = Object.freeze([5, 9, 13, 17, 25, 33, 45, 63]);
 
@@ -47,7 +48,7 @@ export const PIPELINE_DEFAULTS = Object.freeze({
   worldUnitInMm: 1000, // three.js's unit is the metre
   profile: 'skin',
   method: 'footprint',
-  samples: 17,
+  samples: 'auto', // per pixel, the fewest taps within AUTO_STEP_ERROR for its scale (src/profiles/footprints.js)
   followSurface: 'drop',
   depthThresholdMm: 6, // close to the reference's follow-surface constant at its field of view
   foreshortening: true,

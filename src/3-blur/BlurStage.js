@@ -7,6 +7,8 @@ import { computeKernel, kernelRadiusMm } from '../profiles/kernel.js';
 import { getProfile } from '../profiles/presets.js';
 import { checkOneOf } from '../support/parameterChecks.js';
 import { METHODS, METHOD_TABLE } from '../options.js';
+import { AUTO_MAX_SAMPLES } from '../profiles/footprints.js';
+import { autoSampleCount } from '../framePlan.js';
 import { SubsurfaceBlurPass } from './SubsurfaceBlurPass.js';
 import { DenseSubsurfacePass } from './DenseSubsurfacePass.js';
 
@@ -34,7 +36,7 @@ export class BlurStage {
     this.profileLookup = profileLookup;
     this.method = method;
     this.autoSamples = samples === 'auto';
-    this.kernelOptions = { profile: profileLookup.profile, samples: this.autoSamples ? 17 : samples, strength, falloff };
+    this.kernelOptions = { profile: profileLookup.profile, samples: this.autoSamples ? this._autoStart(method) : samples, strength, falloff };
     this._kernels = new Map(); // computed kernels by their arguments: 'auto' switches between a few
     this.kernel = this._computeKernel(this.kernelOptions, method);
     this._surface = surface;
@@ -43,7 +45,9 @@ export class BlurStage {
     /** The scattered diffuse light, premultiplied by its coverage like the multi-target's. */
     this.scatteredTarget = new WebGLRenderTarget(1, 1, { type, depthBuffer: false });
     this.scatteredTarget.texture.name = 'subsurface.scattered';
-    const blur = { ...surface, kernel: this.kernel, mode: blurModeOf(method), profileLookup, strength: strength ?? [1, 1, 1] };
+    const blur = {
+      ...surface, kernel: this.kernel, mode: blurModeOf(method), profileLookup, strength: strength ?? [1, 1, 1], autoFootprints: this._autoFootprints(),
+    };
     this.horizontalPass = new SubsurfaceBlurPass({ ...blur, direction: 'horizontal' });
     this.verticalPass = new SubsurfaceBlurPass({ ...blur, direction: 'vertical', diffuseTexture: this._blurTarget.texture });
     this._densePass = null; // built when first asked for
@@ -69,6 +73,24 @@ export class BlurStage {
   /** The taps asked for: a count, or 'auto'. */
   get samples() {
     return this.autoSamples ? 'auto' : this.kernelOptions.samples;
+  }
+
+  /**
+   * 'auto': footprints choose their taps per pixel from the table (the kernel only bounds them), so
+   * the frame keeps AUTO_MAX_SAMPLES; fixed-tap kernels take the frame's count (autoSampleCount).
+   * @param {number} radiusPx the on-screen radius holding 99 % of the marginal's energy
+   */
+  autoSamplesFor(radiusPx) {
+    return this._autoFootprints() ? AUTO_MAX_SAMPLES : autoSampleCount(radiusPx);
+  }
+
+  _autoFootprints(method = this.method) {
+    return this.autoSamples && METHOD_TABLE[method].blur === 'footprint';
+  }
+
+  /** The kernel's count when 'auto' starts: the footprints' bound, or a middle count for fixed taps. */
+  _autoStart(method) {
+    return METHOD_TABLE[method].blur === 'footprint' ? AUTO_MAX_SAMPLES : 17;
   }
 
   /** The blur's reach with `samples` taps, mm: below half a pixel of it nothing moves. */
@@ -109,10 +131,14 @@ export class BlurStage {
    */
   setKernel({ method = this.method, samples, ...options } = {}) {
     checkOneOf('method', method, METHODS);
-    if (samples === 'auto') this.autoSamples = true;
-    else if (samples !== undefined) {
+    if (samples === 'auto') {
+      this.autoSamples = true;
+      options.samples = this._autoStart(method);
+    } else if (samples !== undefined) {
       this.autoSamples = false;
       options.samples = samples;
+    } else if (this.autoSamples && this._autoFootprints(method) !== this._autoFootprints()) {
+      options.samples = this._autoStart(method); // 'auto' kept across a switch of method
     }
     this.applyKernel(options, method);
   }
@@ -131,6 +157,7 @@ export class BlurStage {
       this._densePass?.setProfile(next.profile);
     }
     for (const pass of [this.horizontalPass, this.verticalPass]) {
+      pass.autoFootprints = this._autoFootprints(method);
       pass.setMode(blurModeOf(method));
       pass.setKernel(kernel);
       pass.setStrength(next.strength ?? [1, 1, 1]);

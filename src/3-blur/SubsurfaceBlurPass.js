@@ -71,8 +71,10 @@ export class SubsurfaceBlurPass extends SurfacePass {
    *   surface along the axis and compare depths with the local plane (see the shader's header)
    * @param {number[]} [options.strength=[1, 1, 1]] RGB in [0, 1], 'footprint' mode: mix with no
    *   scattering (fixed-tap kernels carry their strength in their weights)
+   * @param {boolean} [options.autoFootprints=false] 'footprint' mode: per pixel the fewest taps within
+   *   AUTO_STEP_ERROR for its scale, up to the kernel's count (give a kernel of AUTO_MAX_SAMPLES taps)
    */
-  constructor({ direction, kernel, mode = 'taps', profileLookup = null, strength = [1, 1, 1], ...surface } = {}) {
+  constructor({ direction, kernel, mode = 'taps', profileLookup = null, strength = [1, 1, 1], autoFootprints = false, ...surface } = {}) {
     checkOneOf('direction', direction, DIRECTIONS);
     checkOneOf('mode', mode, KERNEL_MODES);
     if (mode === 'footprint' && !(profileLookup instanceof ProfileLookup)) {
@@ -98,6 +100,8 @@ export class SubsurfaceBlurPass extends SurfacePass {
     this.uniforms.tProfile.value = profileLookup?.texture ?? null;
     /** The footprint allocation for the profile and the kernel's tap count ('footprint' mode). */
     this.footprintTable = profileLookup ? new FootprintTable(profileLookup) : null;
+    /** 'footprint' mode: taps chosen per pixel for its scale ('auto'), or the kernel's count everywhere. */
+    this.autoFootprints = autoFootprints;
     this.setKernel(kernel);
     this.setStrength(strength);
   }
@@ -113,6 +117,11 @@ export class SubsurfaceBlurPass extends SurfacePass {
    */
   get radiusMm() {
     return this.mode === 'footprint' ? this.profileLookup.marginalRadiusMm : kernelRadiusMm(this.kernel);
+  }
+
+  /** What the footprint table is built for: 'auto', or the kernel's tap count. */
+  get footprintSamples() {
+    return this.autoFootprints ? 'auto' : this.kernel.length / 4;
   }
 
   /** @param {'taps'|'footprint'} mode see the constructor */
@@ -142,7 +151,7 @@ export class SubsurfaceBlurPass extends SurfacePass {
 
   render(renderer, writeBuffer, readBuffer, deltaTime, maskActive) {
     if (this.profileLookup) this.uniforms.marginalRangeMm.value = this.profileLookup.marginalRangeMm;
-    if (this.mode === 'footprint') this.uniforms.tFootprints.value = this.footprintTable.update(this.kernel.length / 4);
+    if (this.mode === 'footprint') this.uniforms.tFootprints.value = this.footprintTable.update(this.footprintSamples);
     this.uniforms.kernelRadiusMm.value = this.radiusMm;
     super.render(renderer, writeBuffer, readBuffer, deltaTime, maskActive);
   }

@@ -6,7 +6,7 @@
 import { DataTexture, FloatType, NearestFilter, RGFormat } from 'three';
 import { footprintTable, FOOTPRINT_ROWS } from './footprints.js';
 
-/** profile → samples → table (computing one takes tens of ms). */
+/** profile → samples (or 'auto') → table (computing one takes tens of ms; 'auto' a few hundred). */
 const tables = new WeakMap();
 
 function tableOf(lookup, samples) {
@@ -29,7 +29,8 @@ export class FootprintTable {
 
   /**
    * Makes the texture hold the table of the lookup's current profile for `samples` taps.
-   * @param {number} samples taps per direction (odd, ≥ 3)
+   * @param {number|'auto'} samples taps per direction (odd, ≥ 3), or 'auto': per scale the fewest
+   *   within AUTO_STEP_ERROR (the shader's loop then runs to AUTO_MAX_SAMPLES at most)
    * @returns {DataTexture}
    */
   update(samples) {
