@@ -1,0 +1,244 @@
+// The analytic accuracy suite: a flat plane of subsurface material seen straight on at a known
+// scale (test/pages/lab.js's `flat`), with cosine gratings and step edges of albedo, blurred by the
+// pipeline and compared with closed forms of the profiles (written out here, independent of the
+// library's kernel code):
+// - transfer of a grating at f cycles/mm along an axis: the marginal's Fourier transform M(f):
+//   Gaussian sums Σ wᵢ exp(−2π² vᵢ f²) (d'Eon skin, marble), Burley ¼(1/√(1+(2πfl)²) + 3/√(1+(6πfl)²));
+//   along the diagonal a separable blur gives M(f/√2)²;
+// - a step edge: the exact 1D convolution of the pixel image with the marginal, E(x) = the
+//   profile's energy beyond a line at x (Gaussian sums: Σ wᵢ erfc(x/√(2vᵢ))/2; Burley: a polar
+//   integral of its closed-form R, computed here).
+// Thresholds for the default ('footprint', samples 'auto'): transfer within 0.03 where the grating
+// has at least 4 pixels per cycle, step edges within 1 % of the step, at 0.5-10 px/mm.
+import { describe, it, expect, beforeAll, afterAll } from 'vitest';
+import { openPage, evaluateFloats } from '../harness/page.js';
+
+let page;
+beforeAll(async () => { page = await openPage('/test/pages/lab.html'); });
+afterAll(async () => {
+  expect(page.problems).toEqual([]);
+  await page.close();
+});
+
+// ---- closed forms (d'Eon & Luebke 2007's six Gaussians; the skinBurley scatter distances, which
+// src/profiles/presets.js documents and the profile unit tests derive from skin's radii) ----
+const DEON = [
+  [0.0064, [0.233, 0.455, 0.649]], [0.0484, [0.1, 0.336, 0.344]], [0.187, [0.118, 0.198, 0]],
+  [0.567, [0.113, 0.007, 0.007]], [1.99, [0.358, 0.004, 0]], [7.41, [0.078, 0, 0]],
+];
+const MARBLE = [
+  [0.0362, [0.0545, 0.1245, 0.2177]], [0.1145, [0.2437, 0.2435, 0.189]], [0.4556, [0.3105, 0.3158, 0.3742]], [3.4833, [0.3913, 0.3161, 0.219]],
+];
+const BURLEY_L = [0.41954, 0.097094, 0.059361];
+
+function normalised(gaussians) {
+  const sums = [0, 1, 2].map((c) => gaussians.reduce((s, [, w]) => s + w[c], 0));
+  return gaussians.map(([v, w]) => [v, w.map((x, c) => x / sums[c])]);
+}
+const GAUSSIANS = { skin: normalised(DEON), marble: normalised(MARBLE) };
+
+/** M(f): the marginal's Fourier transform, per channel. */
+function transferOf(profile, f) {
+  if (profile === 'skinBurley') {
+    return BURLEY_L.map((l) => 0.25 * (1 / Math.hypot(1, 2 * Math.PI * f * l) + 3 / Math.hypot(1, 6 * Math.PI * f * l)));
+  }
+  return [0, 1, 2].map((c) => GAUSSIANS[profile].reduce((s, [v, w]) => s + w[c] * Math.exp(-2 * Math.PI ** 2 * v * f * f), 0));
+}
+
+/** erfc (Abramowitz & Stegun 7.1.26 is too coarse here: a series / continued fraction, 1e-12). */
+function erfc(x) {
+  if (x < 0) return 2 - erfc(-x);
+  if (x < 2) {
+    let term = x;
+    let sum = x;
+    for (let n = 1; n < 60; n++) { term *= (2 * x * x) / (2 * n + 1); sum += term; }
+    return 1 - (2 / Math.sqrt(Math.PI)) * Math.exp(-x * x) * sum;
+  }
+  let f = 0;
+  for (let n = 60; n >= 1; n--) f = (n / 2) / (x + f);
+  return Math.exp(-x * x) / (Math.sqrt(Math.PI) * (x + f));
+}
+
+/** E(x): the profile's energy beyond the line at x mm (x may be negative), per channel. */
+function beyondLine(profile, x) {
+  if (x < 0) return beyondLine(profile, -x).map((e) => 1 - e);
+  if (profile !== 'skinBurley') return [0, 1, 2].map((c) => GAUSSIANS[profile].reduce((s, [v, w]) => s + w[c] * 0.5 * erfc(x / Math.sqrt(2 * v)), 0));
+  // Burley: R(r) = (e^{−r/l} + e^{−r/3l}) / (8π l r); the circle of radius r > x has the angle
+  // 2 acos(x / r) beyond the line: E(x) = ∫_x^∞ 2 acos(x/r) R(r) r dr, with r = x + u² against the
+  // square-root start, trapezoid in u (smooth), out to 80 l.
+  return BURLEY_L.map((l) => {
+    if (x === 0) return 0.5;
+    const R = (r) => (Math.exp(-r / l) + Math.exp(-r / (3 * l))) / (8 * Math.PI * l * r);
+    const U = Math.sqrt(80 * l);
+    const n = 6000;
+    let sum = 0;
+    for (let k = 1; k <= n; k++) {
+      const u = (k / n) * U;
+      const r = x + u * u;
+      sum += (k === n ? 0.5 : 1) * 2 * Math.acos(x / r) * R(r) * r * 2 * u;
+    }
+    return sum * (U / n);
+  });
+}
+
+// ---- measurement ----
+/** Solves the small dense system A y = b (Gaussian elimination with partial pivoting). */
+function solve(A, b) {
+  const n = b.length;
+  const M = A.map((row, i) => [...row, b[i]]);
+  for (let i = 0; i < n; i++) {
+    let p = i;
+    for (let k = i + 1; k < n; k++) if (Math.abs(M[k][i]) > Math.abs(M[p][i])) p = k;
+    [M[i], M[p]] = [M[p], M[i]];
+    for (let k = i + 1; k < n; k++) {
+      const m = M[k][i] / M[i][i];
+      for (let j = i; j <= n; j++) M[k][j] -= m * M[i][j];
+    }
+  }
+  const y = new Array(n).fill(0);
+  for (let i = n - 1; i >= 0; i--) {
+    let s = M[i][n];
+    for (let j = i + 1; j < n; j++) s -= M[i][j] * y[j];
+    y[i] = s / M[i][i];
+  }
+  return y;
+}
+
+/**
+ * Amplitude of each frequency in channel c of an image: least squares of c0 + Σ aₖ cos + bₖ sin
+ * over the pixels at least `margin` from the image's border, u the coordinate along the grating (mm).
+ */
+function amplitudes(image, { width, height }, c, frequencies, s, angleDeg, margin) {
+  const cos = Math.cos((angleDeg * Math.PI) / 180);
+  const sin = Math.sin((angleDeg * Math.PI) / 180);
+  const n = 1 + 2 * frequencies.length;
+  const A = Array.from({ length: n }, () => new Array(n).fill(0));
+  const b = new Array(n).fill(0);
+  const basis = new Array(n);
+  for (let y = margin; y < height - margin; y++) {
+    for (let x = margin; x < width - margin; x++) {
+      const u = (((x + 0.5 - width / 2) * cos) + ((y + 0.5 - height / 2) * sin)) / s;
+      basis[0] = 1;
+      frequencies.forEach((f, k) => {
+        basis[1 + 2 * k] = Math.cos(2 * Math.PI * f * u);
+        basis[2 + 2 * k] = Math.sin(2 * Math.PI * f * u);
+      });
+      const v = image[(y * width + x) * 4 + c];
+      for (let i = 0; i < n; i++) {
+        b[i] += basis[i] * v;
+        for (let j = 0; j < n; j++) A[i][j] += basis[i] * basis[j];
+      }
+    }
+  }
+  const coef = solve(A, b);
+  return frequencies.map((_, k) => Math.hypot(coef[1 + 2 * k], coef[2 + 2 * k]));
+}
+
+const FREQUENCIES = [0.05, 0.1, 0.25, 0.4, 0.7, 1.0, 1.5];
+/** The frequencies a scale can show with at least 4 pixels per cycle (at most 1.5 cycles/mm). */
+const frequenciesAt = (s) => FREQUENCIES.filter((f) => f <= 0.25 * s + 1e-9).slice(-5);
+
+/** Measured transfer per frequency and channel, and its worst difference from `expected(f)`. */
+async function grating({ profile, s, angleDeg = 0, width = 256, height = 256, sss = {}, expected = (f) => transferOf(profile, f) }) {
+  const frequencies = frequenciesAt(s);
+  const phases = frequencies.map((_, k) => 0.7 * k);
+  const r = await evaluateFloats(page, (o) => window.lab.flat(o), { width, height, pxPerMm: s, pattern: 'cosines', frequencies, phases, angleDeg, sss: { profile, ...sss } });
+  expect(r.glError).toBe(0);
+  // Away from the border by the kernel's reach (red skin: 99.9 % within 9 mm), and at least 8 px.
+  const margin = Math.min(Math.max(8, Math.ceil(9 * s)), Math.floor(Math.min(width, height) / 2) - 40);
+  let worst = 0;
+  const measured = [];
+  for (let c = 0; c < 3; c++) {
+    const before = amplitudes(r.before, r, c, frequencies, s, angleDeg, margin);
+    const after = amplitudes(r.after, r, c, frequencies, s, angleDeg, margin);
+    measured.push(after.map((a, k) => a / before[k]));
+  }
+  frequencies.forEach((f, k) => {
+    const e = expected(f);
+    for (let c = 0; c < 3; c++) worst = Math.max(worst, Math.abs(measured[c][k] - e[c]));
+  });
+  return { worst, measured, frequencies };
+}
+
+/** Worst |measured − exact| of a step edge's response along the row (or column) through the centre, per channel. */
+async function stepEdge({ profile, s, angleDeg = 0, width = 256, height = 256, sss = {} }) {
+  const low = 0.05;
+  const r = await evaluateFloats(page, (o) => window.lab.flat(o), { width, height, pxPerMm: s, pattern: 'step', angleDeg, low, sss: { profile, ...sss } });
+  expect(r.glError).toBe(0);
+  const vertical = angleDeg === 90;
+  const length = vertical ? height : width;
+  const reach = Math.min(Math.ceil(12 * s), length / 2 - 2);
+  const at = (image, i, c) => {
+    const x = vertical ? width / 2 : length / 2 + i;
+    const y = vertical ? length / 2 + i : height / 2;
+    return image[(y * width + x) * 4 + c];
+  };
+  let worst = 0;
+  for (let i = -reach; i < reach; i++) {
+    // Pixel i from the edge (the edge between pixels −1 and 0): lit pixels are j ≥ 0, so the exact
+    // response is the energy beyond the line through the edge, at (−i − 1/2) / s mm from the centre.
+    const exact = beyondLine(profile, (-i - 0.5) / s);
+    for (let c = 0; c < 3; c++) {
+      // The step's two levels as the material shaded them (three's diffuse is not exactly the albedo).
+      const dark = at(r.before, -reach, c);
+      const lit = at(r.before, reach - 1, c);
+      const response = (at(r.after, i, c) - dark) / (lit - dark);
+      worst = Math.max(worst, Math.abs(response - exact[c]));
+    }
+  }
+  return worst;
+}
+
+describe("the default ('footprint', samples 'auto') against closed forms", () => {
+  for (const profile of ['skin', 'skinBurley']) {
+    for (const s of [1, 2, 5, 10]) {
+      it(`${profile}: gratings along x and y at ${s} px/mm have the analytic transfer within 0.03`, async () => {
+        for (const angleDeg of [0, 90]) {
+          const { worst, frequencies } = await grating({ profile, s, angleDeg });
+          expect(frequencies.length).toBeGreaterThan(0);
+          expect(worst, `${angleDeg}°`).toBeLessThan(0.03);
+        }
+      });
+    }
+    it(`${profile}: step edges along x and y at 0.5-8 px/mm are within 1 % of the exact 1D convolution`, async () => {
+      for (const s of [0.5, 1, 2, 4, 8]) {
+        for (const angleDeg of [0, 90]) expect(await stepEdge({ profile, s, angleDeg }), `${s} px/mm, ${angleDeg}°`).toBeLessThan(0.01);
+      }
+    });
+  }
+
+  it('marble: gratings along x at 2 and 5 px/mm within 0.03', async () => {
+    for (const s of [2, 5]) expect((await grating({ profile: 'marble', s })).worst).toBeLessThan(0.03);
+  });
+
+  it('a diagonal grating gets the separable transfer M(f/√2)², within 0.03 (the radial M(f) differs: the separable approximation)', async () => {
+    const separable = (f) => transferOf('skin', f / Math.SQRT2).map((m) => m * m);
+    const r = await grating({ profile: 'skin', s: 3, angleDeg: 45, expected: separable });
+    expect(r.worst).toBeLessThan(0.03);
+  });
+
+  it('is the same along x and y whatever the viewport aspect (2:1 and 1:2)', async () => {
+    const wide = await grating({ profile: 'skin', s: 2, angleDeg: 0, width: 384, height: 192 });
+    const tall = await grating({ profile: 'skin', s: 2, angleDeg: 90, width: 192, height: 384 });
+    expect(wide.worst).toBeLessThan(0.03);
+    for (let c = 0; c < 3; c++) wide.measured[c].forEach((m, k) => expect(Math.abs(m - tall.measured[c][k])).toBeLessThan(0.005));
+  });
+});
+
+describe('the other methods against the same closed forms (their known accuracy)', () => {
+  it("'footprint' with a fixed 17 taps: step edges within 1 % up to 4 px/mm", async () => {
+    for (const s of [1, 4]) expect(await stepEdge({ profile: 'skin', s, sss: { samples: 17 } })).toBeLessThan(0.01);
+  });
+
+  it("'marginal' (fixed taps): step edges within 7 % at 2 px/mm, the staircase of point taps", async () => {
+    const worst = await stepEdge({ profile: 'skin', s: 2, sss: { method: 'marginal', samples: 17 } });
+    expect(worst).toBeLessThan(0.07);
+    expect(worst).toBeGreaterThan(0.01); // the footprint method is the better one
+  });
+
+  it("'reference' (Jimenez's kernel samples the radial profile): step edges off by up to about 0.3", async () => {
+    const worst = await stepEdge({ profile: 'skin', s: 2, sss: { method: 'reference', samples: 17 } });
+    expect(worst).toBeGreaterThan(0.1);
+    expect(worst).toBeLessThan(0.35);
+  });
+});
