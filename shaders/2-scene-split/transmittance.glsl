@@ -8,32 +8,58 @@
 uniform sampler2D sssLightDepthMap;   // LightDepthTarget.texture: linear light depth, 0 = no surface
 uniform mat4 sssViewToLightView;       // camera view space -> light view space
 uniform mat4 sssLightProjection;       // the light camera's projection matrix
-uniform float sssShrinkWorld;          // inward shrink along the vertex normal, against acne
+uniform float sssShrinkWorld;          // inward shrink along the vertex normal, world units: where the map is read, and the fade-in
 uniform sampler2D sssProfileLookup;   // ProfileLookup.texture: row 0 is T(d), d in profile mm
 uniform float sssTransmittanceRangeMm; // ProfileLookup.transmittanceRangeMm
 uniform float sssThicknessToProfileMm; // worldUnitInMm * (1 - translucency) / widthMm
 
-// Thickness between the light's nearest surface and this point, in world units; negative when
-// the point is outside the light's frustum or nothing was recorded there.
-float sssThicknessWorld( const in vec3 viewPosition, const in vec3 viewVertexNormal ) {
-	// Shrink inward along the (vertex, not bump-mapped) normal so the lit surface itself does not
-	// read as a thin shell (REFERENCE §5: about 0.6 mm in the reference).
+// The profile's transmitted fraction for `thicknessWorld` of material: T(d) at d in profile mm.
+// Within the first shrink below the recorded surface a point reads as that surface (a lit surface
+// measures about 0 there): the light fades in over it, so a lit surface and its terminator get no
+// second share of their own light.
+vec3 sssTransmittanceProfile( const in float thicknessWorld ) {
+	float fade = sssShrinkWorld > 0.0 ? smoothstep( 0.0, sssShrinkWorld, thicknessWorld ) : 1.0;
+	return fade * sssReadProfile( sssProfileLookup, 0, thicknessWorld * sssThicknessToProfileMm, sssTransmittanceRangeMm );
+}
+
+// The light through this point, per RGB: T of the thickness between the light's nearest surface and
+// the point, as a fraction of the light, averaged over the four map texels around the point's
+// projection with their bilinear weights (a texel with nothing recorded, or whose surface is not in
+// front of the point, sends nothing). Averaging T, not depth, keeps silhouettes in the light's view
+// from mixing a near surface's depth with a far one's, and turns their aliasing (lines of single
+// lit pixels where the map's texels step along a rim) into a smooth edge.
+// The map is read a little inward along the (vertex, not bump-mapped) normal, so that a lit surface
+// finds itself and not a texel of whatever lies beside it (REFERENCE §5's shrink, about 0.6 mm);
+// the thickness is measured from the point itself, so the shrink does not shorten it.
+vec3 sssTransmittance( const in vec3 viewPosition, const in vec3 viewVertexNormal ) {
 	vec3 shrunk = viewPosition - sssShrinkWorld * viewVertexNormal;
 	vec4 lightView = sssViewToLightView * vec4( shrunk, 1.0 );
 	vec4 clip = sssLightProjection * lightView;
 	vec3 ndc = clip.xyz / clip.w;
+	if ( clip.w <= 0.0 || any( greaterThan( abs( ndc.xy ), vec2( 1.0 ) ) ) ) return vec3( 0.0 );
+	float depth = - ( sssViewToLightView * vec4( viewPosition, 1.0 ) ).z; // the point's own light depth
+	ivec2 size = textureSize( sssLightDepthMap, 0 );
+	vec2 texel = ( ndc.xy * 0.5 + 0.5 ) * vec2( size ) - 0.5;
+	ivec2 base = ivec2( floor( texel ) );
+	vec2 f = texel - vec2( base );
+	vec3 light = vec3( 0.0 );
+	for ( int k = 0; k < 4; k ++ ) {
+		ivec2 offset = ivec2( k & 1, k >> 1 );
+		float weight = ( offset.x == 1 ? f.x : 1.0 - f.x ) * ( offset.y == 1 ? f.y : 1.0 - f.y );
+		float nearest = texelFetch( sssLightDepthMap, clamp( base + offset, ivec2( 0 ), size - 1 ), 0 ).r;
+		float thickness = depth - nearest;
+		if ( nearest > 0.0 && thickness > 0.0 ) light += weight * sssTransmittanceProfile( thickness );
+	}
+	return light;
+}
+
+// The thickness the light crosses to this point (world units, the map's nearest texel), for the
+// debug view; negative where nothing was recorded or the point is not behind the recorded surface.
+float sssThicknessWorld( const in vec3 viewPosition, const in vec3 viewVertexNormal ) {
+	vec4 clip = sssLightProjection * sssViewToLightView * vec4( viewPosition - sssShrinkWorld * viewVertexNormal, 1.0 );
+	vec3 ndc = clip.xyz / clip.w;
 	if ( clip.w <= 0.0 || any( greaterThan( abs( ndc.xy ), vec2( 1.0 ) ) ) ) return - 1.0;
 	float nearest = texture( sssLightDepthMap, ndc.xy * 0.5 + 0.5 ).r;
-	if ( nearest <= 0.0 ) return - 1.0;
-	return max( - lightView.z - nearest, 0.0 );
-}
-
-// T(d) of the profile for this thickness (world units), per RGB; 0 where nothing was recorded.
-vec3 sssTransmittanceProfile( const in float thicknessWorld ) {
-	if ( thicknessWorld < 0.0 ) return vec3( 0.0 );
-	return sssReadProfile( sssProfileLookup, 0, thicknessWorld * sssThicknessToProfileMm, sssTransmittanceRangeMm );
-}
-
-vec3 sssTransmittance( const in vec3 viewPosition, const in vec3 viewVertexNormal ) {
-	return sssTransmittanceProfile( sssThicknessWorld( viewPosition, viewVertexNormal ) );
+	float thickness = - ( sssViewToLightView * vec4( viewPosition, 1.0 ) ).z - nearest;
+	return nearest > 0.0 && thickness > 0.0 ? thickness : - 1.0;
 }

@@ -4,7 +4,7 @@ import { describe, it, expect, beforeAll, afterAll } from 'vitest';
 import { mat4 } from 'gl-matrix';
 import { openPage, runLab } from '../harness/page.js';
 import { at } from '../harness/images.js';
-import { transmittanceOracle, thicknessFromLightDepth } from '../oracle/transmittance.js';
+import { transmittedFractionOracle, thicknessFromLightDepth } from '../oracle/transmittance.js';
 
 let page;
 beforeAll(async () => { page = await openPage('/test/pages/lab.html'); });
@@ -28,8 +28,10 @@ function expected(thicknessMm) {
     shrinkWorld: SHRINK_MM / WORLD_UNIT_IN_MM,
     mapDepth: () => 10 - half, // the back face is the light's nearest surface
   });
-  // Light intensity π, wrap saturate(0.3 + 1) = 1, white albedo: diffuse radiance = T.
-  return transmittanceOracle({ thicknessMm: thicknessWorld * WORLD_UNIT_IN_MM, profile: 'skin' });
+  // Light intensity π straight behind (towards the light: −z in view space), wrap saturate(0.3 + 1)
+  // = 1, white albedo: diffuse radiance = the transmitted fraction.
+  if (thicknessWorld === Infinity) return [0, 0, 0];
+  return transmittedFractionOracle({ thicknessMm: thicknessWorld * WORLD_UNIT_IN_MM, profile: 'skin', shrinkMm: SHRINK_MM, towardLightViewZ: -1 });
 }
 
 async function backlit(thicknessMm) {
@@ -118,5 +120,75 @@ describe('transmittance', () => {
     expect(result.second).toBeCloseTo(12, 4);
     expect(result.cameraZ).toBe(12);
     expect(result.fov).toBeCloseTo(60, 6);
+  });
+});
+
+describe('transmittance artifacts', () => {
+  it('a front or side light adds nothing through a thick sphere: no band along the terminator (version 0.1: 2 % of the lit level)', async () => {
+    const r = await page.evaluate(async () => {
+      const { THREE, SSS, createRenderer, createComposer, read } = window.lab;
+      const renderer = createRenderer(128, 128);
+      const scene = new THREE.Scene();
+      const camera = new THREE.PerspectiveCamera(30, 1, 0.01, 10);
+      camera.position.set(0, 0, 0.4);
+      const skin = new THREE.MeshStandardMaterial({ color: 0xffffff, roughness: 0.6 });
+      scene.add(new THREE.Mesh(new THREE.SphereGeometry(0.08, 96, 64), skin));
+      const out = {};
+      for (const [name, direction] of [['front-side', [1, 0.2, 0.6]], ['side', [1, 0.2, 0]]]) {
+        const light = new THREE.DirectionalLight(0xffffff, Math.PI);
+        light.position.set(...direction.map((v) => v * 0.5));
+        Object.assign(light.shadow.camera, { left: -0.12, bottom: -0.12, right: 0.12, top: 0.12, near: 0.01, far: 2 });
+        scene.add(light, light.target);
+        const sss = new SSS.SubsurfaceScattering({ scene, camera, light, worldUnitInMm: 1000 });
+        sss.makeSubsurface(skin);
+        const composer = createComposer(renderer, { type: THREE.FloatType });
+        composer.addPass(sss);
+        composer.render();
+        const on = await read(renderer, sss.scenePass.renderTarget, 1);
+        sss.setTransmittance(false);
+        composer.render();
+        const off = await read(renderer, sss.scenePass.renderTarget, 1);
+        let added = 0;
+        let lit = 0;
+        for (let i = 0; i < on.length; i += 4) for (let c = 0; c < 3; c++) { added = Math.max(added, on[i + c] - off[i + c]); lit = Math.max(lit, off[i + c]); }
+        out[name] = added / lit;
+        sss.dispose();
+        composer.dispose();
+        scene.remove(light, light.target);
+      }
+      return out;
+    });
+    expect(r['front-side']).toBeLessThan(1e-3);
+    expect(r.side).toBeLessThan(1e-3);
+  });
+
+  it('with a wide spot cone (36°) behind the head, no single lit pixels: the light map is read with bilinear weights (version 0.1: about 100)', async () => {
+    const demo = await openPage('/?still', { width: 640, height: 360 });
+    const r = await demo.evaluate(async () => {
+      const d = window.demo;
+      d.stop();
+      d.rig.light.angle = (36 * Math.PI) / 180;
+      d.set('lightAzimuth', 160);
+      d.set('view', 'transmittance');
+      const { width: W, height: H, data } = await d.readHdr();
+      const L = (i) => data[i * 4] + data[i * 4 + 1] + data[i * 4 + 2];
+      let isolated = 0;
+      let lit = 0;
+      for (let y = 1; y < H - 1; y++) {
+        for (let x = 1; x < W - 1; x++) {
+          const i = y * W + x;
+          const v = L(i);
+          if (v > 0.01) lit++;
+          // Lit on its own: brighter than 4 × its second-brightest neighbour.
+          const around = [L(i - 1), L(i + 1), L(i - W), L(i + W), L(i - W - 1), L(i - W + 1), L(i + W - 1), L(i + W + 1)].sort((a, b) => a - b);
+          if (v > 0.05 && v > 4 * around[6] + 0.02) isolated++;
+        }
+      }
+      return { isolated, lit, standIn: d.isStandIn };
+    });
+    expect(demo.problems).toEqual([]);
+    await demo.close();
+    expect(r.lit).toBeGreaterThan(100); // the rims do glow
+    expect(r.isolated).toBeLessThanOrEqual(5);
   });
 });

@@ -28,13 +28,15 @@ export function transmittanceOracle({ thicknessMm, profile = 'skin', widthMm = 1
 }
 
 /**
- * Thickness seen by the light, from a linear light depth map (REFERENCE §5):
- *   shrunk = point − normalize(normal) · shrinkWorld        (pushed inward along the vertex normal, against acne)
- *   v = lightView · shrunk; its light depth = −v.z          (three.js cameras look down −z)
- *   thickness = |lightDepth(shrunk) − mapDepth(at the shrunk point's projection)|.
- * `mapDepth` is called with the light-view position (vec3) and, when `lightProjectionMatrix` is given, the
- * map coordinates uv ∈ [0, 1]² of the projection; a stored 0 means "nothing rendered there" and gives
- * Infinity, as does a projection outside the map.
+ * Thickness seen by the light, from a linear light depth map (REFERENCE §5, with the shrink only
+ * moving where the map is read):
+ *   shrunk = point − normalize(normal) · shrinkWorld        (pushed inward along the vertex normal)
+ *   the map is read at the shrunk point's projection; the point's own light depth −(lightView · point).z
+ *   thickness = lightDepth(point) − mapDepth(at the shrunk point's projection).
+ * `mapDepth` is called with the shrunk light-view position (vec3) and, when `lightProjectionMatrix` is
+ * given, the map coordinates uv ∈ [0, 1]² of the projection; a stored 0 means "nothing rendered there"
+ * and gives Infinity, as does a projection outside the map; a point not behind the stored surface
+ * (thickness ≤ 0) is that surface, lit directly, and gives Infinity too (nothing comes through).
  * @param {object} args
  * @param {ArrayLike<number>} args.lightViewMatrix mat4, world → light view (column-major, gl-matrix/three.js)
  * @param {ArrayLike<number>} [args.lightProjectionMatrix] mat4, light view → clip
@@ -42,7 +44,7 @@ export function transmittanceOracle({ thicknessMm, profile = 'skin', widthMm = 1
  * @param {ArrayLike<number>} args.normalWorld vec3, the vertex (not bump-mapped) normal
  * @param {number} [args.shrinkWorld=0] inward push in world units (reference: 0.005 at 1 unit = 1/8 m)
  * @param {(lightViewPosition: Float64Array, uv: Float64Array|null) => number} args.mapDepth linear depth stored in the map
- * @returns {number} thickness in world units (Infinity when the map holds nothing)
+ * @returns {number} thickness in world units (Infinity when nothing comes through)
  */
 export function thicknessFromLightDepth({
   lightViewMatrix,
@@ -56,15 +58,33 @@ export function thicknessFromLightDepth({
   if (typeof mapDepth !== 'function') throw new TypeError('mapDepth must be a function');
   const normal = vec3.normalize(new Float64Array(3), normalWorld);
   const shrunk = vec3.scaleAndAdd(new Float64Array(3), pointWorld, normal, -shrinkWorld);
-  const viewPosition = vec3.transformMat4(new Float64Array(3), shrunk, lightViewMatrix);
-  const lightDepth = -viewPosition[2];
+  const shrunkView = vec3.transformMat4(new Float64Array(3), shrunk, lightViewMatrix);
+  const lightDepth = -vec3.transformMat4(new Float64Array(3), pointWorld, lightViewMatrix)[2];
   let uv = null;
   if (lightProjectionMatrix) {
-    const clip = vec4.transformMat4(new Float64Array(4), [viewPosition[0], viewPosition[1], viewPosition[2], 1], lightProjectionMatrix);
+    const clip = vec4.transformMat4(new Float64Array(4), [shrunkView[0], shrunkView[1], shrunkView[2], 1], lightProjectionMatrix);
     uv = new Float64Array([0.5 * (clip[0] / clip[3]) + 0.5, 0.5 * (clip[1] / clip[3]) + 0.5]);
     if (!(uv[0] >= 0 && uv[0] <= 1 && uv[1] >= 0 && uv[1] <= 1)) return Infinity;
   }
-  const stored = mapDepth(viewPosition, uv);
+  const stored = mapDepth(shrunkView, uv);
   if (stored === 0) return Infinity;
-  return Math.abs(lightDepth - stored);
+  const thickness = lightDepth - stored;
+  return thickness > 0 ? thickness : Infinity;
+}
+
+/**
+ * The fraction of the light that arrives through `thicknessMm` of material: T(d) (transmittanceOracle)
+ * faded in over the first `shrinkMm` (a smoothstep: below the recorded surface by less than the
+ * shrink, a point reads as that surface, lit directly), times the view factor: only light from behind
+ * the point as the camera sees it, smoothstep(0, 0.25, −z) of the unit vector to the light in view space.
+ * @param {object} args transmittanceOracle's, and
+ * @param {number} [args.shrinkMm=0]
+ * @param {number} [args.towardLightViewZ=-1] z of the unit vector from the point to the light, view space (+z: to the camera)
+ * @returns {number[]} [r, g, b]
+ */
+export function transmittedFractionOracle({ shrinkMm = 0, towardLightViewZ = -1, ...args }) {
+  const smoothstep = (e0, e1, x) => { const t = Math.min(Math.max((x - e0) / (e1 - e0), 0), 1); return t * t * (3 - 2 * t); };
+  const fade = shrinkMm > 0 ? smoothstep(0, shrinkMm, args.thicknessMm) : 1;
+  const view = smoothstep(0, 0.25, -towardLightViewZ);
+  return transmittanceOracle(args).map((t) => t * fade * view);
 }

@@ -15,12 +15,15 @@
 			sssAttenuation = getSpotAttenuation( sssSpotConeCos, sssSpotPenumbraCos, dot( sssToLight, sssLightDirectionView ) )
 				* getDistanceAttenuation( sssLightDistance, sssLightCutoffDistance, sssLightDecay );
 		}
-		// Wrap lighting on the back side: saturate(0.3 + dot(-N, L)) (REFERENCE §5).
-		float sssWrap = saturate( 0.3 + dot( - nonPerturbedNormal, sssToLight ) );
-		float sssThickness = sssThicknessWorld( sssPosition, nonPerturbedNormal );
-		sssThicknessMm = sssThickness * sssThicknessToProfileMm;
+		// Wrap lighting on the back side: saturate(0.3 + dot(-N, L)) (REFERENCE §5), for light that
+		// comes from behind the point as the camera sees it (view space: +z points to the camera).
+		// Light from the camera's side reaches what the camera sees through its lit, visible
+		// neighbourhood, which the blur already spreads: counted again it made a bright band
+		// along a front light's terminator.
+		float sssWrap = saturate( 0.3 + dot( - nonPerturbedNormal, sssToLight ) ) * smoothstep( 0.0, 0.25, - sssToLight.z );
+		sssThicknessMm = sssThicknessWorld( sssPosition, nonPerturbedNormal ) * sssThicknessToProfileMm;
 		sssTransmitted = sssLightColor * ( sssAttenuation * sssWrap )
-			* sssTransmittanceProfile( sssThickness ) * BRDF_Lambert( material.diffuseColor );
+			* sssTransmittance( sssPosition, nonPerturbedNormal ) * BRDF_Lambert( material.diffuseColor );
 		// A degenerate light set-up must not turn the whole material NaN (outside the pipeline too).
 		if ( ! sssFinite( sssTransmitted ) ) sssTransmitted = vec3( 0.0 );
 		reflectedLight.directDiffuse += sssTransmitted;
