@@ -47,18 +47,19 @@ function info() {
 /**
  * Builds `scene` at width × height with the pipeline (profile 'skin', footprint, 17 taps until
  * `measure` says otherwise) and the dense pass.
- * @param {{ scene: string, width: number, height: number, float?: boolean, widthMm?: number }} options
+ * @param {{ scene: string, width: number, height: number, float?: boolean, widthMm?: number, tiltDeg?: number }} options
  *   float: float targets everywhere (the dense test), else half float as in the demo; widthMm: the
- *   materials' scattering width instead of the scene's (small test images with wide kernels)
+ *   materials' scattering width instead of the scene's (small test images with wide kernels);
+ *   tiltDeg: the grazing plane's tilt (default 75°)
  */
-async function open({ scene, width, height, float = false, widthMm }) {
+async function open({ scene, width, height, float = false, widthMm, tiltDeg }) {
   close();
   const renderer = new WebGLRenderer({ antialias: false, powerPreference: 'high-performance' });
   renderer.setPixelRatio(1);
   renderer.setSize(width, height, false);
   renderer.shadowMap.enabled = true;
   renderer.toneMapping = ACESFilmicToneMapping; // what OutputPass applies: the SSIM's input
-  const built = await buildScene(scene, { aspect: width / height });
+  const built = await buildScene(scene, { aspect: width / height, tiltDeg });
   const type = float ? FloatType : HalfFloatType;
   const sss = new SubsurfaceScattering({
     scene: built.scene, camera: built.camera, light: built.light, worldUnitInMm: built.worldUnitInMm, type,

@@ -71,12 +71,12 @@ const SYNTHETIC = {
     return { scene, camera: camera(aspect), light: null, subsurface: [far, near] };
   },
   /** A textured plane tilted 75° away from the camera: depth changes fast along the screen's y. */
-  grazing({ aspect }) {
+  grazing({ aspect, tiltDeg = 75 }) {
     const scene = new Scene();
     const material = skinMaterial(0xffffff, noiseTexture());
     material.map.repeat.set(6, 6);
     const plane = new Mesh(new PlaneGeometry(40, 40), material);
-    plane.rotation.x = -(75 * Math.PI) / 180;
+    plane.rotation.x = -(tiltDeg * Math.PI) / 180;
     plane.position.y = -1.5;
     scene.add(plane);
     const light = new DirectionalLight(0xffffff, 4);
@@ -138,13 +138,13 @@ export const SCENE_NAMES = ['head', 'heads4', 'heads16', ...Object.keys(SYNTHETI
  * @param {string} name one of SCENE_NAMES
  * @param {{ aspect: number }} options
  */
-export async function buildScene(name, { aspect }) {
+export async function buildScene(name, { aspect, tiltDeg }) {
   if (name === 'head') return heads({ aspect, count: 1 });
   if (name === 'heads4') return heads({ aspect, count: 4 });
   if (name === 'heads16') return heads({ aspect, count: 16 });
   const build = SYNTHETIC[name];
   if (!build) throw new RangeError(`buildScene: unknown scene ${name}; known: ${SCENE_NAMES.join(', ')}`);
-  const built = build({ aspect });
+  const built = build({ aspect, tiltDeg });
   built.scene.background = new Color(0x000000);
   return { ...built, worldUnitInMm: SYNTHETIC_UNIT_IN_MM, widthMm: 1, isStandIn: false };
 }

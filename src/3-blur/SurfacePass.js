@@ -15,12 +15,14 @@ import { checkNumber, checkOneOf } from '../support/parameterChecks.js';
 import { describe } from '../support/rendererSupport.js';
 import { isPerspective } from '../support/screenScale.js';
 import { FOLLOW_SURFACE_MODES } from '../options.js';
-import { ENERGY_LEFT, MAX_SLOPE, MIN_KERNEL_PIXELS } from './samplingModel.js';
+import { ENERGY_LEFT, MAX_PLANE_SLOPE, MAX_SLOPE, MIN_KERNEL_PIXELS, PLANE_SLOPE_AGREEMENT } from './samplingModel.js';
 
 /** samplingModel.js's numbers as the GLSL defines the shaders read. */
 const SAMPLING_DEFINES = Object.freeze({
   SSS_MIN_KERNEL_PIXELS: glslFloat(MIN_KERNEL_PIXELS),
   SSS_MAX_SLOPE: glslFloat(MAX_SLOPE),
+  SSS_PLANE_SLOPE_AGREEMENT: glslFloat(PLANE_SLOPE_AGREEMENT),
+  SSS_MAX_PLANE_SLOPE: glslFloat(MAX_PLANE_SLOPE),
   SSS_ENERGY_LEFT: glslFloat(ENERGY_LEFT),
 });
 

@@ -17,6 +17,18 @@ export const MIN_KERNEL_PIXELS = 0.5;
 export const MAX_SLOPE = 4;
 
 /**
+ * Where both neighbours lie on the surface and their slopes agree within this fraction of the
+ * larger, the pixel is on one plane however steep (up to MAX_PLANE_SLOPE): a plane tilted past
+ * 76° (MAX_SLOPE) was otherwise taken for a depth edge (no foreshortening, and 'drop' cut the
+ * kernel across it). A real edge has one side on each surface: their slopes differ by the step.
+ * Perspective bends a plane's per-pixel depth steps by a few percent a pixel, well within 25 %.
+ */
+export const PLANE_SLOPE_AGREEMENT = 0.25;
+
+/** The steepest plane followed, world units of depth per world unit across (89°). */
+export const MAX_PLANE_SLOPE = 57;
+
+/**
  * 'footprint' kernels stop once each side has less energy left than this: invisible even at
  * radiance 1e4 in a half-float target (whose step there is about 8).
  */

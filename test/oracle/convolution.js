@@ -17,8 +17,10 @@
  *  2. stepPx = widthWorld_c · P / (2 · depth_c) · resolution: pixels per kernel-mm along a (a world length L
  *     at view depth z spans L·P/z in NDC, which spans 2 over `resolution` pixels).
  *  2b. with `foreshorten` (the GPU's default): slope = depth change per pixel along a from the two
- *     neighbours (central difference; one-sided when a neighbour is off the mask, off the image or steeper
- *     than MAX_SLOPE = 4 world units of depth per world unit across; 0 when both are), pixelWorld =
+ *     neighbours: their central difference when both are on the mask and their slopes agree within
+ *     PLANE_SLOPE_AGREEMENT of the larger (one plane, up to MAX_PLANE_SLOPE); otherwise central difference
+ *     of those no steeper than MAX_SLOPE world units of depth per world unit across, one-sided when only
+ *     one is, 0 when neither (src/3-blur/samplingModel.js's numbers), pixelWorld =
  *     2·depth_c/(P·resolution), tilt = slope/pixelWorld; stepPx /= sqrt(1 + tilt²) (cos of the tilt), and the
  *     depth rule below compares texel t with the plane, depth_c + slope·(t − centre along a), not depth_c.
  *  3. pixel skip: if stepPx · max_k |offset_k| < 0.5 the output is the centre colour (kernel below a pixel).
@@ -50,7 +52,7 @@ import { kernelRadiusMm } from '../../src/profiles/kernel.js';
 
 // The sampling model's numbers (not its code) are shared with the shaders: MIN_KERNEL_PIXELS (pixel
 // skip), MAX_SLOPE (steeper neighbours count as another surface), ENERGY_LEFT ('footprint' stop).
-import { ENERGY_LEFT, MAX_SLOPE, MIN_KERNEL_PIXELS } from '../../src/3-blur/samplingModel.js';
+import { ENERGY_LEFT, MAX_PLANE_SLOPE, MAX_SLOPE, MIN_KERNEL_PIXELS, PLANE_SLOPE_AGREEMENT } from '../../src/3-blur/samplingModel.js';
 
 const FOLLOW_SURFACE_MODES = ['drop', 'lerp', 'off'];
 
@@ -183,9 +185,16 @@ function blurPass(args, src, axisIndex) {
         const after = at(1);
         const slopeBefore = zc - depth[before.idx];
         const slopeAfter = depth[after.idx] - zc;
-        const useBefore = before.moved && widthWorld[before.idx] > 0 && Math.abs(slopeBefore) <= MAX_SLOPE * pixelWorld;
-        const useAfter = after.moved && widthWorld[after.idx] > 0 && Math.abs(slopeAfter) <= MAX_SLOPE * pixelWorld;
-        slope = useBefore && useAfter ? 0.5 * (slopeBefore + slopeAfter) : useBefore ? slopeBefore : useAfter ? slopeAfter : 0;
+        const onBefore = before.moved && widthWorld[before.idx] > 0;
+        const onAfter = after.moved && widthWorld[after.idx] > 0;
+        const steeper = Math.max(Math.abs(slopeBefore), Math.abs(slopeAfter));
+        if (onBefore && onAfter && Math.abs(slopeAfter - slopeBefore) <= PLANE_SLOPE_AGREEMENT * steeper && steeper <= MAX_PLANE_SLOPE * pixelWorld) {
+          slope = 0.5 * (slopeBefore + slopeAfter); // one plane, however steep
+        } else {
+          const useBefore = onBefore && Math.abs(slopeBefore) <= MAX_SLOPE * pixelWorld;
+          const useAfter = onAfter && Math.abs(slopeAfter) <= MAX_SLOPE * pixelWorld;
+          slope = useBefore && useAfter ? 0.5 * (slopeBefore + slopeAfter) : useBefore ? slopeBefore : useAfter ? slopeAfter : 0;
+        }
         const tilt = slope / pixelWorld;
         stepPx /= Math.sqrt(1 + tilt * tilt);
       }
