@@ -33,8 +33,15 @@ export default defineConfig(({ mode }) => {
     root,
     base: './',
     publicDir: 'public',
-    // Pages in this repository (the README's snippet, the bench) import the package by its name.
-    resolve: { alias: { 'three-separable-sss': `${root}src/index.js` } },
+    // Pages in this repository (the README's snippet, the bench, the integration pages) import the
+    // package and its subpaths by name.
+    resolve: {
+      alias: [
+        { find: /^three-separable-sss$/, replacement: `${root}src/index.js` },
+        { find: /^three-separable-sss\/postprocessing$/, replacement: `${root}src/integrations/postprocessing.js` },
+        { find: /^three-separable-sss\/react$/, replacement: `${root}src/integrations/react.js` },
+      ],
+    },
     build: {
       outDir: 'dist/demo',
       emptyOutDir: true,

@@ -31,7 +31,10 @@ import {
   updateLightUniforms, writeTransmittanceUniforms,
 } from './transmittance.js';
 
-/** What the diffuse attachment receives: the diffuse light, or one ingredient for a debug view. */
+/**
+ * What the diffuse attachment receives: the diffuse light, or one ingredient for a debug view.
+ * @type {readonly ('diffuse'|'transmittance'|'thickness')[]}
+ */
 export const MATERIAL_OUTPUTS = Object.freeze(['diffuse', 'transmittance', 'thickness']);
 
 /** The kinds of light transmittance is shaded with. */
@@ -156,6 +159,18 @@ function withWidthScale(options) {
 }
 
 /**
+ * One pipeline's settings on a subsurface material (what makeSubsurface returns).
+ * @typedef {object} SubsurfaceBinding
+ * @property {import('three').MeshStandardMaterial} material
+ * @property {Record<string, import('three').IUniform>} uniforms the hook's uniforms (shared by every binding of the material)
+ * @property {{ widthMm: number, widthScale: number, worldUnitInMm: number, transmittance: object|null }} options
+ * @property {'diffuse'|'transmittance'|'thickness'} debugOutput what the diffuse attachment receives
+ * @property {number} widthWorld world units per profile millimetre (width × widthScale)
+ * @property {(options?: { widthMm?: number, widthScale?: number, worldUnitInMm?: number, transmittance?: object|null }) => void} update
+ * @property {() => void} dispose unbinds these settings; the material is restored once none is left
+ */
+
+/**
  * Makes a MeshStandardMaterial or MeshPhysicalMaterial subsurface-scattering (idempotent: a second
  * call with the same owner updates the options). The material keeps rendering normally outside
  * SubsurfaceScattering.
@@ -170,7 +185,7 @@ function withWidthScale(options) {
  *   `{ lightDepth: LightDepthTarget, lookup: ProfileLookup, translucency?, shrinkMm? }`
  * @param {object} [owner] the pipeline these settings are for (SubsurfaceScattering passes itself);
  *   omitted: settings of their own, used wherever no pipeline with settings of its own draws
- * @returns {{ material: object, uniforms: object, options: object, debugOutput: string, widthWorld: number, update(options: object): void, dispose(): void }}
+ * @returns {SubsurfaceBinding}
  */
 export function makeSubsurface(material, options = {}, owner = STANDALONE) {
   if (!material || material.isMeshStandardMaterial !== true) {
@@ -231,6 +246,7 @@ export function makeSubsurface(material, options = {}, owner = STANDALONE) {
  * The settings a material made subsurface draws with outside any pipeline (its latest binding),
  * or undefined for a material that is not subsurface.
  * @param {import('three').Material} material
+ * @returns {SubsurfaceBinding|undefined}
  */
 export function getSubsurface(material) {
   const state = patches.get(material);

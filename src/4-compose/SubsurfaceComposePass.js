@@ -69,7 +69,7 @@ export class SubsurfaceComposePass extends ShaderPass {
    * (near = white over `depthRange` world units), 'mask', 'thickness' (the thickness T(d) is read
    * at, in profile mm: physical mm × (1 − translucency) / widthMm; `thicknessRangeMm` = white),
    * 'transmittance'. The last two need the materials to write them (SubsurfaceScattering.setDebugView).
-   * @param {string} view one of DEBUG_VIEWS
+   * @param {import('./debugViews.js').DebugView} view one of DEBUG_VIEWS
    * @param {{ depthRange?: number, thicknessRangeMm?: number }} [options]
    */
   setDebugView(view, { depthRange = 100, thicknessRangeMm = 10 } = {}) {
@@ -101,7 +101,7 @@ export class SubsurfaceComposePass extends ShaderPass {
     super.render(renderer, writeBuffer, readBuffer, deltaTime, maskActive);
   }
 
-  /** Fraction of the width, from the left, shown without the blur (0 = none, 1 = all). */
+  /** @param {number} fraction of the width, from the left, shown without the blur (0 = none, 1 = all) */
   setSplit(fraction) {
     checkNumber('split', fraction, { min: 0, max: 1 });
     this.split = fraction;
