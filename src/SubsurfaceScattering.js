@@ -292,6 +292,16 @@ export class SubsurfaceScattering extends Pass {
   }
 
   /**
+   * Undoes makeSubsurface for this pipeline: the material renders as without it here, and gets its
+   * own shader back once no pipeline has it.
+   * @param {import('three').MeshStandardMaterial} material
+   * @returns {boolean} whether it was subsurface in this pipeline
+   */
+  removeSubsurface(material) {
+    return this.subsurfaceMaterials.unbind(material);
+  }
+
+  /**
    * The materials made subsurface through this pipeline, each with its binding and options.
    * @type {Map<import('three').MeshStandardMaterial, { hook: import('./2-scene-split/subsurfaceMaterial.js').SubsurfaceBinding, options: SubsurfaceMaterialOptions }>}
    */
