@@ -24,6 +24,7 @@ import finiteGlsl from '../../shaders/common/finite.glsl?raw';
 import { assembleGlsl, enumDefines } from '../support/glsl.js';
 import { checkNumber, checkOneOf } from '../support/parameterChecks.js';
 import { describe } from '../support/rendererSupport.js';
+import { SUPPORTED_THREE, SUPPORTED_THREE_RANGE, threeRelease } from '../support/threeVersion.js';
 import { MATERIAL_DEFAULTS } from '../options.js';
 import { ATTACHMENT_DEFINES, DRAW_PHASES, currentDraw } from './subsurfaceTarget.js';
 import {
@@ -59,10 +60,11 @@ function latest(bindings) {
   return last;
 }
 
-/** Replaces `needle` in `source`, failing loudly if three's shader no longer has it. */
+/** Replaces `needle` in `source`, failing loudly (naming three's release and ours) if three's shader no longer has it. */
 function inject(source, needle, replacement) {
   if (!source.includes(needle)) {
-    throw new Error(`makeSubsurface: "${needle}" not found in the material's shader; this three.js version is not supported`);
+    throw new Error(`makeSubsurface: "${needle}" not found in the material's shader: ${threeRelease()} is not supported ` +
+      `(supported: three ${SUPPORTED_THREE_RANGE}, r${SUPPORTED_THREE.oldest} to r${SUPPORTED_THREE.newest})`);
   }
   return source.replace(needle, replacement);
 }

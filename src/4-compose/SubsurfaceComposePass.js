@@ -97,7 +97,8 @@ export class SubsurfaceComposePass extends ShaderPass {
   }
 
   render(renderer, writeBuffer, readBuffer, deltaTime, maskActive) {
-    this.uniforms.farDepth.value = renderer.state.buffers.depth.getReversed() ? 0 : 1;
+    // three r172 brought the reversed depth buffer (and getReversed); before it depth is never reversed.
+    this.uniforms.farDepth.value = renderer.state.buffers.depth.getReversed?.() ? 0 : 1;
     super.render(renderer, writeBuffer, readBuffer, deltaTime, maskActive);
   }
 

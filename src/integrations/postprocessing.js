@@ -21,7 +21,7 @@
 // a RangeError naming the fix instead of rendering that.
 import { Pass } from 'postprocessing';
 import { FloatType, HalfFloatType, UnsignedByteType } from 'three';
-import { SubsurfaceScattering } from '../SubsurfaceScattering.js';
+import { SubsurfaceScattering } from '../index.js';
 
 /** The frame buffer types whose range holds linear HDR light. */
 const HDR_TYPES = Object.freeze([HalfFloatType, FloatType]);

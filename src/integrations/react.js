@@ -26,7 +26,7 @@ import { useFrame, useThree } from '@react-three/fiber';
 import { HalfFloatType, WebGLRenderTarget } from 'three';
 import { EffectComposer } from 'three/addons/postprocessing/EffectComposer.js';
 import { OutputPass } from 'three/addons/postprocessing/OutputPass.js';
-import { SubsurfaceScattering } from '../SubsurfaceScattering.js';
+import { SubsurfaceScattering } from '../index.js';
 
 /**
  * @typedef {Omit<import('../SubsurfaceScattering.js').SubsurfaceScatteringOptions, 'scene'|'camera'|'light'> & {
