@@ -29,6 +29,8 @@ export class SubsurfaceComposePass extends ShaderPass {
    *   null reads the composer's read buffer
    * @param {import('three').DepthTexture} options.depthTexture the multi-target's depth, written
    *   out as the target's depth
+   * @param {import('three').Texture} [options.lightTexture] colorTexture's old name (deprecated)
+   * @param {import('three').Texture} [options.unscatteredTexture] diffuseTexture's old name (deprecated)
    */
   constructor({
     colorTexture, lightTexture, surfaceTexture, diffuseTexture, unscatteredTexture, scatteredTexture = null, depthTexture,

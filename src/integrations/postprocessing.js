@@ -43,35 +43,17 @@ export class SubsurfaceScatteringPass extends Pass {
     this.needsDepthBlit = true; // the input buffer holds the scene's depth after render()
   }
 
-  /** The scene rendered, read every frame (the pipeline's). @type {import('three').Scene} */
-  get scene() {
-    return this.pipeline?.scene ?? this._scene;
-  }
-
-  set scene(scene) {
-    // pmndrs's Pass constructor assigns before `pipeline` exists.
-    if (this.pipeline) this.pipeline.scene = scene;
-    else this._scene = scene;
-  }
-
-  /** The camera rendered from, read every frame (the pipeline's). @type {import('three').Camera} */
-  get camera() {
-    return this.pipeline?.camera ?? this._camera;
-  }
-
-  set camera(camera) {
-    if (this.pipeline) this.pipeline.camera = camera;
-    else this._camera = camera;
-  }
+  // `scene` and `camera` stay pmndrs Pass's plain properties (assignable, read every frame): render()
+  // hands them to the pipeline.
 
   /** EffectComposer.setMainScene sets this, as for its RenderPass. @param {import('three').Scene} scene */
   set mainScene(scene) {
-    this.scene = scene;
+    this.scene = this.pipeline.scene = scene;
   }
 
   /** EffectComposer.setMainCamera sets this, as for its RenderPass. @param {import('three').Camera} camera */
   set mainCamera(camera) {
-    this.camera = camera;
+    this.camera = this.pipeline.camera = camera;
   }
 
   /** As pmndrs's RenderPass: true clears the input buffer first, false draws over it. @type {boolean} */
@@ -115,12 +97,14 @@ export class SubsurfaceScatteringPass extends Pass {
   /**
    * One frame into `inputBuffer` (or the screen when it is the composer's last pass).
    * @param {import('three').WebGLRenderer} renderer
-   * @param {import('three').WebGLRenderTarget} inputBuffer
-   * @param {import('three').WebGLRenderTarget} [outputBuffer] unused (needsSwap is false)
+   * @param {import('three').WebGLRenderTarget|null} inputBuffer
+   * @param {import('three').WebGLRenderTarget|null} outputBuffer unused (needsSwap is false)
    * @param {number} [deltaTime]
    * @param {boolean} [stencilTest]
    */
   render(renderer, inputBuffer, outputBuffer, deltaTime, stencilTest) {
+    this.pipeline.scene = this.scene;
+    this.pipeline.camera = this.camera;
     this.pipeline.renderToScreen = this.renderToScreen;
     this.pipeline.render(renderer, null, inputBuffer);
   }

@@ -69,7 +69,7 @@ class SubsurfaceRegistry {
     this.pass?.removeSubsurface(material);
   }
 
-  /** @private */
+  /** @private @param {SubsurfaceScattering} pass @param {EffectComposer} composer */
   _connect(pass, composer) {
     this.pass = pass;
     this.composer = composer;
@@ -161,6 +161,7 @@ export function useSubsurfaceScattering(options = {}) {
 /**
  * Renders its children's scene with subsurface scattering; <Subsurface> inside it marks materials.
  * @param {SubsurfaceComposerOptions & { children?: import('react').ReactNode }} props
+ * @returns {import('react').ReactElement}
  */
 export function SubsurfaceComposer({ children, ...options }) {
   const registry = useSubsurfaceScattering(options);
@@ -203,6 +204,7 @@ export function useSubsurface(material, options = {}) {
  * As a child of <meshStandardMaterial> or <meshPhysicalMaterial>: makes that material scatter in
  * the enclosing <SubsurfaceComposer> while mounted.
  * @param {import('../SubsurfaceScattering.js').SubsurfaceMaterialOptions} props
+ * @returns {import('react').ReactElement}
  */
 export function Subsurface(props) {
   const registry = useRegistry('<Subsurface>');
