@@ -41,11 +41,18 @@ function readAsRgbaFloats(renderer, target, textureIndex) {
   const gl = renderer.getContext();
   const { width, height } = target;
   const rgba = new Float32Array(width * height * 4);
+  // The textures' framebuffer, as three's own read-backs bind it: with MSAA it holds the resolved
+  // attachments (setRenderTarget would bind the multisampled one, which cannot be read).
+  const framebuffer = renderer.properties.get(target).__webglFramebuffer;
+  if (!framebuffer) throw new Error('readRenderTargetFloats: the target has not been rendered yet');
   const current = renderer.getRenderTarget();
-  renderer.setRenderTarget(target); // three's framebuffer for it (the resolved one with MSAA)
-  gl.readBuffer(gl.COLOR_ATTACHMENT0 + textureIndex);
-  gl.readPixels(0, 0, width, height, gl.RGBA, gl.FLOAT, rgba);
-  gl.readBuffer(gl.COLOR_ATTACHMENT0);
-  renderer.setRenderTarget(current);
+  renderer.state.bindFramebuffer(gl.FRAMEBUFFER, framebuffer);
+  try {
+    gl.readBuffer(gl.COLOR_ATTACHMENT0 + textureIndex);
+    gl.readPixels(0, 0, width, height, gl.RGBA, gl.FLOAT, rgba);
+    gl.readBuffer(gl.COLOR_ATTACHMENT0);
+  } finally {
+    renderer.state.bindFramebuffer(gl.FRAMEBUFFER, current ? renderer.properties.get(current).__webglFramebuffer : null);
+  }
   return rgba;
 }
