@@ -1,12 +1,21 @@
 // One config, two builds:
 //   `vite build --mode lib`  → dist/three-separable-sss.js, the ES module users import (GLSL inlined,
-//                              three and gl-matrix left as imports)
+//                              three and gl-matrix left as imports), and the subpath exports
+//                              dist/postprocessing.js and dist/react.js (pmndrs, R3F left as imports)
 //   `vite build`             → dist/demo/, the static demo page
 //   `vite` (npm start)       → the demo and the test pages on a dev server
 import { defineConfig } from 'vite';
 import { fileURLToPath } from 'node:url';
 
 const root = fileURLToPath(new URL('.', import.meta.url));
+
+// The version matrix (scripts/threeMatrix.js): SSS_THREE_DIR names another three release's folder,
+// served in place of the devDependency to the pages (the library, the lab, pmndrs postprocessing).
+const threeDir = process.env.SSS_THREE_DIR;
+const threeAliases = threeDir ? [
+  { find: /^three$/, replacement: `${threeDir}/build/three.module.js` },
+  { find: /^three\/addons\/(.*)$/, replacement: `${threeDir}/examples/jsm/$1` },
+] : [];
 
 export default defineConfig(({ mode }) => {
   if (mode === 'lib') {
@@ -19,12 +28,20 @@ export default defineConfig(({ mode }) => {
         sourcemap: true,
         minify: false,
         lib: {
-          entry: 'src/index.js',
+          // The package and its subpath exports; the subpaths share the main entry's modules (one
+          // copy of the material hook's state).
+          entry: {
+            'three-separable-sss': 'src/index.js',
+            postprocessing: 'src/integrations/postprocessing.js',
+            react: 'src/integrations/react.js',
+          },
           formats: ['es'],
-          fileName: () => 'three-separable-sss.js',
+          fileName: (format, entryName) => `${entryName}.js`,
         },
         rollupOptions: {
-          external: [/^three(\/.*)?$/, /^gl-matrix(\/.*)?$/],
+          external: [/^three(\/.*)?$/, /^gl-matrix(\/.*)?$/, /^postprocessing$/, /^react(\/.*)?$/, /^@react-three\/fiber$/],
+          // The modules the entries share, in one chunk of a fixed name.
+          output: { chunkFileNames: 'three-separable-sss-core.js' },
         },
       },
     };
@@ -33,8 +50,18 @@ export default defineConfig(({ mode }) => {
     root,
     base: './',
     publicDir: 'public',
-    // Pages in this repository (the README's snippet, the bench) import the package by its name.
-    resolve: { alias: { 'three-separable-sss': `${root}src/index.js` } },
+    // Pages in this repository (the README's snippet, the bench, the integration pages) import the
+    // package and its subpaths by name.
+    resolve: {
+      alias: [
+        ...threeAliases,
+        { find: /^three-separable-sss$/, replacement: `${root}src/index.js` },
+        { find: /^three-separable-sss\/postprocessing$/, replacement: `${root}src/integrations/postprocessing.js` },
+        { find: /^three-separable-sss\/react$/, replacement: `${root}src/integrations/react.js` },
+      ],
+    },
+    // Not pre-bundled with another three: the pre-bundled dependencies import the aliased one.
+    optimizeDeps: threeDir ? { exclude: ['three'] } : {},
     build: {
       outDir: 'dist/demo',
       emptyOutDir: true,

@@ -6,7 +6,7 @@ import { openReadyPage, startBrowser } from '../dev/browser.js';
 export { chromiumFlags } from '../dev/browser.js';
 
 /**
- * @param {(page: import('puppeteer').Page) => Promise<T>} work
+ * @param {(page: import('puppeteer-core').Page) => Promise<T>} work
  * @param {{ gpu?: boolean }} [options]
  * @returns {Promise<T>}
  * @template T

@@ -3,9 +3,10 @@
 // closes both however the work ends.
 //
 // The Chromium, in the order the project promises: 1. PUPPETEER_EXECUTABLE_PATH, 2. Debian's
-// chromium package, 3. a Chrome puppeteer downloaded itself. When none is found and we run as root
-// on Debian, Debian's `chromium` is installed (what CI needs); otherwise the caller gets a one-line
-// message saying what to install.
+// chromium package. When none is found and we run as root on Debian, Debian's `chromium` is
+// installed (what CI needs); otherwise the caller gets a one-line message saying what to install.
+// puppeteer-core drives it: it has no install script (puppeteer's would download a Chrome, which
+// npm 11 blocks with a warning and the machines here cannot reach anyway).
 import { existsSync, readFileSync } from 'node:fs';
 import { execFileSync } from 'node:child_process';
 import { mkdtemp, rm } from 'node:fs/promises';
@@ -40,8 +41,8 @@ export const DEBIAN_CHROMIUM = '/usr/lib/chromium/chromium';
 
 const INSTALL_HINT =
   'No Chromium found for the browser tests: install Debian\'s "chromium" package ' +
-  '(apt-get install chromium), or set PUPPETEER_EXECUTABLE_PATH, or run ' +
-  '"PUPPETEER_SKIP_DOWNLOAD=false npx puppeteer browsers install chrome".';
+  '(apt-get install chromium), or set PUPPETEER_EXECUTABLE_PATH to a Chrome or Chromium ' +
+  '(e.g. one installed by "npx @puppeteer/browsers install chrome@stable").';
 
 /** @returns {Promise<string|null>} the path of a usable browser, or null. */
 export async function lookupBrowser() {
@@ -51,13 +52,6 @@ export async function lookupBrowser() {
     throw new Error(`PUPPETEER_EXECUTABLE_PATH points to a missing file: ${fromEnv}`);
   }
   if (existsSync(DEBIAN_CHROMIUM)) return DEBIAN_CHROMIUM;
-  try {
-    const { default: puppeteer } = await import('puppeteer');
-    const own = puppeteer.executablePath();
-    if (own && existsSync(own)) return own;
-  } catch {
-    // puppeteer has no browser of its own: fall through.
-  }
   return null;
 }
 
@@ -84,12 +78,12 @@ export async function findBrowser({ log = console.log } = {}) {
 /**
  * Starts Vite serving the repository and headless Chromium.
  * @param {{ gpu?: boolean, protocolTimeout?: number }} [options]
- * @returns {Promise<{ browser: import('puppeteer').Browser, baseUrl: string, flags: string[], close(): Promise<void> }>}
+ * @returns {Promise<{ browser: import('puppeteer-core').Browser, baseUrl: string, flags: string[], close(): Promise<void> }>}
  */
 export async function startBrowser({ gpu = false, protocolTimeout = 600_000 } = {}) {
   const executablePath = await findBrowser();
   const { createServer } = await import('vite');
-  const { default: puppeteer } = await import('puppeteer');
+  const { default: puppeteer } = await import('puppeteer-core');
   const server = await createServer({
     root,
     configFile: join(root, 'vite.config.js'),
@@ -129,11 +123,11 @@ export async function startBrowser({ gpu = false, protocolTimeout = 600_000 } = 
  * Opens `url` in a new page and waits until `readyExpr` is defined, then resolves it (the pages
  * set `window.testReady` to a promise or a value). Console errors, page errors and failed requests
  * are collected in `page.problems`.
- * @param {import('puppeteer').Browser} browser
+ * @param {import('puppeteer-core').Browser} browser
  * @param {string} url
  * @param {{ width?: number, height?: number, readyExpr?: string, timeout?: number, beforeLoad?: (page) => Promise<void> }} [options]
  *   `beforeLoad` runs before navigation, e.g. to intercept requests
- * @returns {Promise<import('puppeteer').Page>}
+ * @returns {Promise<import('puppeteer-core').Page>}
  */
 export async function openReadyPage(browser, url, { width, height, readyExpr = 'window.testReady', timeout = 120_000, beforeLoad } = {}) {
   const page = await browser.newPage();

@@ -16,6 +16,7 @@ export async function readRenderTargetFloats(renderer, target, textureIndex = 0)
   const texture = target.textures[textureIndex];
   const channels = CHANNELS.get(texture.format);
   if (!channels) throw new TypeError(`readRenderTargetFloats: texture ${textureIndex} must be RGBA, RG or Red`);
+  if (channels !== 4 || textureIndex !== 0) return readAsRgbaFloats(renderer, target, textureIndex);
   let values;
   if (texture.type === FloatType) {
     values = new Float32Array(width * height * channels);
@@ -27,11 +28,31 @@ export async function readRenderTargetFloats(renderer, target, textureIndex = 0)
   } else {
     throw new TypeError(`readRenderTargetFloats: texture ${textureIndex} must be FloatType or HalfFloatType`);
   }
-  if (channels === 4) return values;
+  return values;
+}
+
+/**
+ * RG and Red attachments, and attachments after the first, read as RGBA floats by WebGL2 itself
+ * (always allowed for float colour buffers; missing channels 0, alpha 1): three r180 and older
+ * refuse formats other than RGBA in readRenderTargetPixelsAsync, and before r180 it reads the
+ * first attachment only, so the version matrix needs this path.
+ */
+function readAsRgbaFloats(renderer, target, textureIndex) {
+  const gl = renderer.getContext();
+  const { width, height } = target;
   const rgba = new Float32Array(width * height * 4);
-  for (let i = 0; i < width * height; i++) {
-    for (let c = 0; c < channels; c++) rgba[i * 4 + c] = values[i * channels + c];
-    rgba[i * 4 + 3] = 1;
+  // The textures' framebuffer, as three's own read-backs bind it: with MSAA it holds the resolved
+  // attachments (setRenderTarget would bind the multisampled one, which cannot be read).
+  const framebuffer = renderer.properties.get(target).__webglFramebuffer;
+  if (!framebuffer) throw new Error('readRenderTargetFloats: the target has not been rendered yet');
+  const current = renderer.getRenderTarget();
+  renderer.state.bindFramebuffer(gl.FRAMEBUFFER, framebuffer);
+  try {
+    gl.readBuffer(gl.COLOR_ATTACHMENT0 + textureIndex);
+    gl.readPixels(0, 0, width, height, gl.RGBA, gl.FLOAT, rgba);
+    gl.readBuffer(gl.COLOR_ATTACHMENT0);
+  } finally {
+    renderer.state.bindFramebuffer(gl.FRAMEBUFFER, current ? renderer.properties.get(current).__webglFramebuffer : null);
   }
   return rgba;
 }

@@ -39,30 +39,51 @@ function checkDepthThreshold(depthThresholdMm) {
   return checkNumber('depthThresholdMm', depthThresholdMm, { min: 0, minExclusive: true, max: MAX_SCALE_MM, unit: 'mm' });
 }
 
+/**
+ * new SubsurfaceScattering({ ... }): the defaults are PIPELINE_DEFAULTS.
+ * @typedef {object} SubsurfaceScatteringOptions
+ * @property {import('three').Scene} scene read every frame (assignable)
+ * @property {import('three').Camera} camera read every frame (assignable)
+ * @property {import('three').SpotLight|import('three').DirectionalLight|null} [light=null]
+ *   the light shining through thin parts (transmittance); null: no transmittance
+ * @property {number} [worldUnitInMm=1000] millimetres per world unit (three.js: metres)
+ * @property {import('./options.js').ProfileName|object} [profile='skin'] a preset's name or a
+ *   profile object (burleyProfile, dipoleProfile, gaussianSumProfile)
+ * @property {import('./options.js').Method} [method='footprint'] how the blur weighs its taps
+ *   (see METHOD_TABLE in src/options.js)
+ * @property {number|'auto'} [samples='auto'] taps per direction (a budget for 'footprint'), odd,
+ *   3..63; 'auto': 'footprint' takes per pixel the fewest within AUTO_STEP_ERROR for its scale, the
+ *   fixed-tap methods per frame the fewest of AUTO_SAMPLES that resolve the on-screen kernel
+ * @property {number[]} [strength] RGB, 0..1: mix with no scattering (reference model)
+ * @property {number[]} [falloff] RGB, (0, 10]: reference method only
+ * @property {import('./options.js').FollowSurfaceMode} [followSurface='drop']
+ * @property {number} [depthThresholdMm=6] depth step (mm) treated as another surface
+ * @property {boolean} [foreshortening=true] narrow the blur on surfaces seen at grazing angles
+ * @property {number} [lightDepthSize=1024] light depth map resolution, pixels
+ * @property {import('three').TextureDataType} [type=HalfFloatType] HalfFloatType or FloatType light targets
+ * @property {number|'auto'} [multisampling='auto'] MSAA samples of the scene split (0: none);
+ *   'auto' takes the composer buffer's `samples`, so a composer made with samples: 4 antialiases
+ */
+
+/**
+ * makeSubsurface(material, { ... }) of a pipeline: the defaults are MATERIAL_DEFAULTS.
+ * @typedef {object} SubsurfaceMaterialOptions
+ * @property {number} [widthMm=1] millimetres of material per profile millimetre (1: physical size)
+ * @property {number} [widthScale=1] 0..1, scales the width (0: no scattering, the light kept)
+ * @property {number} [strength] widthScale's old name
+ * @property {boolean} [transmittance=true] light through thin parts (with the pipeline's light)
+ * @property {number} [translucency=0] 0..1 (exclusive)
+ * @property {number} [shrinkMm=0.6] how far the light depth lookup moves inwards, mm
+ */
+
+/**
+ * A stage of one frame, as stageTimer sees it.
+ * @typedef {'lightDepth'|'scene'|'blurH'|'blurV'|'dense'|'compose'|'transparent'} StageName
+ */
+
 export class SubsurfaceScattering extends Pass {
-  /**
-   * @param {object} options
-   * @param {import('three').Scene} options.scene read every frame (assignable)
-   * @param {import('three').Camera} options.camera read every frame (assignable)
-   * @param {import('three').SpotLight|import('three').DirectionalLight|null} [options.light=null]
-   *   the light shining through thin parts (transmittance); null: no transmittance
-   * @param {number} [options.worldUnitInMm=1000] millimetres per world unit (three.js: metres)
-   * @param {string|object} [options.profile='skin'] 'skin', 'skinBurley', 'marble', 'milk' or a profile
-   * @param {'footprint'|'marginal'|'reference'|'dense'} [options.method='footprint'] how the blur
-   *   weighs its taps (see METHOD_TABLE in src/options.js)
-   * @param {number|'auto'} [options.samples=17] taps per direction (a budget for 'footprint'), odd,
-   *   3..63; 'auto' picks, each frame, the fewest that resolve the on-screen kernel (see AUTO_SAMPLES)
-   * @param {number[]} [options.strength] RGB, 0..1: mix with no scattering (reference model)
-   * @param {number[]} [options.falloff] RGB, (0, 10]: reference method only
-   * @param {'drop'|'lerp'|'off'} [options.followSurface='drop']
-   * @param {number} [options.depthThresholdMm=6] depth step (mm) treated as another surface
-   * @param {boolean} [options.foreshortening=true] narrow the blur on surfaces seen at grazing angles
-   * @param {number} [options.lightDepthSize=1024] light depth map resolution, pixels
-   * @param {number} [options.type=HalfFloatType] HalfFloatType or FloatType light targets
-   * @param {number|'auto'} [options.multisampling='auto'] MSAA samples of the scene split (0: none);
-   *   'auto' takes the composer buffer's `samples`, so a composer made with samples: 4 antialiases
-   */
-  constructor(options = {}) {
+  /** @param {SubsurfaceScatteringOptions} options */
+  constructor(options) {
     super();
     const o = { ...PIPELINE_DEFAULTS, type: HalfFloatType, ...options };
     const { scene, camera, light } = o;
@@ -81,8 +102,12 @@ export class SubsurfaceScattering extends Pass {
     this.clear = true;
     /** As RenderPass: with clear false, true ignores the target's earlier depth. */
     this.clearDepth = false;
-    /** As RenderPass: the clear colour and alpha of the scene (null: the renderer's). */
+    /**
+     * As RenderPass: the clear colour and alpha of the scene (null: the renderer's).
+     * @type {import('three').ColorRepresentation|null}
+     */
     this.clearColor = null;
+    /** @type {number|null} */
     this.clearAlpha = null;
     /** The scene and camera rendered, read every frame. */
     this.scene = scene;
@@ -123,10 +148,19 @@ export class SubsurfaceScattering extends Pass {
     this.plan = { samples: this.blur.kernelOptions.samples, kernelPixels: 0, blur: false };
     /** The largest on-screen kernel radius of the last frame, pixels (plan.kernelPixels). */
     this.kernelPixels = 0;
-    /** Optional { begin(stage), end(stage) } around each stage (dev/gpuTimer.js measures with it). */
+    /**
+     * Optional { begin(stage), end(stage) } around each stage (dev/gpuTimer.js measures with it).
+     * @type {{ begin(stage: StageName): void, end(stage: StageName): void }|null}
+     */
     this.stageTimer = null;
   }
 
+  /**
+   * One frame into `readBuffer` (or the screen with renderToScreen), as RenderPass draws.
+   * @param {import('three').WebGLRenderer} renderer
+   * @param {import('three').WebGLRenderTarget|null} writeBuffer unused (needsSwap is false)
+   * @param {import('three').WebGLRenderTarget} readBuffer
+   */
   render(renderer, writeBuffer, readBuffer) {
     const { scene, camera } = this;
     const target = this.renderToScreen ? null : readBuffer;
@@ -160,11 +194,15 @@ export class SubsurfaceScattering extends Pass {
     }
   }
 
-  /** Stage 4 alone over the last scene split, into scatteredTarget (the bench re-runs it to time it). */
+  /**
+   * Stage 4 alone over the last scene split, into scatteredTarget (the bench re-runs it to time it).
+   * @param {import('three').WebGLRenderer} renderer
+   */
   renderScattering(renderer) {
     this.blur.render(renderer, this.camera, (stage, draw) => this._stage(stage, draw));
   }
 
+  /** @private @param {StageName} name @param {() => void} draw */
   _stage(name, draw) {
     this.stageTimer?.begin(name);
     try {
@@ -174,6 +212,7 @@ export class SubsurfaceScattering extends Pass {
     }
   }
 
+  /** @private */
   _planFrame() {
     const { width, height } = this.scenePass.renderTarget;
     const pixelsPerMm = estimatePixelsPerMm(this.scenePass.subsurfaceMeshes, this.camera, { width, height },
@@ -191,7 +230,10 @@ export class SubsurfaceScattering extends Pass {
     return plan;
   }
 
-  /** MSAA samples of the scene split: 'auto' (the composer buffer's) or 0..MAX_MULTISAMPLING. */
+  /**
+   * MSAA samples of the scene split: 'auto' (the composer buffer's) or 0..MAX_MULTISAMPLING.
+   * @type {number|'auto'}
+   */
   get multisampling() {
     return this._multisampling;
   }
@@ -218,7 +260,9 @@ export class SubsurfaceScattering extends Pass {
   get densePass() { return this.blur.densePass; }
   /** The last frame's scattered diffuse light. */
   get scatteredTarget() { return this.blur.scatteredTarget; }
+  /** @type {Float32Array} the separable kernel (computeKernel's layout) */
   get kernel() { return this.blur.kernel; }
+  /** @type {import('./options.js').Method} */
   get method() { return this.blur.method; }
   get autoSamples() { return this.blur.autoSamples; }
   get followSurface() { return this.blur.horizontalPass.followSurface; }
@@ -242,18 +286,35 @@ export class SubsurfaceScattering extends Pass {
    * Makes `material` scatter with this pipeline's profile, scale and light (see makeSubsurface):
    * settings of this pipeline's own, so another pipeline can draw the same material with its own.
    * @param {import('three').MeshStandardMaterial} material
-   * @param {{ widthMm?: number, widthScale?: number, transmittance?: boolean, translucency?: number, shrinkMm?: number }} [options]
+   * @param {SubsurfaceMaterialOptions} [options]
+   * @returns {import('./2-scene-split/subsurfaceMaterial.js').SubsurfaceBinding}
    */
   makeSubsurface(material, options = {}) {
     return this.subsurfaceMaterials.bind(material, options);
   }
 
-  /** The materials made subsurface through this pipeline, each with its binding and options. */
+  /**
+   * Undoes makeSubsurface for this pipeline: the material renders as without it here, and gets its
+   * own shader back once no pipeline has it.
+   * @param {import('three').MeshStandardMaterial} material
+   * @returns {boolean} whether it was subsurface in this pipeline
+   */
+  removeSubsurface(material) {
+    return this.subsurfaceMaterials.unbind(material);
+  }
+
+  /**
+   * The materials made subsurface through this pipeline, each with its binding and options.
+   * @type {Map<import('three').MeshStandardMaterial, { hook: import('./2-scene-split/subsurfaceMaterial.js').SubsurfaceBinding, options: SubsurfaceMaterialOptions }>}
+   */
   get materials() {
     return this.subsurfaceMaterials.entries;
   }
 
-  /** Turns transmittance on or off for every material of this pipeline (a uniform: no recompile). */
+  /**
+   * Turns transmittance on or off for every material of this pipeline (a uniform: no recompile).
+   * @param {boolean} enabled
+   */
   setTransmittance(enabled) {
     if (typeof enabled !== 'boolean') throw new TypeError(`setTransmittance: enabled must be a boolean, got ${describe(enabled)}`);
     if (enabled && !this.lightDepth) throw new Error('setTransmittance: this pipeline has no light (pass `light` to the constructor)');
@@ -264,13 +325,16 @@ export class SubsurfaceScattering extends Pass {
   /**
    * Shows the final image or one ingredient (see DEBUG_VIEWS of SubsurfaceComposePass): 'final',
    * 'diffuse', 'specular', 'depth', 'mask', 'thickness', 'transmittance'.
+   * @param {import('./4-compose/debugViews.js').DebugView} view
+   * @param {{ depthRange?: number, thicknessRangeMm?: number }} [options] the ranges the depth
+   *   (world units, default 100) and thickness (mm, default 10) views map to black..white
    */
   setDebugView(view, options) {
     this.composePass.setDebugView(view, options);
     this.subsurfaceMaterials.setDebugOutput(materialOutputOf(view));
   }
 
-  /** Fraction of the width, from the left, shown without scattering (0..1; 0 = none). */
+  /** @param {number} fraction of the width, from the left, shown without scattering (0..1; 0 = none) */
   setSplit(fraction) {
     this.composePass.setSplit(fraction);
   }
@@ -278,14 +342,14 @@ export class SubsurfaceScattering extends Pass {
   /**
    * Rebuilds the kernel (and the profile tables when the profile changes). Changing the method
    * between 'footprint' and the fixed-tap ones recompiles the blur shaders once.
-   * @param {{ profile?: string|object, method?: string, samples?: number|'auto', strength?: number[], falloff?: number[] }} options
+   * @param {{ profile?: import('./options.js').ProfileName|object, method?: import('./options.js').Method, samples?: number|'auto', strength?: number[], falloff?: number[] }} options
    */
   setKernel(options) {
     this.blur.setKernel(options);
   }
 
   /**
-   * @param {'drop'|'lerp'|'off'} mode
+   * @param {import('./options.js').FollowSurfaceMode} mode
    * @param {number} [depthThresholdMm]
    */
   setFollowSurface(mode, depthThresholdMm = this.depthThresholdMm) {

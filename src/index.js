@@ -36,3 +36,14 @@ export { FootprintTable } from './profiles/FootprintTable.js';
 export { footprintAllocation, footprintTable, FOOTPRINT_SCALES } from './profiles/footprints.js';
 export { QuadrantEnergyLookup } from './profiles/QuadrantEnergyLookup.js';
 export { pixelsPerMm, isPerspective } from './support/screenScale.js';
+
+// Types only (for TypeScript; the declarations are generated from this JSDoc): the options' shapes
+// and the string-literal unions of every enumerated option.
+/** @typedef {import('./SubsurfaceScattering.js').SubsurfaceScatteringOptions} SubsurfaceScatteringOptions */
+/** @typedef {import('./SubsurfaceScattering.js').SubsurfaceMaterialOptions} SubsurfaceMaterialOptions */
+/** @typedef {import('./SubsurfaceScattering.js').StageName} StageName */
+/** @typedef {import('./2-scene-split/subsurfaceMaterial.js').SubsurfaceBinding} SubsurfaceBinding */
+/** @typedef {import('./options.js').Method} Method */
+/** @typedef {import('./options.js').FollowSurfaceMode} FollowSurfaceMode */
+/** @typedef {import('./options.js').ProfileName} ProfileName */
+/** @typedef {import('./4-compose/debugViews.js').DebugView} DebugView */

@@ -18,10 +18,29 @@ export const METHOD_TABLE = Object.freeze({
   dense: Object.freeze({ kernel: 'marginal', blur: 'dense' }), // the kernel only waits for a switch back
 });
 
-/** The accepted `method` values. */
+/**
+ * How the blur weighs its taps (METHOD_TABLE).
+ * @typedef {'footprint'|'marginal'|'reference'|'dense'} Method
+ */
+/**
+ * What a tap on another surface does (FOLLOW_SURFACE_MODES).
+ * @typedef {'off'|'drop'|'lerp'} FollowSurfaceMode
+ */
+/**
+ * The preset diffusion profiles by name (src/profiles/presets.js's `profiles`).
+ * @typedef {'skin'|'skinBurley'|'marble'|'milk'} ProfileName
+ */
+
+/**
+ * The accepted `method` values.
+ * @type {readonly Method[]}
+ */
 export const METHODS = Object.freeze(Object.keys(METHOD_TABLE));
 
-/** What a tap on another surface does: dropped and renormalised, lerped to the centre, or nothing. */
+/**
+ * What a tap on another surface does: dropped and renormalised, lerped to the centre, or nothing.
+ * @type {readonly FollowSurfaceMode[]}
+ */
 export const FOLLOW_SURFACE_MODES = Object.freeze(['off', 'drop', 'lerp']);
 
 /**
@@ -44,7 +63,7 @@ export const MAX_SCALE_MM = 1e6;
 
 /** new SubsurfaceScattering({ ... }): every option's default. */
 export const PIPELINE_DEFAULTS = Object.freeze({
-  light: null,
+  light: /** @type {null} */ (null),
   worldUnitInMm: 1000, // three.js's unit is the metre
   profile: 'skin',
   method: 'footprint',

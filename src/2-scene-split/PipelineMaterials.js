@@ -42,6 +42,19 @@ export class PipelineMaterials {
     return hook;
   }
 
+  /**
+   * Unbinds `material` from this pipeline (it is restored once no pipeline has it).
+   * @param {import('three').Material} material
+   * @returns {boolean} whether it was bound
+   */
+  unbind(material) {
+    const entry = this.entries.get(material);
+    if (!entry) return false;
+    entry.hook.dispose();
+    this.entries.delete(material);
+    return true;
+  }
+
   /** Rebinds every material with the pipeline's current settings. */
   rebindAll() {
     for (const material of this.entries.keys()) this.bind(material);

@@ -24,6 +24,7 @@ import finiteGlsl from '../../shaders/common/finite.glsl?raw';
 import { assembleGlsl, enumDefines } from '../support/glsl.js';
 import { checkNumber, checkOneOf } from '../support/parameterChecks.js';
 import { describe } from '../support/rendererSupport.js';
+import { SUPPORTED_THREE, SUPPORTED_THREE_RANGE, threeRelease } from '../support/threeVersion.js';
 import { MATERIAL_DEFAULTS } from '../options.js';
 import { ATTACHMENT_DEFINES, DRAW_PHASES, currentDraw } from './subsurfaceTarget.js';
 import {
@@ -31,7 +32,10 @@ import {
   updateLightUniforms, writeTransmittanceUniforms,
 } from './transmittance.js';
 
-/** What the diffuse attachment receives: the diffuse light, or one ingredient for a debug view. */
+/**
+ * What the diffuse attachment receives: the diffuse light, or one ingredient for a debug view.
+ * @type {readonly ('diffuse'|'transmittance'|'thickness')[]}
+ */
 export const MATERIAL_OUTPUTS = Object.freeze(['diffuse', 'transmittance', 'thickness']);
 
 /** The kinds of light transmittance is shaded with. */
@@ -56,10 +60,11 @@ function latest(bindings) {
   return last;
 }
 
-/** Replaces `needle` in `source`, failing loudly if three's shader no longer has it. */
+/** Replaces `needle` in `source`, failing loudly (naming three's release and ours) if three's shader no longer has it. */
 function inject(source, needle, replacement) {
   if (!source.includes(needle)) {
-    throw new Error(`makeSubsurface: "${needle}" not found in the material's shader; this three.js version is not supported`);
+    throw new Error(`makeSubsurface: "${needle}" not found in the material's shader: ${threeRelease()} is not supported ` +
+      `(supported: three ${SUPPORTED_THREE_RANGE}, r${SUPPORTED_THREE.oldest} to r${SUPPORTED_THREE.newest})`);
   }
   return source.replace(needle, replacement);
 }
@@ -156,6 +161,18 @@ function withWidthScale(options) {
 }
 
 /**
+ * One pipeline's settings on a subsurface material (what makeSubsurface returns).
+ * @typedef {object} SubsurfaceBinding
+ * @property {import('three').MeshStandardMaterial} material
+ * @property {Record<string, import('three').IUniform>} uniforms the hook's uniforms (shared by every binding of the material)
+ * @property {{ widthMm: number, widthScale: number, worldUnitInMm: number, transmittance: object|null }} options
+ * @property {'diffuse'|'transmittance'|'thickness'} debugOutput what the diffuse attachment receives
+ * @property {number} widthWorld world units per profile millimetre (width × widthScale)
+ * @property {(options?: { widthMm?: number, widthScale?: number, worldUnitInMm?: number, transmittance?: object|null }) => void} update
+ * @property {() => void} dispose unbinds these settings; the material is restored once none is left
+ */
+
+/**
  * Makes a MeshStandardMaterial or MeshPhysicalMaterial subsurface-scattering (idempotent: a second
  * call with the same owner updates the options). The material keeps rendering normally outside
  * SubsurfaceScattering.
@@ -170,7 +187,7 @@ function withWidthScale(options) {
  *   `{ lightDepth: LightDepthTarget, lookup: ProfileLookup, translucency?, shrinkMm? }`
  * @param {object} [owner] the pipeline these settings are for (SubsurfaceScattering passes itself);
  *   omitted: settings of their own, used wherever no pipeline with settings of its own draws
- * @returns {{ material: object, uniforms: object, options: object, debugOutput: string, widthWorld: number, update(options: object): void, dispose(): void }}
+ * @returns {SubsurfaceBinding}
  */
 export function makeSubsurface(material, options = {}, owner = STANDALONE) {
   if (!material || material.isMeshStandardMaterial !== true) {
@@ -231,6 +248,7 @@ export function makeSubsurface(material, options = {}, owner = STANDALONE) {
  * The settings a material made subsurface draws with outside any pipeline (its latest binding),
  * or undefined for a material that is not subsurface.
  * @param {import('three').Material} material
+ * @returns {SubsurfaceBinding|undefined}
  */
 export function getSubsurface(material) {
   const state = patches.get(material);

@@ -29,6 +29,8 @@ export class SubsurfaceComposePass extends ShaderPass {
    *   null reads the composer's read buffer
    * @param {import('three').DepthTexture} options.depthTexture the multi-target's depth, written
    *   out as the target's depth
+   * @param {import('three').Texture} [options.lightTexture] colorTexture's old name (deprecated)
+   * @param {import('three').Texture} [options.unscatteredTexture] diffuseTexture's old name (deprecated)
    */
   constructor({
     colorTexture, lightTexture, surfaceTexture, diffuseTexture, unscatteredTexture, scatteredTexture = null, depthTexture,
@@ -69,7 +71,7 @@ export class SubsurfaceComposePass extends ShaderPass {
    * (near = white over `depthRange` world units), 'mask', 'thickness' (the thickness T(d) is read
    * at, in profile mm: physical mm × (1 − translucency) / widthMm; `thicknessRangeMm` = white),
    * 'transmittance'. The last two need the materials to write them (SubsurfaceScattering.setDebugView).
-   * @param {string} view one of DEBUG_VIEWS
+   * @param {import('./debugViews.js').DebugView} view one of DEBUG_VIEWS
    * @param {{ depthRange?: number, thicknessRangeMm?: number }} [options]
    */
   setDebugView(view, { depthRange = 100, thicknessRangeMm = 10 } = {}) {
@@ -97,11 +99,12 @@ export class SubsurfaceComposePass extends ShaderPass {
   }
 
   render(renderer, writeBuffer, readBuffer, deltaTime, maskActive) {
-    this.uniforms.farDepth.value = renderer.state.buffers.depth.getReversed() ? 0 : 1;
+    // three r172 brought the reversed depth buffer (and getReversed); before it depth is never reversed.
+    this.uniforms.farDepth.value = renderer.state.buffers.depth.getReversed?.() ? 0 : 1;
     super.render(renderer, writeBuffer, readBuffer, deltaTime, maskActive);
   }
 
-  /** Fraction of the width, from the left, shown without the blur (0 = none, 1 = all). */
+  /** @param {number} fraction of the width, from the left, shown without the blur (0 = none, 1 = all) */
   setSplit(fraction) {
     checkNumber('split', fraction, { min: 0, max: 1 });
     this.split = fraction;

@@ -1,7 +1,7 @@
 // Helpers for browser tests: connect to the run's shared Chromium, open a page served by the run's
 // Vite server, collect console errors, and read float pixel data back from the page.
 import { inject, afterAll } from 'vitest';
-import puppeteer from 'puppeteer';
+import puppeteer from 'puppeteer-core';
 import { openReadyPage } from '../../dev/browser.js';
 
 let connection = null;
@@ -35,7 +35,7 @@ export async function openPage(path, { width = 320, height = 180, ...options } =
  * Runs `fn(...args)` in the page and returns its result, with every Float32Array in it (at any
  * depth of plain objects) carried as base64 bytes so NaN and Infinity survive (JSON would turn
  * them into null).
- * @param {import('puppeteer').Page} page
+ * @param {import('puppeteer-core').Page} page
  * @param {Function} fn runs in the page: it cannot see this file's variables
  */
 export async function evaluateFloats(page, fn, ...args) {

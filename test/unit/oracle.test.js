@@ -362,8 +362,11 @@ describe('transmittance oracle', () => {
       shrinkWorld: 0.1,
       mapDepth,
     });
-    // shrunk point x = −0.9: light depth 10.9, minus 9
-    expect(back).toBeCloseTo(1.9, 12);
+    // the map is read at the shrunk point (x = −0.9), the thickness measured from the point itself:
+    // light depth 11 minus 9 (the shrink moves where the map is read, it does not shorten the thickness)
+    expect(back).toBeCloseTo(2, 12);
+    // a point in front of the recorded surface is that surface, lit directly: nothing comes through
+    expect(thicknessFromLightDepth({ lightViewMatrix: view, pointWorld: [1.5, 1, 0], normalWorld: [1, 0, 0], mapDepth })).toBe(Infinity);
     // with a projection, the map is looked up at the projected uv; 0 there means nothing → Infinity
     const projection = mat4.perspective(new Float64Array(16), Math.PI / 4, 1, 0.1, 100);
     let seenUv;

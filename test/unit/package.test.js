@@ -1,5 +1,6 @@
 // The library as users get it: built by Vite's library mode (GLSL inlined), imported by plain Node
-// with no DOM, no globals added, and computeKernel reproducing the reference presets.
+// with no DOM, no globals added (the subpath exports too), and computeKernel reproducing the
+// reference presets.
 import { describe, it, expect } from 'vitest';
 import { build } from 'vite';
 import { execFileSync } from 'node:child_process';
@@ -17,16 +18,23 @@ describe('the built package', () => {
     const script = `
       const before = new Set(Object.getOwnPropertyNames(globalThis));
       const m = await import(${JSON.stringify(`${outDir}/three-separable-sss.js`)});
+      // The subpath exports too: pmndrs postprocessing's pass, the React Three Fiber components.
+      const pmndrs = await import(${JSON.stringify(`${outDir}/postprocessing.js`)});
+      const react = await import(${JSON.stringify(`${outDir}/react.js`)});
       const added = Object.getOwnPropertyNames(globalThis).filter((k) => !before.has(k));
       const k17 = m.computeKernel({ samples: 17, method: 'reference' });
       console.log(JSON.stringify({
-        exports: Object.keys(m).sort(), added, typeofWindow: typeof window,
+        exports: Object.keys(m).sort(), added, typeofWindow: typeof window, typeofDocument: typeof document,
+        pmndrs: Object.keys(pmndrs).sort(), react: Object.keys(react).sort(),
         centre17: Array.from(k17.slice(0, 4)),
         sizes: [11, 17, 25].map((n) => m.referenceKernel(n).length / 4),
         chunk: m.transmittanceChunk.includes('sssTransmittance('),
       }));`;
-    const out = JSON.parse(execFileSync(process.execPath, ['--input-type=module', '-e', script], { encoding: 'utf8' }));
+    const out = JSON.parse(execFileSync(process.execPath, ['--input-type=module', '--no-deprecation', '-e', script], { encoding: 'utf8' }));
     expect(out.typeofWindow).toBe('undefined');
+    expect(out.typeofDocument).toBe('undefined');
+    expect(out.pmndrs).toEqual(['SubsurfaceScatteringPass']);
+    expect(out.react).toEqual(['Subsurface', 'SubsurfaceComposer', 'useSubsurface', 'useSubsurfaceComposer', 'useSubsurfaceScattering']);
     expect(out.added).toEqual([]);
     for (const name of ['computeKernel', 'profiles', 'transmittance', 'LightDepthTarget', 'transmittanceChunk', 'makeSubsurface', 'SubsurfaceBlurPass', 'SubsurfaceScattering']) {
       expect(out.exports).toContain(name);

@@ -1,0 +1,240 @@
+// three-separable-sss/react: skin scattering in a React Three Fiber app.
+//   <Canvas>
+//     <SubsurfaceComposer light={light} worldUnitInMm={1000}>      takes over the frame
+//       <mesh>
+//         <torusKnotGeometry args={[0.08, 0.025, 200, 32]} />
+//         <meshStandardMaterial color="#e0b8a0"><Subsurface widthMm={1} /></meshStandardMaterial>
+//       </mesh>
+//     </SubsurfaceComposer>
+//   </Canvas>
+//
+// <SubsurfaceComposer> (or the hook useSubsurfaceScattering) owns a three.js EffectComposer with
+// half-float buffers: the SubsurfaceScattering pass in place of a RenderPass, then an OutputPass
+// (the renderer's tone mapping and output colour space, which R3F sets). It renders every frame
+// from a useFrame of priority 1, which tells R3F not to render the scene itself.
+//
+// What survives what, without a rebuild: the camera and the scene are read from R3F's state every
+// frame, so a camera swap (makeDefault, set({ camera })) needs nothing; the canvas size and pixel
+// ratio are followed each frame. What rebuilds: a change of renderer, light or pipeline option
+// disposes the pipeline and builds a new one, and the materials registered with it (<Subsurface>,
+// useSubsurface) are bound to the new one. Unmounting disposes everything it made (targets,
+// programs, the materials' hooks), so mounting and unmounting leaves three's memory as it was.
+//
+// Importing this file touches no DOM (React, R3F and three are imported, nothing runs).
+import { createContext, createElement, useCallback, useContext, useEffect, useRef, useState } from 'react';
+import { useFrame, useThree } from '@react-three/fiber';
+import { HalfFloatType, WebGLRenderTarget } from 'three';
+import { EffectComposer } from 'three/addons/postprocessing/EffectComposer.js';
+import { OutputPass } from 'three/addons/postprocessing/OutputPass.js';
+import { SubsurfaceScattering } from '../index.js';
+
+/**
+ * @typedef {Omit<import('../SubsurfaceScattering.js').SubsurfaceScatteringOptions, 'scene'|'camera'|'light'> & {
+ *   light?: import('three').SpotLight|import('three').DirectionalLight|{ current: import('three').SpotLight|import('three').DirectionalLight|null }|null,
+ *   samples?: number|'auto',
+ *   antialias?: number,
+ *   enabled?: boolean,
+ * }} SubsurfaceComposerOptions
+ *   the pipeline's options (scene and camera are R3F's), `light` also as a ref; `antialias`: MSAA
+ *   samples of the composer's buffers (default 4); `enabled` false: R3F's plain render instead
+ */
+
+/**
+ * The pipeline of one <SubsurfaceComposer>, and the materials registered with it (they outlive
+ * rebuilds of the pipeline).
+ */
+class SubsurfaceRegistry {
+  constructor() {
+    /** @type {SubsurfaceScattering|null} the pipeline, null while none is built */
+    this.pass = null;
+    /** @type {EffectComposer|null} */
+    this.composer = null;
+    /** @type {Map<import('three').MeshStandardMaterial, import('../SubsurfaceScattering.js').SubsurfaceMaterialOptions>} */
+    this.materials = new Map();
+  }
+
+  /**
+   * Makes `material` scatter in this composer (now, and after every rebuild).
+   * @param {import('three').MeshStandardMaterial} material
+   * @param {import('../SubsurfaceScattering.js').SubsurfaceMaterialOptions} [options]
+   */
+  add(material, options = {}) {
+    this.materials.set(material, options);
+    this.pass?.makeSubsurface(material, options);
+  }
+
+  /** @param {import('three').MeshStandardMaterial} material */
+  remove(material) {
+    this.materials.delete(material);
+    this.pass?.removeSubsurface(material);
+  }
+
+  /** @private @param {SubsurfaceScattering} pass @param {EffectComposer} composer */
+  _connect(pass, composer) {
+    this.pass = pass;
+    this.composer = composer;
+    for (const [material, options] of this.materials) pass.makeSubsurface(material, options);
+  }
+
+  /** @private */
+  _disconnect() {
+    this.pass = null;
+    this.composer = null;
+  }
+}
+
+const RegistryContext = createContext(/** @type {SubsurfaceRegistry|null} */ (null));
+
+/** The options that, changed, rebuild the pipeline (compared by value; a profile object by identity). */
+function rebuildKey(options) {
+  return JSON.stringify(options, (key, value) => (key === 'profile' && typeof value === 'object' ? undefined : value));
+}
+
+/** A light given as an object or as a ref to one. */
+function resolveLight(light) {
+  if (!light) return null;
+  return light.isLight ? light : light.current ?? null;
+}
+
+/**
+ * Renders R3F's scene through SubsurfaceScattering from now on (a useFrame of priority 1).
+ * @param {SubsurfaceComposerOptions} [options]
+ * @returns {SubsurfaceRegistry} `pass` (the SubsurfaceScattering, null until built), `composer`,
+ *   and add(material, options) / remove(material) for materials made in code (e.g. a loaded model's)
+ */
+export function useSubsurfaceScattering(options = {}) {
+  const { light = null, antialias = 4, enabled = true, profile, ...rest } = options;
+  if (!Number.isInteger(antialias) || antialias < 0 || antialias > 16) {
+    throw new RangeError(`useSubsurfaceScattering: antialias must be an integer in 0..16 (MSAA samples), got ${antialias}`);
+  }
+  const gl = useThree((state) => state.gl);
+  const getState = useThree((state) => state.get); // R3F's store accessor: stable
+  const [registry] = useState(() => new SubsurfaceRegistry());
+  const key = rebuildKey(rest);
+  const enabledRef = useRef(enabled);
+  enabledRef.current = enabled;
+  const size = useRef({ width: 0, height: 0, dpr: 0 });
+
+  // Built after the commit (a light's ref is set by then), disposed on unmount or rebuild. React's
+  // StrictMode runs this twice: the first pipeline is disposed before the second is built.
+  useEffect(() => {
+    const { scene, camera } = getState();
+    const pass = new SubsurfaceScattering({ ...JSON.parse(key), ...(profile !== undefined && { profile }), scene, camera, light: resolveLight(light) });
+    const buffer = new WebGLRenderTarget(1, 1, { type: HalfFloatType, samples: antialias });
+    const composer = new EffectComposer(gl, buffer);
+    const output = new OutputPass();
+    composer.addPass(pass);
+    composer.addPass(output);
+    size.current = { width: 0, height: 0, dpr: 0 }; // sized on its first frame
+    registry._connect(pass, composer);
+    return () => {
+      registry._disconnect();
+      pass.dispose();
+      output.dispose();
+      composer.dispose(); // both of its buffers
+    };
+  }, [gl, getState, registry, light, profile, key, antialias]);
+
+  useFrame((state, deltaSeconds) => {
+    const { pass, composer } = registry;
+    if (!pass || !enabledRef.current) {
+      state.gl.render(state.scene, state.camera); // priority 1 turned R3F's own render off
+      return;
+    }
+    // A camera swap (makeDefault) or a new scene is simply what this frame draws.
+    pass.scene = state.scene;
+    pass.camera = state.camera;
+    const { width, height } = state.size;
+    const { dpr } = state.viewport;
+    const last = size.current;
+    if (last.width !== width || last.height !== height || last.dpr !== dpr) {
+      composer.setPixelRatio(dpr);
+      composer.setSize(width, height); // every pass, in device pixels
+      size.current = { width, height, dpr };
+    }
+    composer.render(deltaSeconds);
+  }, 1);
+
+  return registry;
+}
+
+/**
+ * Renders its children's scene with subsurface scattering; <Subsurface> inside it marks materials.
+ * @param {SubsurfaceComposerOptions & { children?: import('react').ReactNode }} props
+ * @returns {import('react').ReactElement}
+ */
+export function SubsurfaceComposer({ children, ...options }) {
+  const registry = useSubsurfaceScattering(options);
+  return createElement(RegistryContext.Provider, { value: registry }, children);
+}
+
+/** The registry of the enclosing <SubsurfaceComposer>; throws outside one. */
+function useRegistry(name) {
+  const registry = useContext(RegistryContext);
+  if (!registry) throw new Error(`${name} must be used inside <SubsurfaceComposer>`);
+  return registry;
+}
+
+/**
+ * The enclosing <SubsurfaceComposer>'s registry: `pass` (the SubsurfaceScattering, for its
+ * settings: setDebugView, setKernel...; null until built) and `composer`.
+ * @returns {SubsurfaceRegistry}
+ */
+export function useSubsurfaceComposer() {
+  return useRegistry('useSubsurfaceComposer');
+}
+
+/**
+ * Makes `material` scatter in the enclosing <SubsurfaceComposer> while the calling component is
+ * mounted (for materials made in code, e.g. a loaded model's). null: nothing.
+ * @param {import('three').MeshStandardMaterial|null|undefined} material
+ * @param {import('../SubsurfaceScattering.js').SubsurfaceMaterialOptions} [options]
+ */
+export function useSubsurface(material, options = {}) {
+  const registry = useRegistry('useSubsurface');
+  const key = JSON.stringify(options);
+  useEffect(() => {
+    if (!material) return undefined;
+    registry.add(material, JSON.parse(key));
+    return () => registry.remove(material);
+  }, [registry, material, key]);
+}
+
+/**
+ * As a child of <meshStandardMaterial> or <meshPhysicalMaterial>: makes that material scatter in
+ * the enclosing <SubsurfaceComposer> while mounted.
+ * @param {import('../SubsurfaceScattering.js').SubsurfaceMaterialOptions} props
+ * @returns {import('react').ReactElement}
+ */
+export function Subsurface(props) {
+  const registry = useRegistry('<Subsurface>');
+  const material = useRef(/** @type {import('three').MeshStandardMaterial|null} */ (null));
+  const live = useRef(false); // between this component's effect and its cleanup
+  const options = useRef(props);
+  options.current = props;
+  // R3F calls `attach` with the parent material (possibly while rendering, before effects run) and
+  // the cleanup it returns on detach; it keeps the first `attach` it is given.
+  const attach = useCallback((parent) => {
+    if (!parent?.isMeshStandardMaterial) {
+      throw new TypeError(`<Subsurface> must be a child of <meshStandardMaterial> or <meshPhysicalMaterial>, got ${parent?.type ?? parent}`);
+    }
+    material.current = parent;
+    if (live.current) registry.add(parent, options.current); // a parent rebuilt by R3F
+    return () => {
+      if (material.current === parent) material.current = null;
+      registry.remove(parent);
+    };
+  }, [registry]);
+  const key = JSON.stringify(props);
+  useEffect(() => {
+    live.current = true;
+    const current = material.current;
+    if (current) registry.add(current, JSON.parse(key));
+    return () => {
+      live.current = false;
+      if (current) registry.remove(current);
+    };
+  }, [registry, key]);
+  const [token] = useState(() => ({})); // the primitive R3F attaches: a placeholder object
+  return createElement('primitive', { object: token, attach, dispose: null });
+}

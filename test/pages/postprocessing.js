@@ -1,0 +1,37 @@
+// The browser side of test/browser/postprocessing.test.js: pmndrs `postprocessing` (the real
+// package), the pass of three-separable-sss/postprocessing, the demo's head and the lab's helpers
+// on `window.pp`. Nothing here is part of the library.
+import * as POSTPROCESSING from 'postprocessing';
+import { TexturePass } from 'three/addons/postprocessing/TexturePass.js';
+import { NoBlending } from 'three';
+import { SubsurfaceScatteringPass } from 'three-separable-sss/postprocessing';
+import { loadHead } from '/demo/headModel.js';
+import { createHeadScene, FACE_CENTRE, HEAD_WORLD_UNIT_IN_MM } from '/demo/headScene.js';
+import '/test/pages/lab.js';
+
+let headPromise = null;
+
+/** A fresh head scene (a clone of the mesh and its material: each pipeline hooks its own) framing the face. */
+async function headRig(aspect) {
+  headPromise ??= loadHead({ base: '/' });
+  const loaded = await headPromise;
+  const mesh = loaded.mesh.clone();
+  mesh.material = loaded.mesh.material.clone();
+  const rig = createHeadScene(mesh);
+  rig.camera.aspect = aspect;
+  rig.camera.updateProjectionMatrix();
+  rig.camera.lookAt(FACE_CENTRE);
+  rig.camera.updateMatrixWorld();
+  return { ...rig, isStandIn: loaded.isStandIn };
+}
+
+/** Copies `texture` into `target` exactly (three's TexturePass, unblended). */
+function copyTexture(renderer, texture, target) {
+  const pass = new TexturePass(texture);
+  pass.material.blending = NoBlending;
+  pass.render(renderer, null, target);
+  pass.dispose();
+}
+
+window.pp = { POSTPROCESSING, SubsurfaceScatteringPass, headRig, copyTexture, HEAD_WORLD_UNIT_IN_MM };
+window.testReady = true;

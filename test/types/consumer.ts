@@ -1,0 +1,111 @@
+// A strict TypeScript consumer of every export (test/unit/types.test.js compiles it against the
+// declarations generated from the JSDoc, installed as a package). It must compile with no error;
+// test/unit/types.test.js also checks that ALL_EXPORTS names every value the package exports.
+import * as THREE from 'three';
+import { EffectComposer } from 'three/addons/postprocessing/EffectComposer.js';
+import * as SSS from 'three-separable-sss';
+import {
+  SubsurfaceScattering, makeSubsurface, getSubsurface, LightDepthTarget, ProfileLookup, computeKernel,
+  type DebugView, type Method, type FollowSurfaceMode, type ProfileName, type SubsurfaceScatteringOptions,
+  type SubsurfaceMaterialOptions, type SubsurfaceBinding, type StageName,
+} from 'three-separable-sss';
+
+const scene = new THREE.Scene();
+const camera = new THREE.PerspectiveCamera(30, 16 / 9, 0.01, 10);
+const light = new THREE.SpotLight(0xffffff, 30);
+const skin = new THREE.MeshPhysicalMaterial({ color: 0xe0b8a0 });
+
+// The pipeline and its options: every enumerated option is a string-literal union.
+const method: Method = 'footprint';
+const follow: FollowSurfaceMode = 'drop';
+const profile: ProfileName = 'skinBurley';
+const options: SubsurfaceScatteringOptions = { scene, camera, light, worldUnitInMm: 1000, profile, method, followSurface: follow, samples: 'auto', multisampling: 4 };
+const sss = new SubsurfaceScattering(options);
+const materialOptions: SubsurfaceMaterialOptions = { widthMm: 1, widthScale: 0.8, transmittance: true };
+const binding: SubsurfaceBinding = sss.makeSubsurface(skin, materialOptions);
+const width: number = binding.widthWorld;
+sss.setDebugView('mask'); // the options argument is optional
+sss.setDebugView('thickness', { thicknessRangeMm: 5 });
+const views: readonly DebugView[] = SSS.DEBUG_VIEWS;
+const mask: 'mask' = SSS.DEBUG_VIEW.MASK;
+sss.setSplit(0.5);
+sss.setTransmittance(true);
+sss.setKernel({ profile: 'marble', method: 'reference', samples: 25 });
+sss.setFollowSurface('lerp');
+sss.setFollowSurface('off', 4);
+sss.setForeshortening(false);
+sss.scattering = false;
+sss.enabled = true;
+sss.clear = false;
+sss.clearColor = 0x000000;
+sss.clearAlpha = 1;
+sss.multisampling = 'auto';
+sss.camera = new THREE.OrthographicCamera();
+sss.stageTimer = { begin(stage: StageName) { void stage; }, end() {} };
+const depth: THREE.DepthTexture = sss.depthTexture;
+const removed: boolean = sss.removeSubsurface(skin);
+const composer = new EffectComposer(new THREE.WebGLRenderer(), new THREE.WebGLRenderTarget(1, 1, { type: THREE.HalfFloatType }));
+sss.addTo(composer);
+composer.addPass(sss);
+sss.setSize(640, 360);
+sss.dispose();
+
+// The stages on their own.
+const lightDepth = new LightDepthTarget(light, { size: 512 });
+const lookup = new ProfileLookup('skin');
+const kernel: Float32Array = computeKernel({ samples: 17, method: 'reference' });
+const hook = makeSubsurface(new THREE.MeshStandardMaterial(), { widthMm: 2, worldUnitInMm: 1000, transmittance: { lightDepth, lookup } });
+const bound: SubsurfaceBinding | undefined = getSubsurface(skin);
+hook.dispose();
+
+/** Every value the package exports, each used where its type is checked. */
+export const ALL_EXPORTS = {
+  SubsurfaceScattering: SSS.SubsurfaceScattering satisfies typeof SubsurfaceScattering,
+  MIN_KERNEL_PIXELS: SSS.MIN_KERNEL_PIXELS satisfies number,
+  METHODS: SSS.METHODS satisfies readonly Method[],
+  METHOD_TABLE: SSS.METHOD_TABLE.footprint.blur satisfies 'footprint',
+  AUTO_SAMPLES: SSS.AUTO_SAMPLES satisfies readonly number[],
+  AUTO_REACH: SSS.AUTO_REACH satisfies number,
+  FOLLOW_SURFACE_MODES: SSS.FOLLOW_SURFACE_MODES satisfies readonly FollowSurfaceMode[],
+  PIPELINE_DEFAULTS: SSS.PIPELINE_DEFAULTS.method satisfies Method,
+  MATERIAL_DEFAULTS: SSS.MATERIAL_DEFAULTS.widthMm satisfies number,
+  planFrame: SSS.planFrame({ scattering: true, pixelsPerMm: 2, samples: 'auto', autoRadiusMm: 3, radiusMmOf: (n: number) => n / 2 }).blur satisfies boolean,
+  autoSampleCount: SSS.autoSampleCount(4) satisfies number,
+  estimatePixelsPerMm: SSS.estimatePixelsPerMm([], camera, { width: 640, height: 360 }, () => 0.001) satisfies number,
+  LightDepthTarget: lightDepth.texture satisfies THREE.Texture,
+  SubsurfaceScenePass: new SSS.SubsurfaceScenePass(scene, camera).depthTexture satisfies THREE.DepthTexture,
+  makeSubsurface: SSS.makeSubsurface satisfies typeof makeSubsurface,
+  getSubsurface: bound,
+  MATERIAL_OUTPUTS: SSS.MATERIAL_OUTPUTS satisfies readonly ('diffuse' | 'transmittance' | 'thickness')[],
+  ATTACHMENTS: SSS.ATTACHMENTS.DIFFUSE satisfies 1,
+  DRAW_PHASES: SSS.DRAW_PHASES.SPLIT satisfies 'split',
+  transmittanceChunk: SSS.transmittanceChunk satisfies string,
+  createTransmittanceUniforms: SSS.createTransmittanceUniforms({ lightDepth, lookup, worldUnitInMm: 1000 }).update(camera),
+  transmittanceUniformSlots: SSS.transmittanceUniformSlots().sssShrinkWorld.value satisfies number,
+  SubsurfaceBlurPass: new SSS.SubsurfaceBlurPass({ direction: 'horizontal', kernel, camera, surfaceTexture: depth }).radiusMm satisfies number,
+  footprintsOf: SSS.footprintsOf(kernel).edgesMm satisfies number[],
+  KERNEL_MODES: SSS.KERNEL_MODES,
+  DenseSubsurfacePass: new SSS.DenseSubsurfacePass({ camera, surfaceTexture: depth, profile: 'skin' }).profile,
+  SubsurfaceComposePass: SSS.SubsurfaceComposePass,
+  DEBUG_VIEWS: views,
+  DEBUG_VIEW: mask,
+  computeKernel: kernel,
+  kernelRadiusMm: SSS.kernelRadiusMm(kernel) satisfies number,
+  referenceKernel: SSS.referenceKernel(11) satisfies Float32Array,
+  profiles: SSS.profiles.skin,
+  getProfile: SSS.getProfile('milk'),
+  transmittance: SSS.transmittance(1)[0] satisfies number,
+  burleyProfile: SSS.burleyProfile({ scatterDistanceMm: [1, 0.5, 0.25] }),
+  dipoleProfile: SSS.dipoleProfile(),
+  gaussianSumProfile: SSS.gaussianSumProfile('mine', [{ varianceMm2: 0.1, weights: [1, 1, 1] }]),
+  radialProfile: SSS.radialProfile,
+  ProfileLookup: lookup.marginalRadiusMm satisfies number,
+  QuadrantEnergyLookup: new SSS.QuadrantEnergyLookup('skin').texture satisfies THREE.DataTexture,
+  FootprintTable: new SSS.FootprintTable(new SSS.ProfileLookup('skin')).update('auto') satisfies THREE.DataTexture,
+  footprintAllocation: SSS.footprintAllocation((x: number) => [x, x, x], 17, 2).stepError satisfies number,
+  footprintTable: SSS.footprintTable((x: number) => [x, x, x], 17).columns satisfies number,
+  FOOTPRINT_SCALES: SSS.FOOTPRINT_SCALES.perOctave satisfies number,
+  pixelsPerMm: SSS.pixelsPerMm(0.001, 0.6, 2, 720) satisfies number,
+  isPerspective: SSS.isPerspective(camera) satisfies boolean,
+};
+void [width, removed];

@@ -1,0 +1,43 @@
+// Deliberate misuses: each line after a `@ts-expect-error` must be a compile error.
+// test/unit/types.test.js compiles this file as it is (an unused directive would fail it) and
+// with the directives removed, where it expects an error on exactly those lines.
+import * as THREE from 'three';
+import { SubsurfaceScattering, makeSubsurface, computeKernel } from 'three-separable-sss';
+import { SubsurfaceScatteringPass } from 'three-separable-sss/postprocessing';
+import { useSubsurfaceScattering } from 'three-separable-sss/react';
+
+const scene = new THREE.Scene();
+const camera = new THREE.PerspectiveCamera();
+// @ts-expect-error camera is required
+new SubsurfaceScattering({ scene });
+// @ts-expect-error an unknown method
+new SubsurfaceScattering({ scene, camera, method: 'fast' });
+// @ts-expect-error a misspelt profile
+new SubsurfaceScattering({ scene, camera, profile: 'skni' });
+// @ts-expect-error followSurface is one of 'off' | 'drop' | 'lerp'
+new SubsurfaceScattering({ scene, camera, followSurface: 'snap' });
+// @ts-expect-error samples is a number or 'auto'
+new SubsurfaceScattering({ scene, camera, samples: '17' });
+// @ts-expect-error a point light gives no transmittance
+new SubsurfaceScattering({ scene, camera, light: new THREE.PointLight() });
+const sss = new SubsurfaceScattering({ scene, camera });
+// @ts-expect-error an unknown debug view
+sss.setDebugView('masks');
+// @ts-expect-error only MeshStandardMaterial and MeshPhysicalMaterial scatter
+sss.makeSubsurface(new THREE.MeshBasicMaterial());
+// @ts-expect-error widthMm is a number
+sss.makeSubsurface(new THREE.MeshStandardMaterial(), { widthMm: '1' });
+// @ts-expect-error setSplit takes a fraction
+sss.setSplit('half');
+// @ts-expect-error multisampling is a number or 'auto'
+sss.multisampling = 'on';
+// @ts-expect-error the kernel's method is one of the four
+sss.setKernel({ method: 'gauss' });
+// @ts-expect-error computeKernel's method is 'reference' or 'marginal'
+computeKernel({ method: 'footprint' });
+// @ts-expect-error makeSubsurface needs a material
+makeSubsurface();
+// @ts-expect-error the pmndrs pass takes the same options
+new SubsurfaceScatteringPass({ scene, camera, method: 'fast' });
+// @ts-expect-error antialias is a sample count
+useSubsurfaceScattering({ antialias: true });

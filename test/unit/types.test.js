@@ -1,0 +1,85 @@
+// The TypeScript declarations as a consumer gets them: generated from the JSDoc by the package's
+// own build step (tsconfig.types.json), installed with package.json's `exports` into a scratch
+// project, and compiled by the real `tsc` in strict mode: the README's usage snippet, every export
+// (test/types/consumer.ts), the subpath exports with JSX (test/types/integrations.tsx) and a file of
+// deliberate misuses (test/types/misuse.ts), which must fail on exactly the lines it marks.
+import { describe, it, expect, beforeAll } from 'vitest';
+import { spawnSync } from 'node:child_process';
+import { cpSync, mkdirSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
+import { fileURLToPath } from 'node:url';
+import * as runtime from '../../src/index.js';
+
+const root = fileURLToPath(new URL('../..', import.meta.url));
+// Inside the repository so that three, @types/three, postprocessing, react and R3F resolve from its node_modules.
+const project = `${root}node_modules/.cache/sss-types-test`;
+const installed = `${project}/node_modules/three-separable-sss`;
+const tsc = `${root}node_modules/typescript/bin/tsc`;
+
+const COMPILER_OPTIONS = {
+  strict: true, noEmit: true, target: 'es2022', lib: ['es2022', 'dom'], module: 'esnext',
+  moduleResolution: 'bundler', jsx: 'react-jsx', types: [], skipLibCheck: false,
+  noUnusedLocals: false, isolatedModules: true,
+};
+
+function compile(files, name) {
+  writeFileSync(`${project}/${name}.json`, JSON.stringify({ compilerOptions: COMPILER_OPTIONS, files }, null, 2));
+  const run = spawnSync(process.execPath, [tsc, '-p', `${name}.json`, '--pretty', 'false'], { cwd: project, encoding: 'utf8' });
+  return { status: run.status, output: `${run.stdout}${run.stderr}` };
+}
+
+/** `file(line,col): error TSnnnn: ...` lines of tsc's output. */
+function errorsOf(output) {
+  return [...output.matchAll(/^(.+?)\((\d+),\d+\): error (TS\d+)/gm)].map(([, file, line, code]) => ({ file, line: Number(line), code }));
+}
+
+const misuse = readFileSync(`${root}test/types/misuse.ts`, 'utf8').split('\n');
+let expectedLines = [];
+
+beforeAll(() => {
+  rmSync(project, { recursive: true, force: true });
+  mkdirSync(`${project}/src`, { recursive: true });
+  // A package of its own: otherwise TypeScript would resolve the name as this repository's self-reference.
+  writeFileSync(`${project}/package.json`, '{ "name": "sss-types-consumer", "private": true, "type": "module" }\n');
+  // The declarations, by the build's own step, where the package's `exports` point.
+  const generate = spawnSync(process.execPath, [tsc, '-p', 'tsconfig.types.json', '--outDir', `${installed}/dist/types`], { cwd: root, encoding: 'utf8' });
+  expect(generate.status, generate.stdout + generate.stderr).toBe(0);
+  cpSync(`${root}package.json`, `${installed}/package.json`);
+  cpSync(`${root}test/types`, `${project}/src`, { recursive: true });
+  // The README's usage snippet as a TypeScript file.
+  const readme = readFileSync(`${root}README.md`, 'utf8');
+  const snippet = readme.slice(readme.indexOf('## Usage')).match(/```js\n([\s\S]*?)```/)[1];
+  writeFileSync(`${project}/src/readme.ts`, `${snippet}\nexport {};\n`);
+  // The misuses without their directives: the lines after each must be the errors.
+  const bare = [];
+  for (const line of misuse) {
+    if (line.trim().startsWith('// @ts-expect-error')) expectedLines.push(bare.length + 2); // 1-based, the next line
+    else bare.push(line);
+  }
+  expectedLines = expectedLines.map((n) => n - 1);
+  writeFileSync(`${project}/src/misuse-bare.ts`, bare.join('\n'));
+}, 120_000);
+
+describe('the generated declarations', () => {
+  it('compile a strict consumer of the README snippet, every export, the pmndrs pass and the R3F components', () => {
+    const { status, output } = compile(['src/readme.ts', 'src/consumer.ts', 'src/integrations.tsx', 'src/misuse.ts'], 'tsconfig.consumer');
+    expect(output).toBe('');
+    expect(status).toBe(0);
+  }, 120_000);
+
+  it('refuse every deliberate misuse, on exactly the lines marked', () => {
+    expect(expectedLines.length).toBe(misuse.filter((l) => l.includes('@ts-expect-error ')).length);
+    expect(expectedLines.length).toBeGreaterThanOrEqual(15);
+    const { status, output } = compile(['src/misuse-bare.ts'], 'tsconfig.misuse');
+    expect(status).not.toBe(0);
+    const errors = errorsOf(output);
+    expect(errors.every((e) => e.file === 'src/misuse-bare.ts'), output).toBe(true);
+    expect([...new Set(errors.map((e) => e.line))].sort((a, b) => a - b)).toEqual(expectedLines);
+  }, 120_000);
+
+  it('consumer.ts names every value the package exports', () => {
+    const consumer = readFileSync(`${root}test/types/consumer.ts`, 'utf8');
+    const block = consumer.slice(consumer.indexOf('export const ALL_EXPORTS'));
+    const named = [...block.matchAll(/^ {2}(\w+):/gm)].map((m) => m[1]).sort();
+    expect(named).toEqual(Object.keys(runtime).sort());
+  });
+});
