@@ -1,6 +1,7 @@
 // Stage 1 (light pass): linear depth seen from the light.
 // Three's chunks keep skinned, morphed, instanced and batched meshes in step with the main pass.
 #include <common>
+#include <uv_pars_vertex>
 #include <batching_pars_vertex>
 #include <morphtarget_pars_vertex>
 #include <skinning_pars_vertex>
@@ -9,6 +10,7 @@
 varying float vLightDepth;
 
 void main() {
+	#include <uv_vertex>
 	#include <batching_vertex>
 	#include <skinbase_vertex>
 	#include <begin_vertex>

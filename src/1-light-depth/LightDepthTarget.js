@@ -2,7 +2,7 @@
 // shadow map it stores distance along the light's view axis in world units, so the thickness of
 // an object is a plain difference of two depths.
 import {
-  DoubleSide, FloatType, NearestFilter, OrthographicCamera, PerspectiveCamera, RedFormat,
+  DoubleSide, FloatType, Matrix3, NearestFilter, OrthographicCamera, PerspectiveCamera, RedFormat,
   ShaderMaterial, Vector3, WebGLRenderTarget,
 } from 'three';
 import vertexShader from '../../shaders/1-light-depth/lightDepth.vert.glsl?raw';
@@ -12,6 +12,27 @@ import { assertFloatRenderTargets, describe } from '../support/rendererSupport.j
 import { preservingRendererState } from '../support/rendererState.js';
 
 const _target = new Vector3();
+
+/** Drawn in place of what the light pass leaves out: three culls a material with visible false. */
+const HIDDEN = new ShaderMaterial({ name: 'LightDepthHidden', visible: false });
+
+/**
+ * Whether a material's own shape matters from the light: a cut-out (alphaTest with a map or an
+ * alphaMap, or alphaToCoverage, which three's shadow maps also read as alphaTest 0.5) or local
+ * clipping planes. Other materials share one depth material.
+ * @param {import('three').Material} material
+ */
+function hasOwnShape(material) {
+  const cutOut = (material.alphaTest > 0 || material.alphaToCoverage === true) && Boolean(material.map || material.alphaMap);
+  const clipped = Array.isArray(material.clippingPlanes) && material.clippingPlanes.length > 0;
+  return cutOut || clipped;
+}
+
+/** A texture's uv transform, as three's own materials upload it. */
+function uvTransform(texture, into) {
+  if (texture.matrixAutoUpdate === true) texture.updateMatrix();
+  return into.copy(texture.matrix);
+}
 
 /**
  * Renders the scene from a SpotLight (perspective) or DirectionalLight (orthographic) into a
@@ -39,6 +60,7 @@ export class LightDepthTarget {
       vertexShader,
       fragmentShader,
       side: DoubleSide, // thin open shells still record their nearest surface
+      clipping: true, // the renderer's clipping planes cut what the light sees as they cut the view
     });
     this.renderTarget = new WebGLRenderTarget(1, 1, {
       type: FloatType,
@@ -48,6 +70,9 @@ export class LightDepthTarget {
       depthBuffer: true,
     });
     this.renderTarget.texture.name = 'LightDepthTarget.texture';
+    /** @type {Map<import('three').Material, ShaderMaterial>} depth materials of cut-out or clipped materials */
+    this._shaped = new Map();
+    this._onMaterialDispose = (event) => this._forget(event.target);
     this.setSize(size);
   }
 
@@ -87,8 +112,66 @@ export class LightDepthTarget {
   }
 
   /**
-   * Renders `scene` from the light. Restores the renderer's render target, clear colour/alpha,
-   * autoClear and the scene's overrideMaterial.
+   * What `object` is drawn with from the light: the shared depth material, a depth material that
+   * keeps its material's cut-out and clipping, or nothing. Left out: transparent and transmissive
+   * materials (glass or a veil between the light and the skin would read as tissue and hide the
+   * glow behind it; the pipeline draws them after the compose anyway), materials with visible false, and points, lines and
+   * sprites (they bound no volume).
+   * @param {import('three').Object3D} object
+   * @returns {ShaderMaterial | ShaderMaterial[] | null} null: not a drawable mesh, leave it
+   */
+  depthMaterialOf(object) {
+    if (object.isPoints || object.isLine || object.isSprite) return HIDDEN;
+    if (!object.isMesh) return null;
+    const of = (material) => {
+      if (!material || material.visible === false || material.transparent === true || material.transmission > 0) return HIDDEN;
+      return hasOwnShape(material) ? this._shapedMaterial(material) : this.material;
+    };
+    return Array.isArray(object.material) ? object.material.map(of) : of(object.material);
+  }
+
+  /** The depth material following `material`'s cut-out and clipping, its uniforms read now. */
+  _shapedMaterial(material) {
+    let shaped = this._shaped.get(material);
+    if (!shaped) {
+      shaped = this.material.clone();
+      shaped.name = `LightDepthMaterial(${material.name || material.type})`;
+      Object.assign(shaped.uniforms, {
+        map: { value: null }, mapTransform: { value: new Matrix3() },
+        alphaMap: { value: null }, alphaMapTransform: { value: new Matrix3() },
+        alphaTest: { value: 0 }, opacity: { value: 1 },
+      });
+      this._shaped.set(material, shaped);
+      material.addEventListener('dispose', this._onMaterialDispose);
+    }
+    // Three derives USE_MAP, USE_ALPHAMAP, USE_ALPHATEST and their uv channels from these fields,
+    // for a ShaderMaterial as for its own; the uniforms it leaves to us.
+    const alphaTest = material.alphaToCoverage === true ? 0.5 : material.alphaTest;
+    shaped.map = material.map ?? null;
+    shaped.alphaMap = material.alphaMap ?? null;
+    shaped.alphaTest = shaped.map || shaped.alphaMap ? alphaTest : 0;
+    shaped.clippingPlanes = material.clippingPlanes;
+    shaped.clipIntersection = material.clipIntersection;
+    const u = shaped.uniforms;
+    u.map.value = shaped.map;
+    u.alphaMap.value = shaped.alphaMap;
+    if (shaped.map) uvTransform(shaped.map, u.mapTransform.value);
+    if (shaped.alphaMap) uvTransform(shaped.alphaMap, u.alphaMapTransform.value);
+    u.alphaTest.value = shaped.alphaTest;
+    u.opacity.value = material.opacity;
+    return shaped;
+  }
+
+  _forget(material) {
+    material.removeEventListener('dispose', this._onMaterialDispose);
+    this._shaped.get(material)?.dispose();
+    this._shaped.delete(material);
+  }
+
+  /**
+   * Renders `scene` from the light, each mesh drawn with `depthMaterialOf(mesh)` (its own material
+   * is put back after, also on an exception). Restores the renderer's render target, clear
+   * colour/alpha, autoClear and the scene's background and overrideMaterial.
    * @param {import('three').WebGLRenderer} renderer
    * @param {import('three').Scene} scene
    */
@@ -98,21 +181,36 @@ export class LightDepthTarget {
       throw new TypeError(`LightDepthTarget.render: scene must be a THREE.Scene, got ${describe(scene)}`);
     }
     this.updateCamera();
+    /** @type {[import('three').Object3D, any][]} */
+    const swapped = [];
     preservingRendererState(renderer, scene, () => {
-      scene.overrideMaterial = this.material;
-      scene.background = null;
-      renderer.shadowMap.autoUpdate = false; // the light's view needs no shadow maps
-      renderer.setRenderTarget(this.renderTarget);
-      renderer.setClearColor(0x000000, 0); // 0 = no surface
-      renderer.autoClear = false;
-      renderer.clear(true, true, false);
-      renderer.render(scene, this.camera);
+      try {
+        // Per mesh rather than scene.overrideMaterial: an override would draw a leaf card's
+        // cut-away corners and a glass pane as solid (three's shadow maps do the same per mesh).
+        scene.traverseVisible((object) => {
+          const depthMaterial = this.depthMaterialOf(object);
+          if (depthMaterial === null) return;
+          swapped.push([object, object.material]);
+          object.material = depthMaterial;
+        });
+        scene.overrideMaterial = null;
+        scene.background = null;
+        renderer.shadowMap.autoUpdate = false; // the light's view needs no shadow maps
+        renderer.setRenderTarget(this.renderTarget);
+        renderer.setClearColor(0x000000, 0); // 0 = no surface
+        renderer.autoClear = false;
+        renderer.clear(true, true, false);
+        renderer.render(scene, this.camera);
+      } finally {
+        for (const [object, material] of swapped) object.material = material;
+      }
     });
   }
 
-  /** Frees the target and the depth material. */
+  /** Frees the target and the depth materials. */
   dispose() {
     this.renderTarget.dispose();
     this.material.dispose();
+    for (const material of [...this._shaped.keys()]) this._forget(material);
   }
 }
