@@ -148,6 +148,7 @@ export class BlurStage {
     const next = { ...this.kernelOptions, ...options };
     if (options.profile !== undefined) next.profile = getProfile(options.profile);
     const kernel = this._computeKernel(next, method);
+    this._warnBuiltInKernel(method, next.profile);
     const profileChanged = next.profile !== this.profileLookup.profile;
     this.kernelOptions = next;
     this.method = method;
@@ -162,6 +163,21 @@ export class BlurStage {
       pass.setKernel(kernel);
       pass.setStrength(next.strength ?? [1, 1, 1]);
     }
+  }
+
+  /**
+   * Method 'reference' is Jimenez 2012's kernel with its skin profile built in (REFERENCE §3): any
+   * other profile then drives only transmittance. Said once per profile, not silently.
+   */
+  _warnBuiltInKernel(method, profile) {
+    if (method !== 'reference' || profile === getProfile('skin')) return;
+    this._warnedProfiles ??= new WeakSet();
+    if (this._warnedProfiles.has(profile)) return;
+    this._warnedProfiles.add(profile);
+    console.warn(
+      `SubsurfaceScattering: method 'reference' blurs with Jimenez's built-in skin kernel (strength and falloff shape it); ` +
+      `profile ${profile.name ? `'${profile.name}'` : '(custom)'} is used for transmittance only. Use method 'footprint' or 'marginal' to blur with it.`,
+    );
   }
 
   /** @param {'drop'|'lerp'|'off'} mode @param {number} depthThresholdWorld */

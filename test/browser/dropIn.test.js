@@ -110,6 +110,23 @@ describe('transparent objects', () => {
     expect(warnings[0]).toMatch(/transparent = false/);
     expect(Math.min(...r.centre)).toBeGreaterThan(0.1); // drawn, not lost
   });
+
+  it("method 'reference' with a profile other than skin says once that its kernel is skin's", async () => {
+    warnings.length = 0;
+    await page.evaluate(() => {
+      const { SSS, buildScene, DEFAULTS } = window.lab;
+      const built = buildScene('slab', { aspect: 1 });
+      const make = (options) => new SSS.SubsurfaceScattering({ scene: built.scene, camera: built.camera, worldUnitInMm: DEFAULTS.worldUnitInMm, ...options });
+      make({ method: 'reference', profile: 'skin' }).dispose(); // Jimenez's own profile: nothing to say
+      const sss = make({ method: 'footprint', profile: 'marble' });
+      sss.setKernel({ method: 'reference' });
+      sss.setKernel({ samples: 25 }); // the same profile again: said already
+      sss.setKernel({ method: 'marginal' });
+      sss.dispose();
+    });
+    expect(warnings).toHaveLength(1);
+    expect(warnings[0]).toMatch(/method 'reference' blurs with Jimenez's built-in skin kernel.*profile 'marble' is used for transmittance only/);
+  });
 });
 
 describe('other passes before and after it', () => {
