@@ -20,44 +20,8 @@ afterAll(async () => {
   await page.close();
 });
 
-// ---- closed forms (d'Eon & Luebke 2007's six Gaussians; the skinBurley scatter distances, which
-// src/profiles/presets.js documents and the profile unit tests derive from skin's radii) ----
-const DEON = [
-  [0.0064, [0.233, 0.455, 0.649]], [0.0484, [0.1, 0.336, 0.344]], [0.187, [0.118, 0.198, 0]],
-  [0.567, [0.113, 0.007, 0.007]], [1.99, [0.358, 0.004, 0]], [7.41, [0.078, 0, 0]],
-];
-const MARBLE = [
-  [0.0362, [0.0545, 0.1245, 0.2177]], [0.1145, [0.2437, 0.2435, 0.189]], [0.4556, [0.3105, 0.3158, 0.3742]], [3.4833, [0.3913, 0.3161, 0.219]],
-];
-const BURLEY_L = [0.41954, 0.097094, 0.059361];
-
-function normalised(gaussians) {
-  const sums = [0, 1, 2].map((c) => gaussians.reduce((s, [, w]) => s + w[c], 0));
-  return gaussians.map(([v, w]) => [v, w.map((x, c) => x / sums[c])]);
-}
-const GAUSSIANS = { skin: normalised(DEON), marble: normalised(MARBLE) };
-
-/** M(f): the marginal's Fourier transform, per channel. */
-function transferOf(profile, f) {
-  if (profile === 'skinBurley') {
-    return BURLEY_L.map((l) => 0.25 * (1 / Math.hypot(1, 2 * Math.PI * f * l) + 3 / Math.hypot(1, 6 * Math.PI * f * l)));
-  }
-  return [0, 1, 2].map((c) => GAUSSIANS[profile].reduce((s, [v, w]) => s + w[c] * Math.exp(-2 * Math.PI ** 2 * v * f * f), 0));
-}
-
-/** erfc (Abramowitz & Stegun 7.1.26 is too coarse here: a series / continued fraction, 1e-12). */
-function erfc(x) {
-  if (x < 0) return 2 - erfc(-x);
-  if (x < 2) {
-    let term = x;
-    let sum = x;
-    for (let n = 1; n < 60; n++) { term *= (2 * x * x) / (2 * n + 1); sum += term; }
-    return 1 - (2 / Math.sqrt(Math.PI)) * Math.exp(-x * x) * sum;
-  }
-  let f = 0;
-  for (let n = 60; n >= 1; n--) f = (n / 2) / (x + f);
-  return Math.exp(-x * x) / (Math.sqrt(Math.PI) * (x + f));
-}
+import { GAUSSIANS, BURLEY_L, transferOf, erfc } from '../oracle/closedForms.js';
+import { frequenciesAt, measuredTransfer } from '../oracle/gratingFit.js';
 
 /** E(x): the profile's energy beyond the line at x mm (x may be negative), per channel. */
 function beyondLine(profile, x) {
@@ -82,77 +46,14 @@ function beyondLine(profile, x) {
 }
 
 // ---- measurement ----
-/** Solves the small dense system A y = b (Gaussian elimination with partial pivoting). */
-function solve(A, b) {
-  const n = b.length;
-  const M = A.map((row, i) => [...row, b[i]]);
-  for (let i = 0; i < n; i++) {
-    let p = i;
-    for (let k = i + 1; k < n; k++) if (Math.abs(M[k][i]) > Math.abs(M[p][i])) p = k;
-    [M[i], M[p]] = [M[p], M[i]];
-    for (let k = i + 1; k < n; k++) {
-      const m = M[k][i] / M[i][i];
-      for (let j = i; j <= n; j++) M[k][j] -= m * M[i][j];
-    }
-  }
-  const y = new Array(n).fill(0);
-  for (let i = n - 1; i >= 0; i--) {
-    let s = M[i][n];
-    for (let j = i + 1; j < n; j++) s -= M[i][j] * y[j];
-    y[i] = s / M[i][i];
-  }
-  return y;
-}
-
-/**
- * Amplitude of each frequency in channel c of an image: least squares of c0 + Σ aₖ cos + bₖ sin
- * over the pixels at least `margin` from the image's border, u the coordinate along the grating (mm).
- */
-function amplitudes(image, { width, height }, c, frequencies, s, angleDeg, margin) {
-  const cos = Math.cos((angleDeg * Math.PI) / 180);
-  const sin = Math.sin((angleDeg * Math.PI) / 180);
-  const n = 1 + 2 * frequencies.length;
-  const A = Array.from({ length: n }, () => new Array(n).fill(0));
-  const b = new Array(n).fill(0);
-  const basis = new Array(n);
-  for (let y = margin; y < height - margin; y++) {
-    for (let x = margin; x < width - margin; x++) {
-      const u = (((x + 0.5 - width / 2) * cos) + ((y + 0.5 - height / 2) * sin)) / s;
-      basis[0] = 1;
-      frequencies.forEach((f, k) => {
-        basis[1 + 2 * k] = Math.cos(2 * Math.PI * f * u);
-        basis[2 + 2 * k] = Math.sin(2 * Math.PI * f * u);
-      });
-      const v = image[(y * width + x) * 4 + c];
-      for (let i = 0; i < n; i++) {
-        b[i] += basis[i] * v;
-        for (let j = 0; j < n; j++) A[i][j] += basis[i] * basis[j];
-      }
-    }
-  }
-  const coef = solve(A, b);
-  return frequencies.map((_, k) => Math.hypot(coef[1 + 2 * k], coef[2 + 2 * k]));
-}
-
-const FREQUENCIES = [0.05, 0.1, 0.25, 0.4, 0.7, 1.0, 1.5];
-/** The frequencies a scale can show with at least 4 pixels per cycle (at most 1.5 cycles/mm). */
-const frequenciesAt = (s) => FREQUENCIES.filter((f) => f <= 0.25 * s + 1e-9).slice(-5);
-
 /** Measured transfer per frequency and channel, and its worst difference from `expected(f)`. */
 async function grating({ profile, s, angleDeg = 0, width = 256, height = 256, sss = {}, expected = (f) => transferOf(profile, f) }) {
   const frequencies = frequenciesAt(s);
   const phases = frequencies.map((_, k) => 0.7 * k);
   const r = await evaluateFloats(page, (o) => window.lab.flat(o), { width, height, pxPerMm: s, pattern: 'cosines', frequencies, phases, angleDeg, sss: { profile, ...sss } });
   expect(r.glError).toBe(0);
-  // Away from the border by the kernel's reach (red skin: 99.9 % within 9 mm), and at least 8 px.
-  const margin = Math.min(Math.max(8, Math.ceil(9 * s)), Math.floor(Math.min(width, height) / 2) - 40);
+  const measured = measuredTransfer(r, frequencies, s, angleDeg);
   let worst = 0;
-  const measured = [];
-  for (let c = 0; c < 3; c++) {
-    const before = amplitudes(r.before, r, c, frequencies, s, angleDeg, margin);
-    const after = amplitudes(r.after, r, c, frequencies, s, angleDeg, margin);
-    measured.push(after.map((a, k) => a / before[k]));
-  }
   frequencies.forEach((f, k) => {
     const e = expected(f);
     for (let c = 0; c < 3; c++) worst = Math.max(worst, Math.abs(measured[c][k] - e[c]));
