@@ -7,7 +7,7 @@ import {
 } from 'three';
 import vertexShader from '../../shaders/1-light-depth/lightDepth.vert.glsl?raw';
 import fragmentShader from '../../shaders/1-light-depth/lightDepth.frag.glsl?raw';
-import { checkInteger } from '../support/parameterChecks.js';
+import { checkInteger, checkNumber, checkOptions } from '../support/parameterChecks.js';
 import { assertFloatRenderTargets, describe } from '../support/rendererSupport.js';
 import { preservingRendererState } from '../support/rendererState.js';
 
@@ -26,10 +26,13 @@ export class LightDepthTarget {
    * @param {number} [options.near] near plane, world units (default: the light's shadow camera)
    * @param {number} [options.far] far plane, world units (default: the light's shadow camera)
    */
-  constructor(light, { size = 1024, near, far } = {}) {
+  constructor(light, options = {}) {
     if (!light || !(light.isSpotLight || light.isDirectionalLight)) {
       throw new TypeError(`LightDepthTarget: light must be a THREE.SpotLight or THREE.DirectionalLight, got ${describe(light)}`);
     }
+    const { size = 1024, near, far } = checkOptions('LightDepthTarget options', options, ['size', 'near', 'far']);
+    if (near !== undefined) checkNumber('near', near, { min: 0, minExclusive: true, unit: 'world units' });
+    if (far !== undefined) checkNumber('far', far, { min: near ?? 0, minExclusive: true, unit: 'world units' });
     this.light = light;
     this.near = near;
     this.far = far;
@@ -84,6 +87,26 @@ export class LightDepthTarget {
     }
     camera.updateProjectionMatrix();
     camera.updateMatrixWorld();
+  }
+
+  /**
+   * Places the light camera (updateCamera) and says what makes its frustum unusable, or null: a
+   * SpotLight angle outside (0, π/2], near ≤ 0 for a SpotLight, far ≤ near, a DirectionalLight's
+   * shadow camera of zero width or height, or any other projection that is not finite.
+   * @returns {string|null}
+   */
+  frustumProblem() {
+    this.updateCamera();
+    const { light, camera } = this;
+    const { near, far } = camera;
+    if (light.isSpotLight && !(light.angle > 0 && light.angle <= Math.PI / 2)) return `light.angle ${light.angle} is not in (0, π/2]`;
+    if (light.isSpotLight && !(near > 0)) return `near ${near} is not above 0`;
+    if (!(far > near)) return `far ${far} is not beyond near ${near} (light.shadow.camera, or the near and far options)`;
+    if (!light.isSpotLight && !(camera.right !== camera.left && camera.top !== camera.bottom)) {
+      return `light.shadow.camera spans left ${camera.left} to right ${camera.right}, bottom ${camera.bottom} to top ${camera.top}`;
+    }
+    if (!camera.projectionMatrix.elements.every(Number.isFinite)) return 'its projection is not finite';
+    return null;
   }
 
   /**
