@@ -39,7 +39,9 @@ try {
   const heap = async () => {
     await client.send('HeapProfiler.collectGarbage');
     await client.send('HeapProfiler.collectGarbage');
-    return (await client.send('Runtime.getHeapUsage')).usedSize;
+    // V8's heap and the array buffers' backing stores (typed arrays live outside it).
+    const { usedSize, backingStorageSize = 0 } = await client.send('Runtime.getHeapUsage');
+    return usedSize + backingStorageSize;
   };
 
   if (cycleCount > 0) {

@@ -18,11 +18,12 @@ afterAll(async () => {
   await page.close();
 });
 
-/** The JS heap after a full garbage collection, bytes. */
+/** The JS heap after a full garbage collection, with the array buffers' backing stores (outside V8's heap), bytes. */
 async function heapAfterGc(client) {
   await client.send('HeapProfiler.collectGarbage');
   await client.send('HeapProfiler.collectGarbage');
-  return (await client.send('Runtime.getHeapUsage')).usedSize;
+  const { usedSize, backingStorageSize = 0 } = await client.send('Runtime.getHeapUsage');
+  return usedSize + backingStorageSize;
 }
 
 describe('the bad-input table', () => {

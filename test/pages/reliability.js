@@ -118,7 +118,7 @@ async function cycles({ count = 20 } = {}) {
 // resets), so the state after each full cycle is the same: what is held then must not grow.
 const CHANGES = [
   (s) => s.sss.setKernel({ method: 'marginal' }),
-  (s) => s.sss.setKernel({ samples: 9 }),
+  (s) => s.sss.setKernel({ method: 'footprint', samples: 9 }), // a footprint table of another width
   (s) => s.sss.setKernel({ profile: 'marble' }),
   (s) => s.sss.setFollowSurface('lerp', 4),
   (s) => s.sss.setDebugView('diffuse'),
