@@ -1,5 +1,7 @@
 // The tuning panel (lil-gui, shipped with three): one control per state key, grouped like the
-// pipeline. Changes go to `onChange(key)`; `refresh()` pulls values back after a preset.
+// pipeline. Changes go to `onChange(key)`; `refresh()` pulls values back after a preset. Its
+// stylesheet is demo/lil-gui.css, linked by index.html: lil-gui's own would be an inline <style>,
+// which the demo's Content-Security-Policy refuses.
 import GUI from 'three/addons/libs/lil-gui.module.min.js';
 import { STATE_SCHEMA } from './state.js';
 import { FIGURES } from './figures.js';
@@ -19,7 +21,7 @@ const LABELS = {
  * @param {() => object} hooks.timings the current timings summary
  */
 export function createControls(state, { onChange, onFigure, timings }) {
-  const gui = new GUI({ title: 'three-separable-sss' });
+  const gui = new GUI({ title: 'three-separable-sss', injectStyles: false });
   const add = (folder, key, ...args) => {
     const schema = STATE_SCHEMA[key];
     let controller;

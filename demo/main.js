@@ -21,9 +21,17 @@ const hashNotice = document.getElementById('hash-notice');
 const progress = document.getElementById('progress');
 const kernelCanvas = document.getElementById('kernel-plot');
 
-function showNotice(element, html) {
-  element.innerHTML = html;
+/** Shows a notice made of text and elements (no HTML strings: the page runs under a strict CSP). */
+function showNotice(element, ...parts) {
+  element.replaceChildren(...parts);
   element.hidden = false;
+}
+
+/** A <code> element holding `text`. */
+function code(text) {
+  const element = document.createElement('code');
+  element.textContent = text;
+  return element;
 }
 
 /** Reads the hash into a full state: defaults, then the figure preset, then explicit keys. */
@@ -47,9 +55,9 @@ async function start() {
   progress.hidden = true;
   if (head.isStandIn) {
     showNotice(notice,
-      `Showing a procedural stand-in bust: the head scan files are missing (${head.missing.join(', ')}); ${head.reason}. ` +
-      'Run <code>npm run assets</code> with the files in <code>public/assets/LeePerrySmith/</code>, ' +
-      'or set <code>SSS_ASSETS_DIR</code> to a folder holding them, or run it online to download them.');
+      `Showing a procedural stand-in bust: the head scan files are missing (${head.missing.join(', ')}); ${head.reason}. Run `,
+      code('npm run assets'), ' with the files in ', code('public/assets/LeePerrySmith/'), ', or set ', code('SSS_ASSETS_DIR'),
+      ' to a folder holding them, or run it online to download them.');
   }
 
   const rig = createHeadScene(head.mesh);
@@ -152,7 +160,13 @@ async function start() {
   }
 
   function showProblems() {
-    if (problems.length) showNotice(hashNotice, problems.map((p) => `<div>${p.replace(/</g, '&lt;')}</div>`).join(''));
+    if (problems.length) {
+      showNotice(hashNotice, ...problems.map((p) => {
+        const line = document.createElement('div');
+        line.textContent = p;
+        return line;
+      }));
+    }
     else hashNotice.hidden = true;
   }
 

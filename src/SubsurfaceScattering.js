@@ -16,13 +16,17 @@
 //   5. compose       src/4-compose/       colour + scattered diffuse into the composer's buffer,
 //                                         with the scene's depth
 //   6. transparent   src/2-scene-split/   transparent objects blended over it, depth-tested
-import { HalfFloatType } from 'three';
+import { FloatType, HalfFloatType } from 'three';
 import { Pass } from 'three/addons/postprocessing/Pass.js';
 import { getProfile } from './profiles/presets.js';
 import { ProfileLookup } from './profiles/ProfileLookup.js';
-import { checkInteger, checkNumber, checkOneOf } from './support/parameterChecks.js';
+import { checkBoolean, checkInteger, checkNumber, checkOneOf, checkOptions } from './support/parameterChecks.js';
 import { describe } from './support/rendererSupport.js';
-import { FOLLOW_SURFACE_MODES, MAX_MULTISAMPLING, MAX_SCALE_MM, METHODS, PIPELINE_DEFAULTS } from './options.js';
+import { PASS_BOOLEANS, booleanFields } from './support/booleanFields.js';
+import { FrameChecks, checkTargetSize, checkTargetLimits } from './support/frameChecks.js';
+import {
+  FOLLOW_SURFACE_MODES, MAX_MULTISAMPLING, MAX_SCALE_MM, METHODS, MIN_SCALE_MM, PIPELINE_DEFAULTS, PIPELINE_OPTIONS,
+} from './options.js';
 import { estimatePixelsPerMm, planFrame } from './framePlan.js';
 import { LightDepthTarget } from './1-light-depth/LightDepthTarget.js';
 import { PipelineMaterials } from './2-scene-split/PipelineMaterials.js';
@@ -38,6 +42,23 @@ export { MIN_KERNEL_PIXELS } from './3-blur/samplingModel.js';
 function checkDepthThreshold(depthThresholdMm) {
   return checkNumber('depthThresholdMm', depthThresholdMm, { min: 0, minExclusive: true, max: MAX_SCALE_MM, unit: 'mm' });
 }
+
+function checkWorldUnit(worldUnitInMm) {
+  return checkNumber('worldUnitInMm', worldUnitInMm, { min: MIN_SCALE_MM, max: MAX_SCALE_MM, unit: 'mm' });
+}
+
+function checkScene(scene) {
+  if (!scene || scene.isScene !== true) throw new TypeError(`SubsurfaceScattering: scene must be a THREE.Scene, got ${describe(scene)}`);
+  return scene;
+}
+
+function checkCamera(camera) {
+  if (!camera || camera.isCamera !== true) throw new TypeError(`SubsurfaceScattering: camera must be a THREE.Camera, got ${describe(camera)}`);
+  return camera;
+}
+
+/** The light depth map's resolution, checked under the pipeline's option name (LightDepthTarget calls it `size`). */
+const LIGHT_DEPTH_SIZES = Object.freeze({ min: 16, max: 8192 });
 
 /**
  * new SubsurfaceScattering({ ... }): the defaults are PIPELINE_DEFAULTS.
@@ -85,41 +106,50 @@ export class SubsurfaceScattering extends Pass {
   /** @param {SubsurfaceScatteringOptions} options */
   constructor(options) {
     super();
+    if (options === undefined || options === null || typeof options !== 'object' || Array.isArray(options)) {
+      throw new TypeError(`SubsurfaceScattering: options must be an object { scene, camera, ... }, got ${describe(options)}`);
+    }
+    checkOptions('SubsurfaceScattering options', options, PIPELINE_OPTIONS);
     const o = { ...PIPELINE_DEFAULTS, type: HalfFloatType, ...options };
     const { scene, camera, light } = o;
-    if (!scene || scene.isScene !== true) throw new TypeError(`SubsurfaceScattering: scene must be a THREE.Scene, got ${describe(scene)}`);
-    if (!camera || camera.isCamera !== true) throw new TypeError(`SubsurfaceScattering: camera must be a THREE.Camera, got ${describe(camera)}`);
+    checkScene(scene);
+    checkCamera(camera);
     if (light !== null && !(light?.isSpotLight || light?.isDirectionalLight)) {
       throw new TypeError(`SubsurfaceScattering: light must be a THREE.SpotLight, THREE.DirectionalLight or null, got ${describe(light)}`);
     }
-    checkNumber('worldUnitInMm', o.worldUnitInMm, { min: 0, minExclusive: true, max: MAX_SCALE_MM, unit: 'mm' });
+    checkWorldUnit(o.worldUnitInMm);
     checkOneOf('followSurface', o.followSurface, FOLLOW_SURFACE_MODES);
     checkOneOf('method', o.method, METHODS);
     checkDepthThreshold(o.depthThresholdMm);
+    checkBoolean('foreshortening', o.foreshortening);
+    if (o.type !== HalfFloatType && o.type !== FloatType) {
+      throw new RangeError(`SubsurfaceScattering: type must be THREE.HalfFloatType or THREE.FloatType (light needs HDR targets), got ${describe(o.type)}`);
+    }
+    checkInteger('lightDepthSize', o.lightDepthSize, LIGHT_DEPTH_SIZES.min, LIGHT_DEPTH_SIZES.max, 'pixels');
 
     this.needsSwap = false; // like RenderPass: it draws into the read buffer
     /** As RenderPass: true clears the target first; false draws over it (see render's step 5). */
     this.clear = true;
     /** As RenderPass: with clear false, true ignores the target's earlier depth. */
     this.clearDepth = false;
-    /**
-     * As RenderPass: the clear colour and alpha of the scene (null: the renderer's).
-     * @type {import('three').ColorRepresentation|null}
-     */
-    this.clearColor = null;
-    /** @type {number|null} */
-    this.clearAlpha = null;
-    /** The scene and camera rendered, read every frame. */
-    this.scene = scene;
-    this.camera = camera;
-    this.worldUnitInMm = o.worldUnitInMm;
-    /** false turns the blur off: the compose adds the unblurred diffuse light (transmittance stays). */
-    this.scattering = true;
+    this._clearColor = null;
+    this._clearAlpha = null;
+    this._scene = scene;
+    this._camera = camera;
+    this._worldUnitInMm = o.worldUnitInMm;
+    this._scattering = true;
+    this._stageTimer = null;
     this.profileLookup = new ProfileLookup(getProfile(o.profile));
     this.lightDepth = light ? new LightDepthTarget(light, { size: o.lightDepthSize }) : null;
-    this.transmittance = light !== null;
+    this._transmittance = light !== null;
     this.depthThresholdMm = o.depthThresholdMm;
     this.multisampling = o.multisampling;
+    /** The size setSize last gave, device pixels (checked against the GPU's limits on the next frame). */
+    this._size = { width: 1, height: 1 };
+    /** The GPU's render target limits, known from the first frame on. */
+    this._limits = undefined;
+    /** The frame's checks of the camera and the light, each warned about once (see `problems`). */
+    this._checks = new FrameChecks('SubsurfaceScattering');
 
     // Stages 2, 3 and 4.
     this.scenePass = new SubsurfaceScenePass(scene, camera, { type: o.type, owner: this });
@@ -148,11 +178,122 @@ export class SubsurfaceScattering extends Pass {
     this.plan = { samples: this.blur.kernelOptions.samples, kernelPixels: 0, blur: false };
     /** The largest on-screen kernel radius of the last frame, pixels (plan.kernelPixels). */
     this.kernelPixels = 0;
-    /**
-     * Optional { begin(stage), end(stage) } around each stage (dev/gpuTimer.js measures with it).
-     * @type {{ begin(stage: StageName): void, end(stage: StageName): void }|null}
-     */
-    this.stageTimer = null;
+  }
+
+  /**
+   * As RenderPass: the clear colour of the scene (null: the renderer's).
+   * @type {import('three').ColorRepresentation|null}
+   */
+  get clearColor() {
+    return this._clearColor;
+  }
+
+  set clearColor(color) {
+    const ok = color === null || typeof color === 'string' || color?.isColor === true || (typeof color === 'number' && Number.isFinite(color));
+    if (!ok) throw new TypeError(`SubsurfaceScattering.clearColor must be null, a THREE.Color, a CSS colour string or a hex number, got ${describe(color)}`);
+    this._clearColor = color;
+  }
+
+  /**
+   * As RenderPass: the clear alpha of the scene, 0..1 (null: the renderer's).
+   * @type {number|null}
+   */
+  get clearAlpha() {
+    return this._clearAlpha;
+  }
+
+  set clearAlpha(alpha) {
+    this._clearAlpha = alpha === null ? null : checkNumber('SubsurfaceScattering.clearAlpha', alpha, { min: 0, max: 1 });
+  }
+
+  /**
+   * The scene rendered, read every frame (assignable).
+   * @type {import('three').Scene}
+   */
+  get scene() {
+    return this._scene;
+  }
+
+  set scene(scene) {
+    this._scene = checkScene(scene);
+  }
+
+  /**
+   * The camera rendered with, read every frame (assignable: `sss.camera = otherCamera` switches the view).
+   * @type {import('three').Camera}
+   */
+  get camera() {
+    return this._camera;
+  }
+
+  set camera(camera) {
+    this._camera = checkCamera(camera);
+  }
+
+  /**
+   * Millimetres per world unit (1000 for metres): assigning it rescales every material of the
+   * pipeline and the depth threshold.
+   * @type {number}
+   */
+  get worldUnitInMm() {
+    return this._worldUnitInMm;
+  }
+
+  set worldUnitInMm(worldUnitInMm) {
+    checkWorldUnit(worldUnitInMm);
+    this._worldUnitInMm = worldUnitInMm;
+    this.blur.setFollowSurface(this.followSurface, this.depthThresholdMm / worldUnitInMm);
+    this.subsurfaceMaterials.rebindAll();
+  }
+
+  /**
+   * false turns the blur off: the compose adds the unblurred diffuse light (transmittance stays).
+   * @type {boolean}
+   */
+  get scattering() {
+    return this._scattering;
+  }
+
+  set scattering(scattering) {
+    this._scattering = checkBoolean('SubsurfaceScattering.scattering', scattering);
+  }
+
+  /**
+   * Light through thin parts for every material of this pipeline (needs the constructor's `light`);
+   * the same as setTransmittance.
+   * @type {boolean}
+   */
+  get transmittance() {
+    return this._transmittance;
+  }
+
+  set transmittance(enabled) {
+    this.setTransmittance(checkBoolean('SubsurfaceScattering.transmittance', enabled));
+  }
+
+  /**
+   * Optional { begin(stage), end(stage) } around each stage (dev/gpuTimer.js measures with it), or null.
+   * @type {{ begin(stage: StageName): void, end(stage: StageName): void }|null}
+   */
+  get stageTimer() {
+    return this._stageTimer;
+  }
+
+  set stageTimer(timer) {
+    if (timer !== null && !(timer && typeof timer.begin === 'function' && typeof timer.end === 'function')) {
+      throw new TypeError(`SubsurfaceScattering.stageTimer must be null or an object with begin(stage) and end(stage) functions, got ${describe(timer)}`);
+    }
+    this._stageTimer = timer;
+  }
+
+  /**
+   * What the last frame found wrong with the camera, the light or the scene, one message each (empty
+   * when nothing is): each is also warned about on the console, once per pipeline. See the README's
+   * "Errors and limits".
+   * @type {readonly string[]}
+   */
+  get problems() {
+    return this._checks.current;
   }
 
   /**
@@ -164,8 +305,16 @@ export class SubsurfaceScattering extends Pass {
   render(renderer, writeBuffer, readBuffer) {
     const { scene, camera } = this;
     const target = this.renderToScreen ? null : readBuffer;
+    // 0. Checks: the size against the GPU's limits (a RangeError), the camera, the light and the
+    //    scene (a warning, once each; the frame is drawn as three would draw it).
+    this._limits = checkTargetLimits(renderer, this._size, 'SubsurfaceScattering');
+    const checks = this._checks.begin();
+    checks.camera(camera);
+    checks.scene(scene);
+    const lightWorks = this.lightDepth !== null && checks.light(this.lightDepth, scene, this._transmittance);
+    checks.end();
     // 1. Light depth: linear depth seen from the light, for transmittance (not for a light that is off).
-    if (this.lightDepth && this.transmittance && isShining(this.lightDepth.light, scene, camera)) {
+    if (lightWorks && isShining(this.lightDepth.light, scene, camera)) {
       this._stage('lightDepth', () => this.lightDepth.render(renderer, scene));
     }
     // 2. Scene split: the opaque scene into the multi-target (colour | diffuse | surface | depth),
@@ -317,8 +466,11 @@ export class SubsurfaceScattering extends Pass {
    */
   setTransmittance(enabled) {
     if (typeof enabled !== 'boolean') throw new TypeError(`setTransmittance: enabled must be a boolean, got ${describe(enabled)}`);
-    if (enabled && !this.lightDepth) throw new Error('setTransmittance: this pipeline has no light (pass `light` to the constructor)');
-    this.transmittance = enabled;
+    if (enabled && !this.lightDepth) {
+      throw new TypeError('setTransmittance: light must be a THREE.SpotLight or THREE.DirectionalLight to turn transmittance on, ' +
+        'and this pipeline has none (pass `light` to the constructor)');
+    }
+    this._transmittance = enabled;
     this.subsurfaceMaterials.rebindAll();
   }
 
@@ -344,8 +496,12 @@ export class SubsurfaceScattering extends Pass {
    * between 'footprint' and the fixed-tap ones recompiles the blur shaders once.
    * @param {{ profile?: import('./options.js').ProfileName|object, method?: import('./options.js').Method, samples?: number|'auto', strength?: number[], falloff?: number[] }} options
    */
-  setKernel(options) {
-    this.blur.setKernel(options);
+  setKernel(options = {}) {
+    if (options === null || typeof options !== 'object' || Array.isArray(options)) {
+      throw new TypeError(`setKernel: options must be an object { profile, method, samples, strength, falloff }, got ${describe(options)}`);
+    }
+    checkOptions('setKernel options', options, KERNEL_OPTIONS);
+    this.blur.setKernel({ ...options });
   }
 
   /**
@@ -360,11 +516,18 @@ export class SubsurfaceScattering extends Pass {
 
   /** @param {boolean} enabled narrow the blur on surfaces seen at grazing angles */
   setForeshortening(enabled) {
-    this.blur.setForeshortening(enabled);
+    this.blur.setForeshortening(checkBoolean('foreshortening', enabled));
   }
 
-  /** @param {number} width device pixels @param {number} height device pixels */
+  /**
+   * Sizes every target, as the composer does on composer.setSize. At least 1 × 1; larger than the
+   * GPU's largest render target (MAX_TEXTURE_SIZE, MAX_RENDERBUFFER_SIZE) is a RangeError, here once
+   * a frame has told the pipeline the GPU's limits, else on the next frame.
+   * @param {number} width device pixels @param {number} height device pixels
+   */
   setSize(width, height) {
+    checkTargetSize(width, height, 'SubsurfaceScattering.setSize', this._limits);
+    this._size = { width, height };
     this.scenePass.setSize(width, height);
     this.blur.setSize(width, height);
     this.composePass.setSize(width, height);
@@ -380,3 +543,9 @@ export class SubsurfaceScattering extends Pass {
     this.profileLookup.dispose();
   }
 }
+
+// enabled, needsSwap, clear and renderToScreen (three's Pass fields), and clearDepth: booleans only.
+booleanFields(SubsurfaceScattering.prototype, [...PASS_BOOLEANS, 'clearDepth']);
+
+/** What setKernel accepts. */
+const KERNEL_OPTIONS = Object.freeze(['profile', 'method', 'samples', 'strength', 'falloff']);

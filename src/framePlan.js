@@ -33,7 +33,9 @@ export function autoSampleCount(radiusPx) {
  * @returns {{ samples: number, kernelPixels: number, blur: boolean }} the taps to use, the largest
  *   on-screen reach of the kernel (pixels), and whether the blur stage runs
  */
-export function planFrame({ scattering, pixelsPerMm, samples, autoRadiusMm, radiusMmOf, autoSamples = autoSampleCount }) {
+export function planFrame(frame) {
+  if (frame === null || typeof frame !== 'object') throw new TypeError(`planFrame: frame must be an object { scattering, pixelsPerMm, samples, ... }, got ${frame === null ? 'null' : typeof frame}`);
+  const { scattering, pixelsPerMm, samples, autoRadiusMm, radiusMmOf, autoSamples = autoSampleCount } = frame;
   const taps = samples === 'auto' ? autoSamples(autoRadiusMm * pixelsPerMm) : samples;
   const kernelPixels = radiusMmOf(taps) * pixelsPerMm;
   return { samples: taps, kernelPixels, blur: scattering && kernelPixels >= MIN_KERNEL_PIXELS };

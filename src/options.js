@@ -61,6 +61,15 @@ export const AUTO_REACH = 0.92;
 /** Upper bound on worldUnitInMm and depthThresholdMm: a kilometre per unit; beyond is a mistake. */
 export const MAX_SCALE_MM = 1e6;
 
+/** Lower bound on worldUnitInMm: a nanometre per unit; below is a mistake (a scene in metres has 1000). */
+export const MIN_SCALE_MM = 1e-6;
+
+/**
+ * Largest width or height setSize accepts before it knows the GPU; the first frame checks the
+ * GPU's own limits (MAX_TEXTURE_SIZE, MAX_RENDERBUFFER_SIZE), which are smaller on most devices.
+ */
+export const MAX_TARGET_SIZE = 65536;
+
 /** new SubsurfaceScattering({ ... }): every option's default. */
 export const PIPELINE_DEFAULTS = Object.freeze({
   light: /** @type {null} */ (null),
@@ -74,6 +83,11 @@ export const PIPELINE_DEFAULTS = Object.freeze({
   lightDepthSize: 1024,
   multisampling: 'auto', // MSAA samples of the scene split: 'auto' follows the composer's buffer
 });
+
+/** Every option new SubsurfaceScattering({ ... }) accepts (any other key is refused, naming it). */
+export const PIPELINE_OPTIONS = Object.freeze([
+  'scene', 'camera', ...Object.keys(PIPELINE_DEFAULTS), 'strength', 'falloff', 'type',
+]);
 
 /** The most MSAA samples accepted (GPUs offer 4 or 8; three clamps to the renderer's maximum). */
 export const MAX_MULTISAMPLING = 16;
@@ -89,3 +103,6 @@ export const MATERIAL_DEFAULTS = Object.freeze({
   translucency: 0,
   shrinkMm: 0.6,
 });
+
+/** Every option a pipeline's makeSubsurface(material, { ... }) accepts (`strength`: widthScale's old name). */
+export const MATERIAL_OPTIONS = Object.freeze([...Object.keys(MATERIAL_DEFAULTS), 'strength']);

@@ -7,7 +7,7 @@ import {
 } from 'three';
 import vertexShader from '../../shaders/1-light-depth/lightDepth.vert.glsl?raw';
 import fragmentShader from '../../shaders/1-light-depth/lightDepth.frag.glsl?raw';
-import { checkInteger } from '../support/parameterChecks.js';
+import { checkInteger, checkNumber, checkOptions } from '../support/parameterChecks.js';
 import { assertFloatRenderTargets, describe } from '../support/rendererSupport.js';
 import { preservingRendererState } from '../support/rendererState.js';
 
@@ -47,10 +47,13 @@ export class LightDepthTarget {
    * @param {number} [options.near] near plane, world units (default: the light's shadow camera)
    * @param {number} [options.far] far plane, world units (default: the light's shadow camera)
    */
-  constructor(light, { size = 1024, near, far } = {}) {
+  constructor(light, options = {}) {
     if (!light || !(light.isSpotLight || light.isDirectionalLight)) {
       throw new TypeError(`LightDepthTarget: light must be a THREE.SpotLight or THREE.DirectionalLight, got ${describe(light)}`);
     }
+    const { size = 1024, near, far } = checkOptions('LightDepthTarget options', options, ['size', 'near', 'far']);
+    if (near !== undefined) checkNumber('near', near, { min: 0, minExclusive: true, unit: 'world units' });
+    if (far !== undefined) checkNumber('far', far, { min: near ?? 0, minExclusive: true, unit: 'world units' });
     this.light = light;
     this.near = near;
     this.far = far;
@@ -115,8 +118,8 @@ export class LightDepthTarget {
    * What `object` is drawn with from the light: the shared depth material, a depth material that
    * keeps its material's cut-out and clipping, or nothing. Left out: transparent and transmissive
    * materials (glass or a veil between the light and the skin would read as tissue and hide the
-   * glow behind it; the pipeline draws them after the compose anyway), materials with visible false, and points, lines and
-   * sprites (they bound no volume).
+   * glow behind it; the pipeline draws them after the compose anyway), materials with visible
+   * false, and points, lines and sprites (they bound no volume).
    * @param {import('three').Object3D} object
    * @returns {ShaderMaterial | ShaderMaterial[] | null} null: not a drawable mesh, leave it
    */
@@ -166,6 +169,26 @@ export class LightDepthTarget {
     material.removeEventListener('dispose', this._onMaterialDispose);
     this._shaped.get(material)?.dispose();
     this._shaped.delete(material);
+  }
+
+  /**
+   * Places the light camera (updateCamera) and says what makes its frustum unusable, or null: a
+   * SpotLight angle outside (0, π/2], near ≤ 0 for a SpotLight, far ≤ near, a DirectionalLight's
+   * shadow camera of zero width or height, or any other projection that is not finite.
+   * @returns {string|null}
+   */
+  frustumProblem() {
+    this.updateCamera();
+    const { light, camera } = this;
+    const { near, far } = camera;
+    if (light.isSpotLight && !(light.angle > 0 && light.angle <= Math.PI / 2)) return `light.angle ${light.angle} is not in (0, π/2]`;
+    if (light.isSpotLight && !(near > 0)) return `near ${near} is not above 0`;
+    if (!(far > near)) return `far ${far} is not beyond near ${near} (light.shadow.camera, or the near and far options)`;
+    if (!light.isSpotLight && !(camera.right !== camera.left && camera.top !== camera.bottom)) {
+      return `light.shadow.camera spans left ${camera.left} to right ${camera.right}, bottom ${camera.bottom} to top ${camera.top}`;
+    }
+    if (!camera.projectionMatrix.elements.every(Number.isFinite)) return 'its projection is not finite';
+    return null;
   }
 
   /**

@@ -16,6 +16,8 @@ import { Pass } from 'three/addons/postprocessing/Pass.js';
 import { getSubsurface } from './subsurfaceMaterial.js';
 import { ATTACHMENTS, DRAW_BUFFERS, DRAW_PHASES, createSubsurfaceTarget, drawingInto } from './subsurfaceTarget.js';
 import { assertFloatRenderTargets, describe } from '../support/rendererSupport.js';
+import { checkOptions } from '../support/parameterChecks.js';
+import { PASS_BOOLEANS, booleanFields } from '../support/booleanFields.js';
 import { preservingRendererState } from '../support/rendererState.js';
 
 const ZERO = new Float32Array(4);
@@ -42,8 +44,9 @@ export class SubsurfaceScenePass extends Pass {
    * @param {object} [options.owner] whose material settings the subsurface materials draw with
    *   (SubsurfaceScattering passes itself; default: this pass)
    */
-  constructor(scene, camera, { type = HalfFloatType, lightDepth = null, owner = this } = {}) {
+  constructor(scene, camera, options = {}) {
     super();
+    const { type = HalfFloatType, lightDepth = null, owner = this } = checkOptions('SubsurfaceScenePass options', options, ['type', 'lightDepth', 'owner']);
     if (!scene || scene.isScene !== true) throw new TypeError(`SubsurfaceScenePass: scene must be a THREE.Scene, got ${describe(scene)}`);
     if (!camera || camera.isCamera !== true) throw new TypeError(`SubsurfaceScenePass: camera must be a THREE.Camera, got ${describe(camera)}`);
     if (type !== HalfFloatType && type !== FloatType) {
@@ -128,6 +131,18 @@ export class SubsurfaceScenePass extends Pass {
     return transparent;
   }
 
+  /**
+   * scene.overrideMaterial draws every object with one material, as three draws it: into the
+   * colour attachment alone (it writes location 0 only), without the split and the transparent
+   * draw (three draws the transparent objects with the override too, in the same call).
+   */
+  _classifyOverridden() {
+    this._categories.clear();
+    this.subsurfaceMeshes.length = 0;
+    this.transparentCount = 0;
+    return 0;
+  }
+
   /** Shows the materials one call draws: `phase` DEPTH shows every category, the others their own. */
   _show(phase, category) {
     for (const [material, c] of this._categories) {
@@ -170,7 +185,8 @@ export class SubsurfaceScenePass extends Pass {
     assertFloatRenderTargets(renderer, 'SubsurfaceScenePass');
     const { scene, renderTarget: target } = this;
     const gl = renderer.getContext();
-    this._classify();
+    if (scene.overrideMaterial) this._classifyOverridden();
+    else this._classify();
     preservingRendererState(renderer, scene, () => this._restoringMaterials(() => {
       try {
         if (this.lightDepth) this.lightDepth.render(renderer, scene);
@@ -225,3 +241,5 @@ export class SubsurfaceScenePass extends Pass {
     this.subsurfaceMeshes.length = 0;
   }
 }
+
+booleanFields(SubsurfaceScenePass.prototype, PASS_BOOLEANS);

@@ -22,7 +22,7 @@ import clearcoatGlsl from '../../shaders/2-scene-split/material/clearcoat.glsl?r
 import outputGlsl from '../../shaders/2-scene-split/material/output.glsl?raw';
 import finiteGlsl from '../../shaders/common/finite.glsl?raw';
 import { assembleGlsl, enumDefines } from '../support/glsl.js';
-import { checkNumber, checkOneOf } from '../support/parameterChecks.js';
+import { checkNumber, checkOneOf, checkOptions } from '../support/parameterChecks.js';
 import { describe } from '../support/rendererSupport.js';
 import { SUPPORTED_THREE, SUPPORTED_THREE_RANGE, threeRelease } from '../support/threeVersion.js';
 import { MATERIAL_DEFAULTS } from '../options.js';
@@ -40,6 +40,9 @@ export const MATERIAL_OUTPUTS = Object.freeze(['diffuse', 'transmittance', 'thic
 
 /** The kinds of light transmittance is shaded with. */
 const LIGHT_TYPES = Object.freeze(['directional', 'spot']);
+
+/** What makeSubsurface(material, { ... }) accepts (`strength`: widthScale's old name). */
+const STANDALONE_OPTIONS = Object.freeze(['widthMm', 'widthScale', 'strength', 'worldUnitInMm', 'transmittance']);
 
 /** The key of bindings made by makeSubsurface called on its own, outside a pipeline. */
 const STANDALONE = Object.freeze({ name: 'makeSubsurface' });
@@ -198,6 +201,7 @@ export function makeSubsurface(material, options = {}, owner = STANDALONE) {
   if (material.depthFunc !== LessEqualDepth) {
     throw new RangeError('makeSubsurface: material.depthFunc must be THREE.LessEqualDepth (the default) for the split draw');
   }
+  checkOptions('makeSubsurface options', options, STANDALONE_OPTIONS);
   const state = patches.get(material) ?? patch(material);
   const existing = state.bindings.get(owner);
   if (existing) {
@@ -224,6 +228,7 @@ export function makeSubsurface(material, options = {}, owner = STANDALONE) {
       return (this.options.widthMm / this.options.worldUnitInMm) * this.options.widthScale;
     },
     update(next = {}) {
+      checkOptions('makeSubsurface options', next, STANDALONE_OPTIONS);
       const o = { ...this.options, ...withWidthScale(next) };
       checkNumber('widthMm', o.widthMm, { min: 0, minExclusive: true, max: 1000, unit: 'mm' });
       checkNumber('widthScale', o.widthScale, { min: 0, max: 1 });

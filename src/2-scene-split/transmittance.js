@@ -49,7 +49,11 @@ export function transmittanceUniformSlots() {
  * Checked transmittance settings (see createTransmittanceUniforms' options), frozen.
  * @returns {Readonly<{ lightDepth: LightDepthTarget, lookup: ProfileLookup, worldUnitInMm: number, widthMm: number, translucency: number, shrinkMm: number }>}
  */
-export function transmittanceSettings({ lightDepth, lookup, worldUnitInMm, widthMm = MATERIAL_DEFAULTS.widthMm, translucency = MATERIAL_DEFAULTS.translucency, shrinkMm = MATERIAL_DEFAULTS.shrinkMm }) {
+export function transmittanceSettings(options) {
+  if (options === null || typeof options !== 'object') throw new TypeError(`transmittance options must be an object { lightDepth, lookup, worldUnitInMm, ... }, got ${describe(options)}`);
+  const {
+    lightDepth, lookup, worldUnitInMm, widthMm = MATERIAL_DEFAULTS.widthMm, translucency = MATERIAL_DEFAULTS.translucency, shrinkMm = MATERIAL_DEFAULTS.shrinkMm,
+  } = options;
   if (!(lightDepth instanceof LightDepthTarget)) throw new TypeError(`transmittance: lightDepth must be a LightDepthTarget, got ${describe(lightDepth)}`);
   if (!(lookup instanceof ProfileLookup)) throw new TypeError(`transmittance: lookup must be a ProfileLookup, got ${describe(lookup)}`);
   checkNumber('worldUnitInMm', worldUnitInMm, { min: 0, minExclusive: true, max: 1e9, unit: 'mm' });

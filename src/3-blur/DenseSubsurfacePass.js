@@ -8,7 +8,7 @@ import denseGlsl from '../../shaders/3-blur/denseSubsurface.frag.glsl?raw';
 import quadrantEnergyGlsl from '../../shaders/common/quadrantEnergy.glsl?raw';
 import { QuadrantEnergyLookup } from '../profiles/QuadrantEnergyLookup.js';
 import { getProfile } from '../profiles/presets.js';
-import { checkInteger, checkNumber } from '../support/parameterChecks.js';
+import { checkInteger, checkNumber, checkOptions } from '../support/parameterChecks.js';
 import { describe } from '../support/rendererSupport.js';
 import { SurfacePass } from './SurfacePass.js';
 
@@ -35,7 +35,8 @@ export class DenseSubsurfacePass extends SurfacePass {
    *   cos(tilt) of the surface along it and compare depths with the local plane
    * @param {number} [options.maxRadiusPx=128] bound on the radius in pixels (loop bound)
    */
-  constructor({ profile = 'skin', energyLookup = null, coverage = 0.997, maxRadiusPx = 128, ...surface } = {}) {
+  constructor(options = {}) {
+    const { profile = 'skin', energyLookup = null, coverage = 0.997, maxRadiusPx = 128, ...surface } = checkOptions('DenseSubsurfacePass options', options);
     if (energyLookup !== null && !(energyLookup instanceof QuadrantEnergyLookup)) {
       throw new TypeError(`DenseSubsurfacePass: energyLookup must be a QuadrantEnergyLookup or null, got ${describe(energyLookup)}`);
     }

@@ -10,7 +10,7 @@ import { ProfileLookup } from '../profiles/ProfileLookup.js';
 import { FootprintTable } from '../profiles/FootprintTable.js';
 import { FOOTPRINT_ROWS, FOOTPRINT_SCALES } from '../profiles/footprints.js';
 import { enumDefines, glslFloat, setDefines } from '../support/glsl.js';
-import { checkOneOf, checkRgb } from '../support/parameterChecks.js';
+import { checkBoolean, checkOneOf, checkOptions, checkRgb } from '../support/parameterChecks.js';
 import { describe } from '../support/rendererSupport.js';
 import { FOLLOW_SURFACE_MODES } from '../options.js';
 import { SurfacePass } from './SurfacePass.js';
@@ -74,8 +74,12 @@ export class SubsurfaceBlurPass extends SurfacePass {
    * @param {boolean} [options.autoFootprints=false] 'footprint' mode: per pixel the fewest taps within
    *   AUTO_STEP_ERROR for its scale, up to the kernel's count (give a kernel of AUTO_MAX_SAMPLES taps)
    */
-  constructor({ direction, kernel, mode = 'taps', profileLookup = null, strength = [1, 1, 1], autoFootprints = false, ...surface } = {}) {
+  constructor(options = {}) {
+    const {
+      direction, kernel, mode = 'taps', profileLookup = null, strength = [1, 1, 1], autoFootprints = false, ...surface
+    } = checkOptions('SubsurfaceBlurPass options', options);
     checkOneOf('direction', direction, DIRECTIONS);
+    checkBoolean('autoFootprints', autoFootprints);
     checkOneOf('mode', mode, KERNEL_MODES);
     if (mode === 'footprint' && !(profileLookup instanceof ProfileLookup)) {
       throw new TypeError(`SubsurfaceBlurPass: the 'footprint' mode needs a ProfileLookup as profileLookup, got ${describe(profileLookup)}`);

@@ -13,6 +13,7 @@ import surfaceTapGlsl from '../../shaders/common/surfaceTap.glsl?raw';
 import { assembleGlsl, enumDefines, glslFloat, setDefines } from '../support/glsl.js';
 import { checkNumber, checkOneOf } from '../support/parameterChecks.js';
 import { describe } from '../support/rendererSupport.js';
+import { PASS_BOOLEANS, booleanFields } from '../support/booleanFields.js';
 import { isPerspective } from '../support/screenScale.js';
 import { FOLLOW_SURFACE_MODES } from '../options.js';
 import { ENERGY_LEFT, MAX_PLANE_SLOPE, MAX_SLOPE, MIN_KERNEL_PIXELS, PLANE_SLOPE_AGREEMENT } from './samplingModel.js';
@@ -101,7 +102,7 @@ export class SurfacePass extends ShaderPass {
    */
   setFollowSurface(mode, depthThresholdWorld = this.depthThresholdWorld) {
     checkOneOf('followSurface', mode, FOLLOW_SURFACE_MODES);
-    checkNumber('depthThresholdWorld', depthThresholdWorld, { min: 0, minExclusive: true, max: 1e9, unit: 'world units' });
+    checkNumber('depthThresholdWorld', depthThresholdWorld, { min: 0, minExclusive: true, unit: 'world units' });
     setDefines(this.material, enumDefines('FOLLOW_SURFACE', FOLLOW_SURFACE_MODES, mode));
     this.followSurface = mode;
     this.depthThresholdWorld = depthThresholdWorld;
@@ -137,3 +138,5 @@ export class SurfacePass extends ShaderPass {
     super.render(renderer, writeBuffer, readBuffer, deltaTime, maskActive);
   }
 }
+
+booleanFields(SurfacePass.prototype, PASS_BOOLEANS);

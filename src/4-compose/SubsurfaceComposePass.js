@@ -9,7 +9,8 @@ import composeGlsl from '../../shaders/4-compose/compose.frag.glsl?raw';
 import finiteGlsl from '../../shaders/common/finite.glsl?raw';
 import { assembleGlsl, enumDefines, setDefines } from '../support/glsl.js';
 import { describe } from '../support/rendererSupport.js';
-import { checkOneOf, checkNumber } from '../support/parameterChecks.js';
+import { checkBoolean, checkOneOf, checkNumber, checkOptions } from '../support/parameterChecks.js';
+import { PASS_BOOLEANS, booleanFields } from '../support/booleanFields.js';
 import { DEBUG_VIEWS, DEBUG_VIEW } from './debugViews.js';
 
 export { DEBUG_VIEWS, DEBUG_VIEW };
@@ -32,9 +33,10 @@ export class SubsurfaceComposePass extends ShaderPass {
    * @param {import('three').Texture} [options.lightTexture] colorTexture's old name (deprecated)
    * @param {import('three').Texture} [options.unscatteredTexture] diffuseTexture's old name (deprecated)
    */
-  constructor({
-    colorTexture, lightTexture, surfaceTexture, diffuseTexture, unscatteredTexture, scatteredTexture = null, depthTexture,
-  } = {}) {
+  constructor(options = {}) {
+    const {
+      colorTexture, lightTexture, surfaceTexture, diffuseTexture, unscatteredTexture, scatteredTexture = null, depthTexture,
+    } = checkOptions('SubsurfaceComposePass options', options);
     const inputs = {
       colorTexture: colorTexture ?? lightTexture,
       surfaceTexture,
@@ -74,8 +76,9 @@ export class SubsurfaceComposePass extends ShaderPass {
    * @param {import('./debugViews.js').DebugView} view one of DEBUG_VIEWS
    * @param {{ depthRange?: number, thicknessRangeMm?: number }} [options]
    */
-  setDebugView(view, { depthRange = 100, thicknessRangeMm = 10 } = {}) {
+  setDebugView(view, options = {}) {
     checkOneOf('view', view, DEBUG_VIEWS);
+    const { depthRange = 100, thicknessRangeMm = 10 } = checkOptions('setDebugView options', options, ['depthRange', 'thicknessRangeMm']);
     checkNumber('depthRange', depthRange, { min: 0, minExclusive: true, max: Infinity, unit: 'world units' });
     checkNumber('thicknessRangeMm', thicknessRangeMm, { min: 0, minExclusive: true, max: Infinity, unit: 'mm' });
     setDefines(this.material, enumDefines('DEBUG_VIEW', DEBUG_VIEWS, view));
@@ -92,6 +95,8 @@ export class SubsurfaceComposePass extends ShaderPass {
    * @param {boolean} [clearDepth=false]
    */
   setClear(clear, clearDepth = false) {
+    checkBoolean('clear', clear);
+    checkBoolean('clearDepth', clearDepth);
     setDefines(this.material, { KEEP_BACKGROUND: clear ? 0 : 1 });
     this.material.depthTest = true; // depth is written only while the depth test is on
     this.material.depthWrite = true;
@@ -128,3 +133,5 @@ export class SubsurfaceComposePass extends ShaderPass {
     return this._scatteredTexture;
   }
 }
+
+booleanFields(SubsurfaceComposePass.prototype, PASS_BOOLEANS);

@@ -22,6 +22,7 @@
 import { Pass } from 'postprocessing';
 import { FloatType, HalfFloatType, UnsignedByteType } from 'three';
 import { SubsurfaceScattering } from '../index.js';
+import { booleanFields } from '../support/booleanFields.js';
 
 /** The frame buffer types whose range holds linear HDR light. */
 const HDR_TYPES = Object.freeze([HalfFloatType, FloatType]);
@@ -119,3 +120,6 @@ export class SubsurfaceScatteringPass extends Pass {
     this.pipeline.dispose();
   }
 }
+
+// pmndrs Pass's plain boolean fields take booleans only here (`enabled = 'no'` would count as true).
+booleanFields(SubsurfaceScatteringPass.prototype, ['enabled', 'needsSwap', 'needsDepthBlit']);

@@ -27,6 +27,7 @@ import { HalfFloatType, WebGLRenderTarget } from 'three';
 import { EffectComposer } from 'three/addons/postprocessing/EffectComposer.js';
 import { OutputPass } from 'three/addons/postprocessing/OutputPass.js';
 import { SubsurfaceScattering } from '../index.js';
+import { checkBoolean, checkInteger, checkOptions } from '../support/parameterChecks.js';
 
 /**
  * @typedef {Omit<import('../SubsurfaceScattering.js').SubsurfaceScatteringOptions, 'scene'|'camera'|'light'> & {
@@ -103,10 +104,9 @@ function resolveLight(light) {
  *   and add(material, options) / remove(material) for materials made in code (e.g. a loaded model's)
  */
 export function useSubsurfaceScattering(options = {}) {
-  const { light = null, antialias = 4, enabled = true, profile, ...rest } = options;
-  if (!Number.isInteger(antialias) || antialias < 0 || antialias > 16) {
-    throw new RangeError(`useSubsurfaceScattering: antialias must be an integer in 0..16 (MSAA samples), got ${antialias}`);
-  }
+  const { light = null, antialias = 4, enabled = true, profile, ...rest } = checkOptions('useSubsurfaceScattering options', options);
+  checkInteger('useSubsurfaceScattering: antialias', antialias, 0, 16, 'MSAA samples');
+  checkBoolean('useSubsurfaceScattering: enabled', enabled);
   const gl = useThree((state) => state.gl);
   const getState = useThree((state) => state.get); // R3F's store accessor: stable
   const [registry] = useState(() => new SubsurfaceRegistry());

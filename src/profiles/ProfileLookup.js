@@ -6,7 +6,7 @@
 // Texel i of a row holds x = (i / (size - 1))² · range: dense near 0, where the narrow Gaussians are.
 import { DataTexture, FloatType, NearestFilter, RGBAFormat } from 'three';
 import { getProfile } from './presets.js';
-import { checkInteger } from '../support/parameterChecks.js';
+import { checkInteger, checkOptions } from '../support/parameterChecks.js';
 import { firstBelow, solveDecreasing } from '../math/roots.js';
 
 /** Below this the tail of a row is invisible even at radiance 1000: the range ends there. */
@@ -25,7 +25,8 @@ export class ProfileLookup {
    * @param {{ size?: number }} [options] texels per row (16..4096); 512 puts skin's narrowest
    *   Gaussian (σ = 0.08 mm) over ~10 texels of the square-root spacing, linear interpolation error < 1e-6
    */
-  constructor(profile = 'skin', { size = 512 } = {}) {
+  constructor(profile = 'skin', options = {}) {
+    const { size = 512 } = checkOptions('ProfileLookup options', options, ['size']);
     checkInteger('size', size, 16, 4096, 'texels');
     this.texture = new DataTexture(new Float32Array(size * 2 * 4), size, 2, RGBAFormat, FloatType);
     this.texture.minFilter = this.texture.magFilter = NearestFilter;

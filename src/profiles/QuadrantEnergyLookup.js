@@ -11,7 +11,7 @@ import { DataTexture, FloatType, NearestFilter, RGBAFormat } from 'three';
 import { getProfile } from './presets.js';
 import { gaussLegendre } from '../math/quadrature.js';
 import { firstBelow } from '../math/roots.js';
-import { checkInteger } from '../support/parameterChecks.js';
+import { checkInteger, checkOptions } from '../support/parameterChecks.js';
 
 /** Energy left outside the table's range (per channel): invisible even at radiance 1000. */
 const TAIL = 1e-6;
@@ -26,7 +26,8 @@ export class QuadrantEnergyLookup {
    * @param {string | object} [profile='skin'] a profile name or object (see `profiles`)
    * @param {{ size?: number }} [options] texels per side (16..2048)
    */
-  constructor(profile = 'skin', { size = 384 } = {}) {
+  constructor(profile = 'skin', options = {}) {
+    const { size = 384 } = checkOptions('QuadrantEnergyLookup options', options, ['size']);
     checkInteger('size', size, 16, 2048, 'texels');
     this.texture = new DataTexture(new Float32Array(size * size * 4), size, size, RGBAFormat, FloatType);
     this.texture.minFilter = this.texture.magFilter = NearestFilter;

@@ -94,11 +94,76 @@ export function transmittance(sMm) {
 const PROFILE_NAMES = Object.freeze(['skin', 'skinBurley', 'marble', 'milk']);
 const PROFILE_METHODS = ['R', 'marginal', 'marginalIntegral', 'transmittance', 'radiusMm'];
 
+/** How far a custom profile's energy may be from 1 per channel (marginalIntegral(-∞, ∞), transmittance(0)). */
+export const PROFILE_ENERGY_TOLERANCE = 1e-3;
+const CHANNELS = Object.freeze(['red', 'green', 'blue']);
+/** Where a custom profile is sampled, in multiples of its length scale (r > 0: Burley's R and marginal are infinite at 0). */
+const SAMPLE_SCALES = Object.freeze([0.1, 0.5, 1, 2, 5]);
+/** Profiles already checked: the built-ins (known good) and each custom object once. */
+const checkedProfiles = new WeakSet(Object.values(profiles));
+
+/** Checks one call's [r, g, b]: an array of 3 finite numbers, each ≥ 0 (naming the call and the channel). */
+function checkChannels(who, call, values) {
+  if (!values || typeof values !== 'object' || !(values.length >= 3)) {
+    throw new TypeError(`${who}: ${call} must return [r, g, b], got ${describeValue(values)}`);
+  }
+  for (let c = 0; c < 3; c++) {
+    const v = values[c];
+    if (typeof v !== 'number' || !Number.isFinite(v)) {
+      throw new TypeError(`${who}: ${call} must be a finite number in every channel, got ${describeValue(v)} in the ${CHANNELS[c]} channel`);
+    }
+    if (v < 0) throw new RangeError(`${who}: ${call} must be non-negative in every channel, got ${v} in the ${CHANNELS[c]} channel`);
+  }
+  return values;
+}
+
+/** Checks that a call gives 1 per channel within PROFILE_ENERGY_TOLERANCE (a profile carries unit energy). */
+function checkUnitEnergy(who, call, values) {
+  checkChannels(who, call, values);
+  for (let c = 0; c < 3; c++) {
+    if (Math.abs(values[c] - 1) > PROFILE_ENERGY_TOLERANCE) {
+      throw new RangeError(`${who}: ${call} must be 1 in every channel (unit energy, within ${PROFILE_ENERGY_TOLERANCE}), ` +
+        `got ${values[c]} in the ${CHANNELS[c]} channel`);
+    }
+  }
+}
+
 /**
- * Resolves a profile name or checks a profile object.
+ * Checks a custom profile once, where it is first accepted: its functions sampled at a few radii
+ * give finite, non-negative values, and it carries unit energy per channel. The message names the
+ * profile, the function, the argument and the channel that fail.
+ * @param {object} profile
+ * @returns {object} the profile
+ */
+function checkCustomProfile(profile) {
+  if (checkedProfiles.has(profile)) return profile;
+  const who = `profile ${JSON.stringify(String(profile.name ?? 'unnamed'))}`;
+  const scale = Number.isFinite(profile.lengthScaleMm) && profile.lengthScaleMm > 0 ? profile.lengthScaleMm : 1;
+  const mm = (x) => `${Number(x.toPrecision(4))} mm`;
+  for (const k of SAMPLE_SCALES) {
+    const x = k * scale;
+    checkChannels(who, `R(${mm(x)})`, profile.R(x));
+    checkChannels(who, `marginal(${mm(x)})`, profile.marginal(x));
+    checkChannels(who, `marginalIntegral(0, ${mm(x)})`, profile.marginalIntegral(0, x));
+    checkChannels(who, `transmittance(${mm(x)})`, profile.transmittance(x));
+  }
+  checkUnitEnergy(who, 'marginalIntegral(-∞, ∞)', profile.marginalIntegral(-Infinity, Infinity));
+  checkUnitEnergy(who, 'transmittance(0)', profile.transmittance(0));
+  const radii = checkChannels(who, 'radiusMm(0.997)', profile.radiusMm(0.997));
+  radii.forEach((r, c) => {
+    if (!(r > 0)) throw new RangeError(`${who}: radiusMm(0.997) must be positive in every channel, got ${r} in the ${CHANNELS[c]} channel`);
+  });
+  checkedProfiles.add(profile);
+  return profile;
+}
+
+/**
+ * Resolves a profile name or checks a profile object (once per object: see checkCustomProfile).
  * @param {'skin'|'skinBurley'|'marble'|'milk'|object} nameOrProfile
  * @returns {Readonly<object>} the profile
- * @throws {TypeError} for anything else, naming the accepted names
+ * @throws {TypeError} for anything else, naming the accepted names; for a profile whose functions
+ *   return NaN, Infinity or no [r, g, b], naming the function and the channel
+ * @throws {RangeError} for a profile with negative values or without unit energy per channel
  */
 export function getProfile(nameOrProfile) {
   if (typeof nameOrProfile === 'string' && PROFILE_NAMES.includes(nameOrProfile)) return profiles[nameOrProfile];
@@ -107,7 +172,7 @@ export function getProfile(nameOrProfile) {
     typeof nameOrProfile === 'object' &&
     PROFILE_METHODS.every((m) => typeof nameOrProfile[m] === 'function')
   ) {
-    return nameOrProfile;
+    return checkCustomProfile(nameOrProfile);
   }
   throw new TypeError(
     `profile must be one of ${PROFILE_NAMES.map((n) => `'${n}'`).join(', ')} or a profile object ` +

@@ -144,3 +144,40 @@ export function checkOneOf(name, value, list) {
   const sameType = list.some((v) => typeof v === typeof value);
   throw sameType ? new RangeError(message) : new TypeError(message);
 }
+
+/**
+ * Checks that `value` is a boolean: a string such as 'no' or a number is refused, not read as truthy.
+ * @param {string} name
+ * @param {*} value
+ * @returns {boolean} the value
+ * @throws {TypeError} "transmittance must be a boolean (true or false), got \"no\""
+ */
+export function checkBoolean(name, value) {
+  if (typeof value !== 'boolean') throw new TypeError(`${name} must be a boolean (true or false), got ${describeValue(value)}`);
+  return value;
+}
+
+/**
+ * Checks an options argument: undefined (no options) or a plain object whose keys are all in
+ * `accepted` (when given), so a misspelt option is named instead of ignored.
+ * @param {string} name e.g. 'SubsurfaceScattering options'
+ * @param {*} value
+ * @param {ReadonlyArray<string>} [accepted] the option names; omitted: any keys
+ * @returns {object} the value, or {} for undefined
+ * @throws {TypeError} "makeSubsurface options must be an object, got null";
+ *   "makeSubsurface options: unknown option \"widthmm\" (accepted: widthMm, widthScale, ...)"
+ */
+export function checkOptions(name, value, accepted) {
+  if (value === undefined) return {};
+  if (value === null || typeof value !== 'object' || Array.isArray(value)) {
+    throw new TypeError(`${name} must be an object, got ${describeValue(value)}`);
+  }
+  if (accepted) {
+    for (const key of Object.keys(value)) {
+      if (!accepted.includes(key)) {
+        throw new TypeError(`${name}: unknown option ${JSON.stringify(key)} (accepted: ${accepted.join(', ')})`);
+      }
+    }
+  }
+  return value;
+}

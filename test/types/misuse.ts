@@ -31,6 +31,10 @@ sss.makeSubsurface(new THREE.MeshStandardMaterial(), { widthMm: '1' });
 sss.setSplit('half');
 // @ts-expect-error multisampling is a number or 'auto'
 sss.multisampling = 'on';
+// @ts-expect-error scattering is a boolean (at run time too: 'no' is a TypeError, not true)
+sss.scattering = 'no';
+// @ts-expect-error enabled is a boolean
+sss.enabled = 'no';
 // @ts-expect-error the kernel's method is one of the four
 sss.setKernel({ method: 'gauss' });
 // @ts-expect-error computeKernel's method is 'reference' or 'marginal'

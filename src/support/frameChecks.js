@@ -1,0 +1,170 @@
+// What the orchestrator checks before each frame, where three itself would draw silently:
+// - the size setSize gave against the GPU's largest render target (a RangeError: nothing could be
+//   drawn at that size, and three's own buffers fail there too);
+// - the camera (a projection that is not finite: NaN near or far, a zero-area view), the scene
+//   (an overrideMaterial) and the pipeline's light (removed from the scene, a colour or intensity
+//   that is not finite, a light frustum of zero size): each is a console warning, once per
+//   pipeline, and a message in `sss.problems` while it lasts; the frame is drawn as three would draw
+//   it (nothing for a broken camera, no scattering under an override, no transmittance from a
+//   broken light), never with NaN pixels.
+import { checkNumber } from './parameterChecks.js';
+import { MAX_TARGET_SIZE } from '../options.js';
+
+const GL_MAX_TEXTURE_SIZE = 0x0d33;
+const GL_MAX_RENDERBUFFER_SIZE = 0x84e8;
+
+/** renderer → { texture, renderbuffer, size }: the GPU's limits, read once per renderer. */
+const limitsByRenderer = new WeakMap();
+
+/**
+ * The largest render target `renderer`'s GPU makes, pixels per side (the smaller of
+ * MAX_TEXTURE_SIZE and MAX_RENDERBUFFER_SIZE), with both.
+ * @param {import('three').WebGLRenderer} renderer
+ * @returns {{ texture: number, renderbuffer: number, size: number }}
+ */
+export function renderTargetLimits(renderer) {
+  let limits = limitsByRenderer.get(renderer);
+  if (!limits) {
+    const gl = renderer.getContext();
+    const texture = gl.getParameter(GL_MAX_TEXTURE_SIZE);
+    const renderbuffer = gl.getParameter(GL_MAX_RENDERBUFFER_SIZE);
+    // A lost context answers null: nothing is known yet, so nothing is refused.
+    if (!(texture > 0) || !(renderbuffer > 0)) return { texture: Infinity, renderbuffer: Infinity, size: Infinity };
+    limits = { texture, renderbuffer, size: Math.min(texture, renderbuffer) };
+    limitsByRenderer.set(renderer, limits);
+  }
+  return limits;
+}
+
+/**
+ * Checks a size given to setSize: finite numbers of at least 1 pixel (three's composer passes
+ * fractional ones with a fractional pixel ratio), and within `limits` when the GPU's are known.
+ * @param {*} width
+ * @param {*} height
+ * @param {string} who e.g. 'SubsurfaceScattering.setSize'
+ * @param {{ texture: number, renderbuffer: number, size: number }} [limits]
+ * @throws {TypeError} "SubsurfaceScattering.setSize: width must be a finite number, got undefined"
+ * @throws {RangeError} "SubsurfaceScattering.setSize: width must be in [1, 65536] pixels, got 0"
+ */
+export function checkTargetSize(width, height, who, limits) {
+  checkNumber(`${who}: width`, width, { min: 1, max: MAX_TARGET_SIZE, unit: 'pixels' });
+  checkNumber(`${who}: height`, height, { min: 1, max: MAX_TARGET_SIZE, unit: 'pixels' });
+  if (limits) checkWithin({ width, height }, limits, who);
+}
+
+function checkWithin({ width, height }, limits, who) {
+  if (Math.floor(width) <= limits.size && Math.floor(height) <= limits.size) return;
+  throw new RangeError(`${who}: ${width} × ${height} pixels is larger than this GPU's largest render target, ` +
+    `${limits.size} × ${limits.size} (MAX_TEXTURE_SIZE ${limits.texture}, MAX_RENDERBUFFER_SIZE ${limits.renderbuffer}): ` +
+    'lower the composer\'s size or pixel ratio');
+}
+
+/**
+ * Checks the size last given to setSize against `renderer`'s GPU (see checkTargetSize).
+ * @param {import('three').WebGLRenderer} renderer
+ * @param {{ width: number, height: number }} size
+ * @param {string} who
+ * @returns {{ texture: number, renderbuffer: number, size: number }} the limits
+ */
+export function checkTargetLimits(renderer, size, who) {
+  const limits = renderTargetLimits(renderer);
+  checkWithin(size, limits, `${who}.setSize`);
+  return limits;
+}
+
+const format = (v) => (Number.isFinite(v) ? String(Number(v.toPrecision(6))) : String(v));
+
+/** True when every element of a Matrix4 is finite. */
+function finiteMatrix(matrix) {
+  const e = matrix.elements;
+  for (let i = 0; i < 16; i++) if (!Number.isFinite(e[i])) return false;
+  return true;
+}
+
+/**
+ * A frame's checks of the camera, the scene and the light (see the header): `begin()`, the checks,
+ * `end()`; `current` holds the last frame's messages. Each kind of problem is warned about once.
+ */
+export class FrameChecks {
+  /** @param {string} who the class named in the warnings */
+  constructor(who) {
+    this.who = who;
+    /** @type {readonly string[]} the last frame's problems */
+    this.current = Object.freeze([]);
+    this._warned = new Set();
+    this._next = null;
+  }
+
+  begin() {
+    this._next = null;
+    return this;
+  }
+
+  end() {
+    this.current = this._next ? Object.freeze(this._next) : (this.current.length ? Object.freeze([]) : this.current);
+  }
+
+  /** Records a problem of kind `key` (warned about the first time only). */
+  problem(key, message) {
+    (this._next ??= []).push(message);
+    if (this._warned.has(key)) return;
+    this._warned.add(key);
+    console.warn(`${this.who}: ${message}`);
+  }
+
+  /** A camera whose projection is not finite draws nothing (in three too): say why. */
+  camera(camera) {
+    const perspective = camera.isPerspectiveCamera === true;
+    const { near, far } = camera;
+    const broken = !finiteMatrix(camera.projectionMatrix) || (perspective && !(near > 0 && far > near));
+    if (!broken) return true;
+    const shape = perspective
+      ? `near ${format(near)}, far ${format(far)}, aspect ${format(camera.aspect)}, fov ${format(camera.fov)}`
+      : camera.isOrthographicCamera
+        ? `left ${format(camera.left)}, right ${format(camera.right)}, top ${format(camera.top)}, bottom ${format(camera.bottom)}, near ${format(near)}, far ${format(far)}`
+        : `near ${format(near)}, far ${format(far)}`;
+    this.problem('camera', `the camera's projection is not finite or has far ≤ near (${shape}), so nothing is drawn, as in three; ` +
+      'give it finite values with 0 < near < far and a non-zero view (an aspect of 0 or NaN comes from a canvas of zero size), then call camera.updateProjectionMatrix()');
+    return false;
+  }
+
+  /** scene.overrideMaterial: the scene is drawn with it, as three draws it, without scattering. */
+  scene(scene) {
+    if (!scene.overrideMaterial) return true;
+    this.problem('overrideMaterial', 'scene.overrideMaterial is set: the scene is drawn with it as three draws it, without subsurface scattering or transmittance');
+    return false;
+  }
+
+  /**
+   * The pipeline's light: its colour and intensity (checked whenever there is one: three lights
+   * the scene with them) and, while transmittance is on, its place in the scene and its frustum.
+   * @param {import('../1-light-depth/LightDepthTarget.js').LightDepthTarget} lightDepth
+   * @param {import('three').Scene} scene
+   * @param {boolean} transmittance
+   * @returns {boolean} whether transmittance can be drawn from it this frame
+   */
+  light(lightDepth, scene, transmittance) {
+    const { light } = lightDepth;
+    const { r, g, b } = light.color;
+    if (!(Number.isFinite(r) && Number.isFinite(g) && Number.isFinite(b) && Number.isFinite(light.intensity))) {
+      this.problem('lightValues', `the light's color (${format(r)}, ${format(g)}, ${format(b)}) or intensity (${format(light.intensity)}) is not finite: ` +
+        'three lights the scene with NaN from it, drawn black here, and there is no transmittance until both are finite');
+      return false;
+    }
+    if (!transmittance) return false;
+    if (scene.overrideMaterial) return false;
+    let root = light;
+    while (root.parent) root = root.parent;
+    if (root !== scene) {
+      this.problem('lightRemoved', 'the light is not in the scene (removed, or never added): there is no transmittance until it is added (with its target), ' +
+        'or call setTransmittance(false)');
+      return false;
+    }
+    const frustum = lightDepth.frustumProblem();
+    if (frustum) {
+      this.problem('lightFrustum', `the light's depth map has no valid frustum (${frustum}): there is no transmittance until it has one`);
+      return false;
+    }
+    return true;
+  }
+}
