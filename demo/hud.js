@@ -55,7 +55,7 @@ export class TimingsHud {
     if (stages.length > 1) {
       const row = document.createElement('div');
       row.className = 'hud-pass hud-total';
-      row.innerHTML = `<span>all passes</span><span></span><span class="hud-ms">${format(total)}</span>`;
+      row.innerHTML = `<span>all passes</span><span class="hud-bar"></span><span class="hud-ms">${format(total)}</span>`;
       this.passes.append(row);
     }
     this.drawPlot();

@@ -21,8 +21,13 @@ const SCREENSHOTS = [
   { name: 'narrow.png', width: 400, height: 800, hash: '' },
   { name: 'figure-2.png', width: 1280, height: 720, hash: 'figure=2' },
 ];
-/** Frames rendered before a screenshot, so the timings overlay has every pass. */
-const FRAMES = 6;
+/** `npm run figures -- --screenshots`: the page's screenshots only. */
+const onlyScreenshots = process.argv.includes('--screenshots');
+
+/** The passes the timings overlay should show before a screenshot is taken. */
+const STAGES = ['lightDepth', 'scene', 'blurH', 'blurV', 'compose'];
+/** Frame times the overlay's plot should have. */
+const FRAMES = 8;
 
 async function main() {
   await mkdir(outDir, { recursive: true });
@@ -38,7 +43,7 @@ async function main() {
     });
     if (standIn) console.warn('The head scan is missing: the figures show the procedural stand-in (run npm run assets).');
     const images = new Map();
-    for (const figure of FIGURES) {
+    for (const figure of onlyScreenshots ? [] : FIGURES) {
       for (const side of ['before', 'after']) {
         await page.evaluate((id, s) => { window.demo.figure(id, s); window.demo.render(); }, figure.id, side);
         images.set(`figure-${figure.id}-${side}.png`, await page.screenshot({ clip: { x: 0, y: 0, width: WIDTH, height: HEIGHT } }));
@@ -50,19 +55,24 @@ async function main() {
       await writeFile(join(outDir, name), png);
       console.log(`wrote docs/figures/${name}`);
     }
-    await writeFile(join(root, 'docs/FIGURES.md'), figuresMarkdown());
-    console.log('wrote docs/FIGURES.md');
+    if (!onlyScreenshots) {
+      await writeFile(join(root, 'docs/FIGURES.md'), figuresMarkdown());
+      console.log('wrote docs/FIGURES.md');
+    }
     await page.close();
     for (const shot of SCREENSHOTS) {
-      const view = await openReadyPage(session.browser, `${session.baseUrl}/?still${shot.hash ? `#${shot.hash}` : ''}`, shot);
-      await view.evaluate(async (frames) => {
+      // The page animating as for a visitor, so the frame rate and the pass times are real
+      // (SwiftShader's: CPU times); stopped once every pass has been timed.
+      const view = await openReadyPage(session.browser, `${session.baseUrl}/${shot.hash ? `#${shot.hash}` : ''}`, shot);
+      await view.waitForFunction((stages, frames) => {
+        const t = window.demo.timings;
+        const s = t.summary();
+        return stages.every((stage) => Number.isFinite(s[stage])) && t.history.length >= frames;
+      }, { timeout: 300_000, polling: 500 }, STAGES, FRAMES);
+      await view.evaluate(() => {
         window.demo.stop();
-        for (let i = 0; i < frames; i++) {
-          window.demo.render();
-          await new Promise((resolve) => { setTimeout(resolve, 50); });
-        }
         window.demo.updateTimings();
-      }, FRAMES);
+      });
       const png = await view.screenshot();
       if (view.problems.length) throw new Error(`the page reported errors:\n${view.problems.join('\n')}`);
       await writeFile(join(screenshotDir, shot.name), png);
