@@ -15,7 +15,7 @@ import { DEFAULT_CAMERA } from './headScene.js';
 export const SHOTS = Object.freeze({
   // Three-quarter view from the right and a little above: forehead to chin, the nose and brows
   // casting shadows the blur visibly softens.
-  face: Object.freeze({ label: 'Close-up', camera: Object.freeze([1.2, 1.9, 8.5, 0, 1.25, 2]), halfWidth: 1.45 }),
+  face: Object.freeze({ label: 'Close-up', camera: Object.freeze([1.3, 2.05, 9.0, 0, 1.35, 2]), halfWidth: 1.45 }),
   head: Object.freeze({ label: 'Full head', camera: DEFAULT_CAMERA, halfWidth: 3.2 }),
 });
 

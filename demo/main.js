@@ -1,14 +1,14 @@
 // Demo page bootstrap: renderer, head, subsurface pipeline, the before/after divider, the header's
 // camera shots, the settings panel, URL state, the timings overlay, and the test API (window.demo)
 // that the browser tests and the figure renderer drive.
-import { ACESFilmicToneMapping, HalfFloatType, WebGLRenderer, WebGLRenderTarget } from 'three';
+import { ACESFilmicToneMapping, HalfFloatType, Vector3, WebGLRenderer, WebGLRenderTarget } from 'three';
 import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
 import { EffectComposer } from 'three/addons/postprocessing/EffectComposer.js';
 import { OutputPass } from 'three/addons/postprocessing/OutputPass.js';
 import { SubsurfaceScattering, getProfile } from '../src/index.js';
 import { loadHead } from './headModel.js';
 import { createHeadScene, setLightDirection, HEAD_WORLD_UNIT_IN_MM } from './headScene.js';
-import { shotCamera } from './framing.js';
+import { SHOTS, shotCamera } from './framing.js';
 import { readRenderTargetFloats } from '../dev/readback.js';
 import { defaultState, parseHash, formatHash } from './state.js';
 import { figureState } from './figures.js';
@@ -29,11 +29,15 @@ const footer = document.getElementById('attribution');
 /** Phones and narrow windows: the panel starts folded (style.css has the same width). */
 const narrow = matchMedia('(max-width: 700px)');
 
-// The header's and the attribution's heights, for the layout (style.css) to keep clear of them.
-new ResizeObserver(() => {
-  document.documentElement.style.setProperty('--header-h', `${header.offsetHeight}px`);
-  document.documentElement.style.setProperty('--footer-h', `${footer.offsetHeight}px`);
-}).observe(document.body);
+// The header's, the attribution's and the timings' heights, for the layout (style.css) to keep
+// clear of them.
+const layoutObserver = new ResizeObserver(() => {
+  const style = document.documentElement.style;
+  style.setProperty('--header-h', `${header.offsetHeight}px`);
+  style.setProperty('--footer-h', `${footer.offsetHeight}px`);
+  style.setProperty('--hud-h', `${document.getElementById('hud').offsetHeight + 6}px`);
+});
+for (const element of [document.body, header, footer, document.getElementById('hud')]) layoutObserver.observe(element);
 
 function showNotice(element, html) {
   element.innerHTML = html;
@@ -204,7 +208,6 @@ async function start() {
   }
 
   const panel = createControls(state, { onChange, onFigure, onReset, container: document.getElementById('panel') });
-  if (narrow.matches) panel.gui.close(); // folded: the head stays in view
   for (const button of shotButtons) {
     button.addEventListener('click', () => {
       state.shot = button.dataset.shot;
@@ -240,6 +243,18 @@ async function start() {
   watchPixelRatio();
   resize();
 
+  // The panel starts folded where, open, it would cover the face: narrow windows, or a window
+  // not wide enough for the face and the panel side by side (the shot's halfWidth either side of
+  // the orbit target, projected).
+  const panelCoversFace = () => {
+    camera.updateMatrixWorld();
+    const right = new Vector3().setFromMatrixColumn(camera.matrixWorld, 0);
+    const edge = controls.target.clone().addScaledVector(right, SHOTS[state.shot].halfWidth).project(camera);
+    const canvasBox = renderer.domElement.getBoundingClientRect();
+    return canvasBox.left + (edge.x * 0.5 + 0.5) * canvasBox.width > document.getElementById('panel').getBoundingClientRect().left;
+  };
+  if (narrow.matches || panelCoversFace()) panel.gui.close();
+
   let lastTimingsUpdate = 0;
   function frame() {
     controls.update();
@@ -255,7 +270,7 @@ async function start() {
   frame();
 
   window.demo = {
-    rig, renderer, composer, head, sss, state, panel, timings, hud, divider,
+    rig, renderer, composer, head, sss, state, panel, timings, hud, divider, controls,
     isStandIn: head.isStandIn,
     /** The face centre, world units: where tests look for a lit face. */
     facePoint: rig.facePoint,

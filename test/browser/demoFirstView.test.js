@@ -95,6 +95,37 @@ function projectToPage(page, point) {
   }, point);
 }
 
+/**
+ * The face on the page (CSS px): the bounding box of eyes, nose and mouth, projected (the scan's
+ * coordinates: x ±0.8 across the eyes, y 0.4 at the mouth to 1.9 at the brows, z 2.2).
+ */
+function faceCore(page) {
+  return page.evaluate(() => {
+    const { demo: d } = window;
+    const cam = d.rig.camera;
+    cam.updateMatrixWorld();
+    const r = d.renderer.domElement.getBoundingClientRect();
+    const xs = [];
+    const ys = [];
+    for (const x of [-0.8, 0.8]) for (const y of [0.4, 1.9]) {
+      const v = cam.position.clone().set(x, y, 2.2).project(cam);
+      xs.push(r.left + (v.x * 0.5 + 0.5) * r.width);
+      ys.push(r.top + (0.5 - v.y * 0.5) * r.height);
+    }
+    return { left: Math.min(...xs), right: Math.max(...xs), top: Math.min(...ys), bottom: Math.max(...ys) };
+  });
+}
+
+/** Each overlay that overlaps the face, by name (none expected). */
+async function coveringFace(page) {
+  const face = await faceCore(page);
+  const b = await boxes(page, {
+    header: '#intro', panel: '#panel', timings: '#hud', attribution: '#attribution',
+    handle: '.divider-handle', 'left label': '.divider-left', 'right label': '.divider-right',
+  });
+  return Object.entries(b).filter(([name, box]) => name !== 'viewport' && box && overlaps(box, face)).map(([name]) => name);
+}
+
 /** Display hue in degrees (−180..180] of an 8-bit RGB colour. */
 function hue(r, g, b) {
   const max = Math.max(r, g, b);
@@ -111,9 +142,6 @@ const quantile = (values, q) => {
   const s = [...values].sort((a, b) => a - b);
   return s[Math.min(s.length - 1, Math.floor(q * s.length))];
 };
-
-// The face's middle (between the eyes and the mouth, on the nose), in the scan's coordinates.
-const FACE_MIDDLE = [0, 1.25, 2.3];
 
 describe.skipIf(!scanAvailable)('the demo at first sight (on the head scan; needs npm run assets)', () => {
   it('1. the first view shows the effect: scattering changes ≥ 5 % of the head, a draggable divider with labels, the full head one click away', async () => {
@@ -134,6 +162,10 @@ describe.skipIf(!scanAvailable)('the demo at first sight (on the head scan; need
       };
     });
     expect(ui.hidden).toBe(false);
+    // Nothing over the face: the panel starts folded at 800 px, the divider's handle and labels
+    // sit at the chin.
+    expect(await page.evaluate(() => window.demo.panel.gui._closed)).toBe(true);
+    expect(await coveringFace(page)).toEqual([]);
     const handleX = (ui.handle.left + ui.handle.right) / 2;
     expect(Math.abs(handleX - state.split * ui.width)).toBeLessThan(2);
     expect(ui.handle.width).toBeGreaterThanOrEqual(32);
@@ -188,7 +220,12 @@ describe.skipIf(!scanAvailable)('the demo at first sight (on the head scan; need
   });
 
   it('2. a header says what this is and what to do; the panel is grouped, mostly folded, with a reset', async () => {
-    const page = await demo('');
+    // 1280 × 720: room for the face and the open panel side by side.
+    const page = await demo('', { width: 1280, height: 720 });
+    expect(await page.evaluate(() => window.demo.panel.gui._closed)).toBe(false);
+    const layout = await boxes(page, { panel: '#panel', attribution: '#attribution' });
+    expect(await coveringFace(page)).toEqual([]);
+    expect(layout.panel.bottom).toBeLessThanOrEqual(layout.attribution.top);
     const header = await page.evaluate(() => document.getElementById('intro').innerText);
     expect(header).toMatch(/subsurface scattering/i);
     for (const word of [/divider/i, /orbit/i, /zoom/i, /pan/i, /presets/i]) expect(header).toMatch(word);
@@ -273,6 +310,7 @@ describe.skipIf(!scanAvailable)('the demo at first sight (on the head scan; need
     expect(await page.evaluate(() => [...document.querySelectorAll('#hud .hud-ms, #hud .hud-fps')].filter((e) => e.scrollWidth > e.clientWidth + 1).length)).toBe(0);
     // The panel does not cover the attribution either.
     expect(b.panel.bottom).toBeLessThanOrEqual(b.attribution.top);
+    expect(await coveringFace(page)).toEqual([]); // with every pass listed
   });
 
   it('4. figure 2: the back-lit ear is warm red-orange with texture, green/red above the floor the profile gives', async () => {
@@ -359,8 +397,7 @@ describe.skipIf(!scanAvailable)('the demo at first sight (on the head scan; need
   it('5. at 400 px wide: the panel starts folded, nothing covers the face, the attribution is readable', async () => {
     const page = await demo('', { width: 400, height: 760 });
     expect(await page.evaluate(() => window.demo.panel.gui._closed)).toBe(true);
-    const face = await projectToPage(page, FACE_MIDDLE);
-    const faceBox = { left: face.x - 40, right: face.x + 40, top: face.y - 40, bottom: face.y + 40 };
+    const faceBox = await faceCore(page);
     expect(inside(faceBox, { left: 0, top: 0, right: 400, bottom: 760 })).toBe(true);
     const readable = () => page.evaluate(() => {
       const el = document.getElementById('attribution');
@@ -395,7 +432,7 @@ describe.skipIf(!scanAvailable)('the demo at first sight (on the head scan; need
       for (const part of ['handle', 'left', 'right']) expect(overlaps(b[name], b[part]), `${name} clear of the divider's ${part}`).toBe(false);
     }
     for (const part of ['handle', 'left', 'right']) expect(inside(b[part], b.viewport), `divider ${part} on screen`).toBe(true);
-    expect(overlaps(b.handle, faceBox)).toBe(false);
+    expect(await coveringFace(page)).toEqual([]);
     expect(await readable()).toMatchObject({ inView: true, onTop: true });
     // The header's hint and buttons fit (nothing cut off sideways).
     expect(await page.evaluate(() => { const h = document.getElementById('intro'); return h.scrollWidth <= h.clientWidth + 1; })).toBe(true);
