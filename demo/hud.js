@@ -34,7 +34,7 @@ export class TimingsHud {
     const t = this.timings.summary();
     const fps = Number.isFinite(t.fps) ? t.fps.toFixed(t.fps < 10 ? 1 : 0) : '…';
     const cpu = Number.isFinite(t.cpu) ? format(t.cpu) : '…';
-    this.fps.innerHTML = `<b>${fps}</b> fps <span class="hud-sub">· render call ${cpu} ms CPU</span>`;
+    this.fps.innerHTML = `<b>${fps}</b> fps <span class="hud-sub" title="CPU time of the render call">· render() ${cpu} ms</span>`;
     const stages = STAGES.filter((s) => Number.isFinite(t[s]));
     const total = stages.reduce((sum, s) => sum + t[s], 0);
     this.passes.replaceChildren(...stages.map((s) => {
