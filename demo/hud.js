@@ -32,7 +32,7 @@ export class TimingsHud {
 
   update() {
     const t = this.timings.summary();
-    const fps = Number.isFinite(t.fps) ? t.fps.toFixed(t.fps < 10 ? 1 : 0) : '…';
+    const fps = Number.isFinite(t.fps) ? t.fps.toFixed(t.fps >= 10 ? 0 : t.fps >= 1 ? 1 : 2) : '…';
     const cpu = Number.isFinite(t.cpu) ? format(t.cpu) : '…';
     this.fps.innerHTML = `<b>${fps}</b> fps <span class="hud-sub" title="CPU time of the render call">· render() ${cpu} ms</span>`;
     const stages = STAGES.filter((s) => Number.isFinite(t[s]));
