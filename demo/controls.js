@@ -1,7 +1,8 @@
-// The tuning panel (lil-gui, shipped with three): one control per state key, grouped like the
-// pipeline. Changes go to `onChange(key)`; `refresh()` pulls values back after a preset. Its
-// stylesheet is demo/lil-gui.css, linked by index.html: lil-gui's own would be an inline <style>,
-// which the demo's Content-Security-Policy refuses.
+// The settings panel (lil-gui, shipped with three): a reset button, the paper's figures as presets,
+// the controls a visitor reaches for first (compare, light, skin) open, and the rest folded under
+// "More". One control per state key; changes go to `onChange(key)`; `refresh()` pulls values back
+// after a preset or a hash change. Its stylesheet is demo/lil-gui.css, linked by index.html:
+// lil-gui's own would be an inline <style>, which the demo's Content-Security-Policy refuses.
 import GUI from 'three/addons/libs/lil-gui.module.min.js';
 import { STATE_SCHEMA } from './state.js';
 import { FIGURES } from './figures.js';
@@ -9,19 +10,25 @@ import { FIGURES } from './figures.js';
 const LABELS = {
   sss: 'scattering', width: 'width (mm)', depthThreshold: 'threshold (mm)', shrink: 'inward shrink (mm)',
   lightDepthSize: 'depth map size', lightAzimuth: 'azimuth (°)', lightElevation: 'elevation (°)',
-  lightIntensity: 'intensity', lightColor: 'colour', followSurface: 'follow surface', split: 'split (left: off)',
+  lightIntensity: 'intensity', lightColor: 'colour', followSurface: 'follow surface', split: 'divider (left: off)',
   resolutionScale: 'resolution scale',
 };
+
+/** Short names of the figures, for the preset rows. */
+const FIGURE_NAMES = { 1: 'Nose', 2: 'Ear', 3: 'Skin', 4: 'Edges', 5: 'Full model' };
+/** What "without" turns off, per figure toggle. */
+const TOGGLE_NAMES = { transmittance: 'transmittance', sss: 'scattering', followSurface: 'depth test' };
 
 /**
  * @param {object} state the demo state (see state.js); edited in place
  * @param {object} hooks
  * @param {(key: string) => void} hooks.onChange
  * @param {(id: number, side: 'before'|'after') => void} hooks.onFigure
- * @param {() => object} hooks.timings the current timings summary
+ * @param {() => void} hooks.onReset back to the first view
+ * @param {HTMLElement} hooks.container where the panel goes
  */
-export function createControls(state, { onChange, onFigure, timings }) {
-  const gui = new GUI({ title: 'three-separable-sss', injectStyles: false });
+export function createControls(state, { onChange, onFigure, onReset, container }) {
+  const gui = new GUI({ title: 'Settings', container, injectStyles: false });
   const add = (folder, key, ...args) => {
     const schema = STATE_SCHEMA[key];
     let controller;
@@ -40,72 +47,88 @@ export function createControls(state, { onChange, onFigure, timings }) {
     });
   };
 
-  const scattering = gui.addFolder('Scattering');
-  add(scattering, 'sss');
-  add(scattering, 'profile');
-  add(scattering, 'method');
-  add(scattering, 'width', 0.05);
-  // Samples: 'auto' or an odd count; lil-gui has no such control, so a dropdown of both.
-  scattering.add(state, 'samples', ['auto', 3, 5, 7, 9, 11, 13, 17, 25, 33, 45, 63]).name('samples').onChange(() => onChange('samples'));
-  addRgb(scattering, 'strength', 0.01);
-  addRgb(scattering, 'falloff', 0.01);
-  add(scattering, 'followSurface');
-  add(scattering, 'depthThreshold', 0.5);
+  gui.add({ reset: onReset }, 'reset').name('↺ reset to the first view');
 
-  const transmittance = gui.addFolder('Transmittance');
-  add(transmittance, 'transmittance');
-  add(transmittance, 'translucency', 0.01);
-  add(transmittance, 'lightDepthSize');
-  add(transmittance, 'shrink', 0.05);
+  // The paper's figures: one row each, "without" and "with" side by side (lil-gui has no such
+  // row, so plain buttons inside the folder). The row of the figure shown is marked.
+  const presets = gui.addFolder("Presets: the paper's figures");
+  presets.domElement.classList.add('presets');
+  const rows = FIGURES.map((f) => {
+    const row = document.createElement('div');
+    row.className = 'preset-row';
+    row.title = f.caption;
+    const name = document.createElement('span');
+    name.className = 'preset-name';
+    name.textContent = `${f.id} · ${FIGURE_NAMES[f.id]}`;
+    row.append(name);
+    for (const side of ['before', 'after']) {
+      const button = document.createElement('button');
+      button.type = 'button';
+      button.dataset.figure = String(f.id);
+      button.dataset.side = side;
+      button.textContent = side === 'before' ? 'without' : 'with';
+      button.title = `Figure ${f.id}, ${f.title.toLowerCase()}: ${side === 'before' ? 'without' : 'with'} ${TOGGLE_NAMES[f.toggle]}`;
+      button.addEventListener('click', () => onFigure(f.id, side));
+      row.append(button);
+    }
+    presets.$children.append(row);
+    return { figure: f, row };
+  });
+  const markPreset = () => {
+    for (const { figure, row } of rows) {
+      const shown = state.figure === figure.id;
+      row.classList.toggle('active', shown);
+      for (const button of row.querySelectorAll('button')) {
+        const side = state[figure.toggle] === figure[button.dataset.side];
+        button.setAttribute('aria-pressed', String(shown && side));
+      }
+    }
+  };
 
-  const specular = gui.addFolder('Specular');
-  add(specular, 'specular', 0.01);
-  add(specular, 'roughness', 0.01);
+  const compare = gui.addFolder('Compare');
+  add(compare, 'sss');
+  add(compare, 'split', 0.01);
+  add(compare, 'view');
 
   const light = gui.addFolder('Light');
   add(light, 'lightAzimuth', 1);
   add(light, 'lightElevation', 1);
   add(light, 'lightIntensity', 0.1);
-  add(light, 'lightColor');
 
-  const view = gui.addFolder('View');
-  add(view, 'split', 0.01);
-  add(view, 'view');
+  const skin = gui.addFolder('Skin');
+  add(skin, 'width', 0.05);
+  add(skin, 'transmittance');
+  add(skin, 'translucency', 0.01);
 
-  const figures = gui.addFolder("The paper's figures");
-  for (const f of FIGURES) {
-    const actions = {
-      before: () => onFigure(f.id, 'before'),
-      after: () => onFigure(f.id, 'after'),
-    };
-    const label = f.title.replace(' without and with ', ': ');
-    figures.add(actions, 'before').name(`${f.id}. ${label} — without`);
-    figures.add(actions, 'after').name(`${f.id}. ${label} — with`);
-  }
+  // Everything else, folded.
+  const more = gui.addFolder('More').close();
+  const kernel = more.addFolder('Kernel');
+  add(kernel, 'profile');
+  add(kernel, 'method');
+  // Samples: 'auto' or an odd count; lil-gui has no such control, so a dropdown of both.
+  kernel.add(state, 'samples', ['auto', 3, 5, 7, 9, 11, 13, 17, 25, 33, 45, 63]).name('samples').onChange(() => onChange('samples'));
+  addRgb(kernel, 'strength', 0.01);
+  addRgb(kernel, 'falloff', 0.01);
+  const edges = more.addFolder('Depth edges');
+  add(edges, 'followSurface');
+  add(edges, 'depthThreshold', 0.5);
+  const transmittance = more.addFolder('Transmittance');
+  add(transmittance, 'lightDepthSize');
+  add(transmittance, 'shrink', 0.05);
+  const specular = more.addFolder('Specular');
+  add(specular, 'specular', 0.01);
+  add(specular, 'roughness', 0.01);
+  add(more, 'lightColor');
+  add(more, 'shot');
+  add(more, 'resolutionScale', 0.05);
 
-  const performance = gui.addFolder('Performance');
-  add(performance, 'resolutionScale', 0.05);
-  const readout = { gpu: '…', cpu: '…', fps: '…' };
-  const gpu = performance.add(readout, 'gpu').name('GPU ms / pass').disable();
-  const cpu = performance.add(readout, 'cpu').name('CPU ms / frame').disable();
-  const fps = performance.add(readout, 'fps').name('fps').disable();
-  const showTimings = () => {
-    const t = timings();
-    const passes = Object.entries(t).filter(([k]) => k !== 'cpu' && k !== 'fps');
-    readout.gpu = passes.length ? passes.map(([k, v]) => `${k} ${v.toFixed(2)}`).join(' · ') : 'no timer queries: CPU only';
-    readout.cpu = Number.isFinite(t.cpu) ? t.cpu.toFixed(2) : '…';
-    readout.fps = Number.isFinite(t.fps) ? t.fps.toFixed(1) : '…';
-    gpu.updateDisplay();
-    cpu.updateDisplay();
-    fps.updateDisplay();
-  };
-
+  markPreset();
   return {
     gui,
     /** Shows the state's current values (after a preset or a hash change). */
     refresh() {
       for (const c of gui.controllersRecursive()) c.updateDisplay();
+      markPreset();
     },
-    showTimings,
   };
 }

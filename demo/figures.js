@@ -28,11 +28,15 @@ export const FIGURES = [
   {
     id: 2,
     title: 'Ear without and with transmittance',
-    caption: 'With the light behind the head the ear glows red: thin, so light crosses it; the skull stays dark.',
+    caption: 'With the light behind the head the ear glows red-orange: thin, so light crosses it; the thin rim is the most orange, the skull stays dark.',
     camera: [6.5, 1.7, 4.5, 1.7, 1.3, -0.2],
     // Behind and a little to the ear's side and above: from the other side the skull would stand
-    // between the light and the ear.
-    settings: { lightAzimuth: 175, lightElevation: 15, lightIntensity: 7, translucency: 0.7 },
+    // between the light and the ear. Calibrated against the skin profile's T(d) (docs/FIGURES.md,
+    // "Calibrating figure 2"): the light crosses ~8 mm of ear (median, obliquely); translucency
+    // 0.945 makes that 0.44 profile mm, where T's green is 30 % of its red: red-orange on screen.
+    // At the old 0.7 (2.4 mm) green was 0.7 % of red, which ACES shows as pure red. The finer
+    // light depth map keeps the ear's rim smooth.
+    settings: { lightAzimuth: 175, lightElevation: 15, lightIntensity: 8, translucency: 0.945, lightDepthSize: 2048 },
     toggle: 'transmittance', before: false, after: true,
   },
   {
@@ -40,7 +44,7 @@ export const FIGURES = [
     title: 'Skin without and with the blur',
     caption: 'The blur softens the diffuse light: pores and bumps keep their specular sparkle but lose the hard, dry look.',
     camera: [1.6, 1.4, 7.5, 0.9, 1.2, 1.8],
-    settings: { lightAzimuth: 70, lightElevation: 20 },
+    settings: { lightAzimuth: 70, lightElevation: 20, lightIntensity: 2.6 },
     toggle: 'sss', before: false, after: true,
   },
   {
@@ -48,7 +52,7 @@ export const FIGURES = [
     title: 'Edge of the head without and with depth consideration',
     caption: 'Without it, light bleeds across depth edges (nose over the far cheek, brows, ear): halos; with it, each surface keeps its own light. Width exaggerated to 4 mm.',
     camera: [4, 1.2, 8, 0.2, 1.1, 1.5],
-    settings: { lightAzimuth: 45, lightElevation: 10, width: 4 },
+    settings: { lightAzimuth: 45, lightElevation: 10, lightIntensity: 2.6, width: 4 },
     toggle: 'followSurface', before: 'off', after: 'drop',
   },
   {
@@ -56,14 +60,17 @@ export const FIGURES = [
     title: 'The full model without and with subsurface scattering',
     caption: 'Diffusion and transmittance together: softer, warmer skin, red ear rims and nostrils.',
     camera: [...DEFAULT_CAMERA],
-    settings: { lightAzimuth: 30, lightElevation: 25 },
+    settings: { lightAzimuth: 30, lightElevation: 25, lightIntensity: 2.6 },
     toggle: 'sss', before: false, after: true,
   },
 ];
+
+/** What every figure sets besides its own settings: the whole image on one side of the comparison. */
+const FIGURE_BASE = Object.freeze({ split: 0 });
 
 /** The state values a figure sets for its "before" or "after" image. */
 export function figureState(id, side = 'after') {
   const figure = FIGURES.find((f) => f.id === id);
   if (!figure) throw new RangeError(`figure must be an integer in 1..5, got ${id}`);
-  return { ...figure.settings, camera: figure.camera, figure: id, [figure.toggle]: figure[side] };
+  return { ...FIGURE_BASE, ...figure.settings, camera: [...figure.camera], figure: id, [figure.toggle]: figure[side] };
 }

@@ -1,17 +1,21 @@
-// Demo page bootstrap: renderer, head, subsurface pipeline, controls, URL state, timings, and the
-// test API (window.demo) that the browser tests and the figure renderer drive.
-import { ACESFilmicToneMapping, HalfFloatType, WebGLRenderer, WebGLRenderTarget } from 'three';
+// Demo page bootstrap: renderer, head, subsurface pipeline, the before/after divider, the header's
+// camera shots, the settings panel, URL state, the timings overlay, and the test API (window.demo)
+// that the browser tests and the figure renderer drive.
+import { ACESFilmicToneMapping, HalfFloatType, Vector3, WebGLRenderer, WebGLRenderTarget } from 'three';
 import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
 import { EffectComposer } from 'three/addons/postprocessing/EffectComposer.js';
 import { OutputPass } from 'three/addons/postprocessing/OutputPass.js';
 import { SubsurfaceScattering, getProfile } from '../src/index.js';
 import { loadHead } from './headModel.js';
-import { createHeadScene, setLightDirection, HEAD_WORLD_UNIT_IN_MM, DEFAULT_CAMERA } from './headScene.js';
+import { createHeadScene, setLightDirection, HEAD_WORLD_UNIT_IN_MM } from './headScene.js';
+import { SHOTS, shotCamera } from './framing.js';
 import { readRenderTargetFloats } from '../dev/readback.js';
 import { defaultState, parseHash, formatHash } from './state.js';
 import { figureState } from './figures.js';
 import { createControls } from './controls.js';
 import { PassTimings } from './passTimings.js';
+import { TimingsHud } from './hud.js';
+import { Divider } from './divider.js';
 import { drawKernel } from './kernelPlot.js';
 
 const params = new URLSearchParams(location.search);
@@ -20,6 +24,20 @@ const notice = document.getElementById('notice');
 const hashNotice = document.getElementById('hash-notice');
 const progress = document.getElementById('progress');
 const kernelCanvas = document.getElementById('kernel-plot');
+const header = document.getElementById('intro');
+const footer = document.getElementById('attribution');
+/** Phones and narrow windows: the panel starts folded (style.css has the same width). */
+const narrow = matchMedia('(max-width: 700px)');
+
+// The header's, the attribution's and the timings' heights, for the layout (style.css) to keep
+// clear of them.
+const layoutObserver = new ResizeObserver(() => {
+  const style = document.documentElement.style;
+  style.setProperty('--header-h', `${header.offsetHeight}px`);
+  style.setProperty('--footer-h', `${footer.offsetHeight}px`);
+  style.setProperty('--hud-h', `${document.getElementById('hud').offsetHeight + 6}px`);
+});
+for (const element of [document.body, header, footer, document.getElementById('hud')]) layoutObserver.observe(element);
 
 /** Shows a notice made of text and elements (no HTML strings: the page runs under a strict CSP). */
 function showNotice(element, ...parts) {
@@ -78,6 +96,7 @@ async function start() {
   composer.addPass(outputPass);
 
   const timings = new PassTimings(renderer, sss);
+  const hud = new TimingsHud(document.getElementById('hud'), timings);
 
   const initial = stateFromHash(location.hash);
   const state = initial.state;
@@ -92,12 +111,27 @@ async function start() {
     renderer.setSize(w, h);
     composer.setPixelRatio(renderer.getPixelRatio());
     composer.setSize(w, h);
+    if (!state.camera) apply.camera(); // the shot is framed for the window's shape
   }
+
+  // Nothing to compare: scattering off, the divider at an edge, or a view the split does not affect.
+  const dividerVisible = () => state.sss && state.split > 0 && state.split < 1 && ['final', 'diffuse', 'kernel'].includes(state.view);
+  const divider = new Divider(document.getElementById('divider'), {
+    onInput: (fraction) => {
+      state.split = fraction;
+      apply.split();
+      panel.refresh();
+    },
+    onCommit: () => onChange('split'),
+  });
 
   // How each key reaches the scene and the pipeline.
   const kernelKeys = ['profile', 'method', 'samples', 'strength', 'falloff'];
   const apply = {
-    sss: () => { sss.scattering = state.sss; },
+    sss: () => {
+      sss.scattering = state.sss;
+      divider.show(state.split, dividerVisible());
+    },
     kernel: () => sss.setKernel({
       profile: state.profile, method: state.method, samples: state.samples,
       strength: [...state.strength], falloff: [...state.falloff],
@@ -112,26 +146,33 @@ async function start() {
       light.intensity = state.lightIntensity;
       light.color.set(state.lightColor);
     },
-    split: () => sss.setSplit(state.split),
+    split: () => {
+      sss.setSplit(state.split);
+      divider.show(state.split, dividerVisible());
+    },
     view: () => {
       // Depth view: white at the camera, black 30 units (1.5 m) away, past the head at any zoom.
       sss.setDebugView(state.view === 'kernel' ? 'final' : state.view, { depthRange: 30 });
       kernelCanvas.hidden = state.view !== 'kernel';
       if (state.view === 'kernel') drawKernel(kernelCanvas, sss.kernel, state.method === 'reference' ? null : getProfile(state.profile));
+      divider.show(state.split, dividerVisible());
     },
     resolutionScale: resize,
     camera: () => {
-      const [x, y, z, tx, ty, tz] = state.camera ?? DEFAULT_CAMERA;
+      const [x, y, z, tx, ty, tz] = state.camera ?? shotCamera(state.shot, camera.aspect, camera.fov);
       camera.position.set(x, y, z);
       controls.target.set(tx, ty, tz);
       controls.update();
+      for (const button of shotButtons) button.setAttribute('aria-pressed', String(!state.camera && button.dataset.shot === state.shot));
     },
   };
+  const shotButtons = [...header.querySelectorAll('[data-shot]')];
   const groupOf = (key) => {
     if (kernelKeys.includes(key)) return 'kernel';
     if (['width', 'translucency', 'shrink'].includes(key)) return 'material';
     if (key === 'depthThreshold') return 'followSurface';
     if (key === 'roughness') return 'specular';
+    if (key === 'shot') return 'camera';
     if (key.startsWith('light') && key !== 'lightDepthSize') return 'light';
     return key;
   };
@@ -146,6 +187,7 @@ async function start() {
 
   function onChange(key) {
     if (key !== 'figure' && key !== 'camera') state.figure = null;
+    if (key === 'shot') state.camera = null; // a shot replaces an orbited camera
     apply[groupOf(key)]?.();
     if (key === 'view' || kernelKeys.includes(key)) apply.view();
     writeHash();
@@ -155,6 +197,15 @@ async function start() {
   function onFigure(id, side) {
     Object.assign(state, defaultState(), { resolutionScale: state.resolutionScale }, figureState(id, side));
     applyAll();
+    panel.refresh();
+    writeHash();
+  }
+
+  // Back to the first view: every setting at its default.
+  function onReset() {
+    Object.assign(state, defaultState());
+    applyAll();
+    resize();
     panel.refresh();
     writeHash();
   }
@@ -170,7 +221,14 @@ async function start() {
     else hashNotice.hidden = true;
   }
 
-  const panel = createControls(state, { onChange, onFigure, timings: () => timings.summary() });
+  const panel = createControls(state, { onChange, onFigure, onReset, container: document.getElementById('panel') });
+  for (const button of shotButtons) {
+    button.addEventListener('click', () => {
+      state.shot = button.dataset.shot;
+      onChange('shot');
+      panel.refresh();
+    });
+  }
   applyAll();
   showProblems();
   controls.addEventListener('end', () => {
@@ -199,6 +257,18 @@ async function start() {
   watchPixelRatio();
   resize();
 
+  // The panel starts folded where, open, it would cover the face: narrow windows, or a window
+  // not wide enough for the face and the panel side by side (the shot's halfWidth either side of
+  // the orbit target, projected).
+  const panelCoversFace = () => {
+    camera.updateMatrixWorld();
+    const right = new Vector3().setFromMatrixColumn(camera.matrixWorld, 0);
+    const edge = controls.target.clone().addScaledVector(right, SHOTS[state.shot].halfWidth).project(camera);
+    const canvasBox = renderer.domElement.getBoundingClientRect();
+    return canvasBox.left + (edge.x * 0.5 + 0.5) * canvasBox.width > document.getElementById('panel').getBoundingClientRect().left;
+  };
+  if (narrow.matches || panelCoversFace()) panel.gui.close();
+
   let lastTimingsUpdate = 0;
   function frame() {
     controls.update();
@@ -206,7 +276,7 @@ async function start() {
     composer.render();
     timings.frame(performance.now() - t0);
     if (t0 - lastTimingsUpdate > 500) {
-      panel.showTimings();
+      hud.update();
       lastTimingsUpdate = t0;
     }
   }
@@ -214,7 +284,7 @@ async function start() {
   frame();
 
   window.demo = {
-    rig, renderer, composer, head, sss, state, panel,
+    rig, renderer, composer, head, sss, state, panel, timings, hud, divider, controls,
     isStandIn: head.isStandIn,
     /** The face centre, world units: where tests look for a lit face. */
     facePoint: rig.facePoint,
@@ -230,6 +300,11 @@ async function start() {
       panel.refresh();
     },
     figure: onFigure,
+    reset: onReset,
+    /** Shows or hides everything over the image (header, panel, divider, timings, attribution). */
+    chrome(visible) { document.body.classList.toggle('no-chrome', !visible); },
+    /** Refreshes the timings overlay now (it updates itself twice a second while animating). */
+    updateTimings() { hud.update(); },
     /** Reads the scene pass's surface attachment (linear depth, width) of the last frame. */
     readSurface() {
       return readRenderTargetFloats(renderer, sss.scenePass.renderTarget, 2);

@@ -1,9 +1,25 @@
 // The demo's timing readout: per-stage GPU times from the pipeline's stage timer
-// (dev/gpuTimer.js; the median of the last 30 of each), the CPU time of the render call and the
-// frame rate.
+// (dev/gpuTimer.js; the median of the last 30 of each), the CPU time of the render call, the frame
+// rate and a history of frame times for the plot. On a software renderer (SwiftShader, llvmpipe)
+// the "GPU" is the CPU, so the timer queries measure CPU time: `software` says so.
 import { GpuStageTimer, median } from '../dev/gpuTimer.js';
 
 const WINDOW = 30;
+const HISTORY = 120;
+
+/** The pipeline's stages in the order a frame runs them. */
+export const STAGES = Object.freeze(['lightDepth', 'scene', 'blurH', 'blurV', 'dense', 'compose', 'transparent']);
+
+/** Whether the WebGL context runs on a software rasterizer, from its renderer string. */
+export function isSoftwareRenderer(rendererName) {
+  return /swiftshader|llvmpipe|softpipe|software|basic render driver/i.test(rendererName ?? '');
+}
+
+/** The WebGL context's renderer string (unmasked where the browser allows). */
+export function rendererName(gl) {
+  const info = gl.getExtension('WEBGL_debug_renderer_info');
+  return String(gl.getParameter(info ? info.UNMASKED_RENDERER_WEBGL : gl.RENDERER) ?? '');
+}
 
 export class PassTimings {
   /**
@@ -13,12 +29,16 @@ export class PassTimings {
   constructor(renderer, sss) {
     this.stages = new GpuStageTimer(renderer, { window: WINDOW });
     sss.stageTimer = this.stages;
+    this.renderer = rendererName(renderer.getContext());
+    this.software = isSoftwareRenderer(this.renderer);
     this.frameTimes = [];
     this.frameIntervals = [];
+    /** The last HISTORY frame intervals, ms (the plot). */
+    this.history = [];
     this.lastFrame = null;
   }
 
-  /** True when per-stage GPU times can be measured. */
+  /** True when per-stage times can be measured at all (timer queries). */
   get gpu() {
     return this.stages.available;
   }
@@ -26,9 +46,12 @@ export class PassTimings {
   /** Call once per frame with the CPU time the frame's render call took. */
   frame(cpuMs) {
     const now = performance.now();
-    if (this.lastFrame !== null) keepLast(this.frameIntervals, now - this.lastFrame);
+    if (this.lastFrame !== null) {
+      keepLast(this.frameIntervals, now - this.lastFrame, WINDOW);
+      keepLast(this.history, now - this.lastFrame, HISTORY);
+    }
     this.lastFrame = now;
-    keepLast(this.frameTimes, cpuMs);
+    keepLast(this.frameTimes, cpuMs, WINDOW);
     this.stages.poll();
   }
 
@@ -38,7 +61,7 @@ export class PassTimings {
   }
 }
 
-function keepLast(list, value) {
+function keepLast(list, value, length) {
   list.push(value);
-  if (list.length > WINDOW) list.shift();
+  if (list.length > length) list.shift();
 }

@@ -2,6 +2,8 @@
 // view can be shared. Each key has a schema; values read from the hash are validated, and invalid
 // ones are ignored with a message the page shows. Pure: runs in Node for the unit tests.
 
+import { SHOT_NAMES } from './framing.js';
+
 const PROFILES = ['skin', 'skinBurley', 'marble', 'milk'];
 const VIEWS = ['final', 'diffuse', 'specular', 'depth', 'mask', 'thickness', 'transmittance', 'kernel'];
 
@@ -30,16 +32,19 @@ export const STATE_SCHEMA = {
   // Specular
   specular: number(0, 2, 1),
   roughness: number(0.05, 1, 0.45),
-  // Light
-  lightAzimuth: number(-180, 360, 30, '°'),
-  lightElevation: number(-80, 89, 25, '°'),
-  lightIntensity: number(0, 20, 2.6),
+  // Light: the first view's key light, high and to the face's right, so the brows, nose and lips
+  // cast shadows whose edges the blur visibly softens.
+  lightAzimuth: number(-180, 360, -35, '°'),
+  lightElevation: number(-80, 89, 50, '°'),
+  lightIntensity: number(0, 20, 5),
   lightColor: { kind: 'colour', fallback: '#ffffff' },
-  // View
-  split: number(0, 1, 0),
+  // View: the page opens split in two (left without scattering), on the close-up of the face.
+  split: number(0, 1, 0.5),
   view: oneOf(VIEWS, 'final'),
   resolutionScale: number(0.25, 2, 1),
+  shot: oneOf(SHOT_NAMES, 'face'),
   figure: { kind: 'figure', fallback: null },
+  // Set when the camera was moved (orbit) or by a figure; null: the shot, framed to the window.
   camera: { kind: 'camera', fallback: null },
 };
 

@@ -71,3 +71,24 @@ export async function evaluateFloats(page, fn, ...args) {
 export function runLab(page, options) {
   return evaluateFloats(page, (o) => window.lab.run(o), options);
 }
+
+/**
+ * The page as the visitor sees it: a screenshot, decoded by the browser into 8-bit sRGB RGBA,
+ * rows top-down.
+ * @param {import('puppeteer').Page} page
+ * @returns {Promise<{ width: number, height: number, data: Uint8Array }>}
+ */
+export async function screenshotPixels(page) {
+  const png = await page.screenshot({ encoding: 'base64' });
+  const { width, height, bytes } = await page.evaluate(async (data) => {
+    const bitmap = await createImageBitmap(await (await fetch(`data:image/png;base64,${data}`)).blob());
+    const canvas = new OffscreenCanvas(bitmap.width, bitmap.height);
+    const ctx = canvas.getContext('2d');
+    ctx.drawImage(bitmap, 0, 0);
+    const px = ctx.getImageData(0, 0, bitmap.width, bitmap.height).data;
+    let binary = '';
+    for (let i = 0; i < px.length; i += 0x8000) binary += String.fromCharCode(...px.subarray(i, i + 0x8000));
+    return { width: bitmap.width, height: bitmap.height, bytes: btoa(binary) };
+  }, png);
+  return { width, height, data: new Uint8Array(Buffer.from(bytes, 'base64')) };
+}
