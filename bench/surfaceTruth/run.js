@@ -57,13 +57,13 @@ try {
     console.log(`${light.name}: truth over ${info.atlasTexels} atlas texels in ${(info.truthMs / 1000).toFixed(1)} s; truth / unscattered light ${info.truthOverUnscattered.map((v) => v.toFixed(4)).join(', ')}`);
     // The truth's own uncertainty: the same truth from a finer atlas, in the settings' measure.
     const uncertainty = await page.evaluate((size) => window.surfaceTruthBench.truthUncertainty(size), UNCERTAINTY_ATLAS);
-    console.log(`  truth from a ${UNCERTAINTY_ATLAS}² atlas against it: ${Object.entries(uncertainty.relative).map(([k, v]) => `${k} ${v.toFixed(3)}`).join('  ')}`);
+    console.log(`  truth from a ${UNCERTAINTY_ATLAS}² atlas against it: ${Object.entries(uncertainty.relative).map(([k, v]) => `${k} ${v == null ? '—' : v.toFixed(3)}`).join('  ')}`);
     const settings = [];
     for (const [name, options] of SETTINGS.filter(([n]) => !quick || QUICK_SETTINGS.includes(n))) {
       const r = await page.evaluate((o) => window.surfaceTruthBench.measure(o), options);
       if (!name.includes(',')) await png(`heat-${light.name}-${name}`, r.heatMap);
       settings.push({ name, options, relative: r.relative });
-      console.log(`  ${name.padEnd(12)} ${Object.entries(r.relative).map(([k, v]) => `${k} ${v.toFixed(3)}`).join('  ')}`);
+      console.log(`  ${name.padEnd(12)} ${Object.entries(r.relative).map(([k, v]) => `${k} ${v == null ? '—' : v.toFixed(3)}`).join('  ')}`);
     }
     const images = await page.evaluate(() => window.surfaceTruthBench.images({}));
     for (const [k, v] of Object.entries(images)) await png(`image-${light.name}-${k}`, v);
