@@ -56,7 +56,9 @@ async function open({ width, height, lightAzimuthDeg, lightElevationDeg, widthMm
   session = { width, height, renderer, built, mesh, widthMm, truth: null, regions: null };
   const surface = await renderSurface(width, height);
   const unscattered = await renderSetting({ method: 'none' });
-  const { regions, counts } = classifyPixels({ surface, mask: unscattered.diffuse, width, height });
+  const { regions, counts } = classifyPixels({
+    surface, mask: unscattered.diffuse, width, height, cameraPosition: built.camera.position.toArray(), worldUnitInMm: built.worldUnitInMm,
+  });
   session.regions = regions;
 
   const pixels = [];

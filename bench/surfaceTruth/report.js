@@ -5,7 +5,7 @@ import { deviceName } from '../report.js';
 /** A markdown table. */
 const table = (header, rows) => [header, header.map(() => '---'), ...rows].map((r) => `| ${r.join(' | ')} |`).join('\n');
 
-const REGIONS = ['all', 'silhouettes', 'ears', 'eyes', 'lips', 'rest'];
+const REGIONS = ['all', 'silhouettes', 'creases', 'ears', 'eyes', 'lips', 'rest'];
 
 /** One light's table: each screen-space setting's error by region. */
 function lightTable(light) {
@@ -28,7 +28,7 @@ export function surfaceTruthMarkdown(results) {
     const floor = light.uncertainty.relative.all;
     const verdict = byName.default && byName.dense
       ? `The default's error over all pixels is ${byName.default.relative.all.toFixed(3)} of the effect, the dense screen-space reference's ${byName.dense.relative.all.toFixed(3)}; `
-        + `the truth itself moves by ${floor.toFixed(3)} of the effect with its atlas's resolution, so differences between settings smaller than that are not resolved by this truth at this view.`
+        + `the truth itself moves by ${floor.toFixed(3)} of the effect with its atlas's resolution.`
       : '';
     return `## ${light.name[0].toUpperCase()}${light.name.slice(1)} light (azimuth ${light.lightAzimuthDeg}°, elevation ${light.lightElevationDeg}°)
 
@@ -60,19 +60,19 @@ ${view.width}×${view.height}, the speed-accuracy bench's camera, float targets.
 Error: ‖setting − truth‖ / ‖no scattering − truth‖ over each region's pixels (RGB), i.e. the part of
 the effect a setting misses: 0 is the truth, 1 no better than no scattering. Regions
 (bench/surfaceTruth/regions.js): silhouettes (surface within 2 px of a non-subsurface pixel or seen
-at a cosine below 0.3), ears, eyes and lips (boxes on the scan), the rest.
+at a cosine below 0.3), creases (a valley in the view's depth: farther than the pixels 2 px away on
+both sides by 0.5 mm, along x or y: eyelid slits, the lip line, nostrils, ear folds), ears, eyes and
+lips (boxes on the scan), the rest.
 
 ${sections.join('\n')}
 The last three settings before the truth's own row are the default with other depth rules, the
 ideas for creases tried here: letting light cross depth steps helps the creases (lips, eyes) and
 costs more at silhouettes, where it brings light across real depth edges; none helps both.
 
-The truth's own row is the limit of this measure at this view: at 640×360 a pixel of the head
-spans more than a millimetre, so much of the effect (green and blue scatter over fractions of a
-millimetre) is below a pixel, and the truth's sampling of the texture and normal-map detail
-inside a pixel changes with the atlas's resolution by an amount comparable to the effect. A truth
-that resolves the settings needs the camera's pixels prefiltered the same way as the atlas, or a
-closer view (the bench's close-up costs minutes of float64).
+The truth's own row is the resolution of this measure: the same truth from a finer atlas differs
+from it by that much of the effect, so differences between settings smaller than that are not
+resolved. (Before each Gaussian was divided by its own sampled weight, bench/surfaceTruth/scatter.js,
+the atlas's uneven lattice at uv seams moved the truth by about half of the effect.)
 
 What no screen-space method can see: light entering surfaces hidden from the camera (behind a
 silhouette, inside an ear fold) and the true surface area of walls seen edge-on (eyelid slits,
