@@ -202,7 +202,10 @@ function peersSection(json) {
     lines.push('', '![three.js: the head plain and with three-separable-sss at its defaults](bench-three.png)', '',
       '![Babylon.js: the head plain and with its prepass subsurface scattering](bench-babylon.png)', '',
       `The two plain frames agree (${images.images.resolution.replace('x', '×')}): their silhouettes overlap with intersection over union ${plain.silhouetteIoU.toFixed(3)}, ` +
-      `the mean 8-bit luma over the head differs by ${((plain.lumaRatio - 1) * 100).toFixed(1)} % (Babylon against three.js).`);
+      `the mean 8-bit luma over the head differs by ${((plain.lumaRatio - 1) * 100).toFixed(1)} % (Babylon against three.js).` +
+      (images.images.sssChange ? ` Each engine's SSS moves the mean luma over the head by ${images.images.sssChange.three.toFixed(2)} (ours) and ${images.images.sssChange.babylon.toFixed(2)} (Babylon.js) steps of 8 bits. ` : ' ') +
+      "Babylon's image is much blurrier: its shader reads the profile's colour as the scatter distance where it places its samples (out to the 99.7 % radius) but as the Burley shape parameter (1 / distance) where it weights them, so with distances below 1 mm the weights are nearly flat; its prepass composition also puts the clear colour through its image processing (the lifted background). " +
+      'Its cost does not hang on the profile: it takes π (radius in pixels)² / 4 samples per pixel up to its budget of 40, and the head reaches the budget at both resolutions.');
   }
   lines.push('', "Each round times every measure a few frames (after an untimed one), in an order rotated every round; the ratios are taken within each round, then their median and range (min–max) over the rounds. " +
     'Frame: one EXT_disjoint_timer_query_webgl2 query around the whole frame; CPU: the CPU time of the GPU process (SwiftShader renders there) per frame, which a load elsewhere on the machine swells less.', '');
