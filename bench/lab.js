@@ -11,11 +11,11 @@ import {
   ACESFilmicToneMapping, FloatType, HalfFloatType, UnsignedByteType, Vector2, WebGLRenderer, WebGLRenderTarget,
 } from 'three';
 import { EffectComposer } from 'three/addons/postprocessing/EffectComposer.js';
-import { RenderPass } from 'three/addons/postprocessing/RenderPass.js';
 import { OutputPass } from 'three/addons/postprocessing/OutputPass.js';
-import { SubsurfaceScattering, AUTO_SAMPLES, AUTO_REACH, pixelsPerMm } from '/src/index.js';
+import { SubsurfaceScattering, AUTO_SAMPLES, pixelsPerMm, footprintTable } from '/src/index.js';
+import { AUTO_STEP_ERROR, footprintRowOf } from '/src/profiles/footprints.js';
 import { readRenderTargetFloats } from '/dev/readback.js';
-import { GpuStageTimer, median } from '/dev/gpuTimer.js';
+import { GpuStageTimer } from '/dev/gpuTimer.js';
 import { radianceErrors, maskedSsim } from '/dev/metrics.js';
 import { buildScene } from './scenes.js';
 import { drawChart } from './chart.js';
@@ -36,8 +36,8 @@ function info() {
     version: gl.getParameter(gl.VERSION),
     timerQuery: gl.getExtension('EXT_disjoint_timer_query_webgl2') !== null,
     hardwareConcurrency: navigator.hardwareConcurrency,
-    autoSamples: AUTO_SAMPLES, // the tap levels samples 'auto' chooses from
-    autoReach: AUTO_REACH, // its rule: (taps - 3) / 2 >= autoReach x the estimated radius
+    autoSamples: AUTO_SAMPLES, // the tap levels 'auto' chooses from for the fixed-tap methods
+    autoStepError: AUTO_STEP_ERROR, // 'footprint' with 'auto': per pixel the fewest taps within this step-edge error
   };
   renderer.dispose();
   renderer.forceContextLoss();
@@ -81,7 +81,8 @@ async function open({ scene, width, height, float = false, widthMm, tiltDeg }) {
 
 function close() {
   if (!session) return;
-  const { sss, composer, ldr, outputPass, renderer, timer } = session;
+  const { sss, composer, ldr, outputPass, renderer, timer, peers } = session;
+  peers?.dispose();
   timer.dispose();
   sss.dispose();
   composer.dispose();
@@ -151,6 +152,35 @@ async function reference({ profile, coverage = 0.997 }) {
   return { ms, radiusPx, radiusMm: dense.radiusMm, subsurfacePixels: mask.filter((m) => m > 0).length };
 }
 
+/**
+ * The taps per direction samples 'auto' allocates to the subsurface pixels of the last frame: per
+ * pixel and axis, the footprint table's count for the row of the pixel's scale (the shader's row;
+ * the grazing-angle correction can only lower the scale, so these are upper bounds).
+ * @returns {Promise<{ mean: number, max: number, min: number }>} over pixels and both axes
+ */
+async function autoTaps() {
+  const { renderer, sss, built, width, height } = session;
+  const profile = sss.profileLookup.profile;
+  session.autoTables ??= new Map();
+  if (!session.autoTables.has(profile)) session.autoTables.set(profile, footprintTable((x) => sss.profileLookup.marginalEnergy(x), 'auto'));
+  const { samples } = session.autoTables.get(profile);
+  const surface = await readRenderTargetFloats(renderer, sss.scenePass.renderTarget, 2);
+  const p = built.camera.projectionMatrix.elements;
+  let sum = 0, count = 0, max = 0, min = Infinity;
+  for (let i = 0; i < width * height; i++) {
+    const widthWorld = surface[i * 4 + 1];
+    if (!(widthWorld > 0)) continue;
+    for (const [scale, size] of [[p[0], width], [p[5], height]]) {
+      const taps = samples[footprintRowOf(pixelsPerMm(widthWorld, surface[i * 4], scale, size))];
+      sum += taps;
+      count++;
+      max = Math.max(max, taps);
+      min = Math.min(min, taps);
+    }
+  }
+  return { mean: sum / count, max, min };
+}
+
 /** Renders `count` whole frames with a 1-pixel read-back fence each; returns their wall times. */
 function timeFrames(count) {
   const { renderer, composer } = session;
@@ -214,11 +244,13 @@ async function measure({ kind, profile, method, samples, coverage, frames, sssFr
     const dense = useDense(coverage);
     Object.assign(row, { method: 'dense', samples: null, coverage, radiusMm: dense.radiusMm });
   } else {
-    // 'auto': the module picks the taps from the on-screen kernel size when the frame starts.
+    // 'auto': 'footprint' picks per pixel; the fixed-tap methods per frame, when the frame starts.
     const auto = samples === 'auto';
     sss.setKernel({ method, samples });
     if (auto) composer.render();
-    Object.assign(row, { method, samples: sss.kernel.length / 4, auto });
+    const perPixel = auto && method === 'footprint';
+    Object.assign(row, { method, samples: perPixel ? 'auto' : sss.kernel.length / 4, auto });
+    if (perPixel) row.taps = await autoTaps();
   }
   if (errors) {
     const ref = session.references.get(profile);
@@ -241,6 +273,23 @@ async function measure({ kind, profile, method, samples, coverage, frames, sssFr
     timer.recording = false;
   }
   return row;
+}
+
+/**
+ * Re-runs the SSS stage of the current setting `count` times over the last frame's scene split,
+ * timed by the stage timer (bench/run.js reads the GPU process's CPU clock around this call).
+ * @returns {Promise<{ gpuMs: number[], sssWallMs: number[] }>}
+ */
+async function timeSss({ count }) {
+  const { timer } = session;
+  timer.recording = true;
+  try {
+    const sssWallMs = timeSssStage(count);
+    await nextTask();
+    return { gpuMs: sssTimes(await timer.collect()), sssWallMs };
+  } finally {
+    timer.recording = false;
+  }
 }
 
 /**
@@ -268,41 +317,33 @@ async function readDense({ profile, coverage = 0.997, followSurface = 'drop', fo
   };
 }
 
-/**
- * Per-stage GPU times of whole frames of the pipeline as it stands, and of a plain three.js frame
- * (a RenderPass of the same scene into the same kind of composer), interleaved frame by frame.
- * @param {{ frames?: number }} [options]
- * @returns {Promise<{ stages: object, plainMs: number, frames: number }>} medians, ms
- */
-async function breakdown({ frames = 9 } = {}) {
-  const { renderer, built, composer, timer, sss } = session;
-  const plain = new EffectComposer(renderer, composer.readBuffer.clone());
-  plain.renderToScreen = false;
-  plain.addPass(new RenderPass(built.scene, built.camera));
-  plain.render();
-  composer.render();
-  await timer.collect();
-  const times = [];
-  timer.recording = true;
-  try {
-    for (let i = 0; i < frames; i++) {
-      composer.render();
-      timer.begin('plain');
-      plain.render();
-      timer.end('plain');
-      await nextTask();
-      times.push(...await timer.collect());
-    }
-  } finally {
-    timer.recording = false;
-    plain.renderTarget1.dispose();
-    plain.renderTarget2.dispose();
+/** The peers of the open head scene (bench/peers.js), built on first use: Babylon.js loads only then. */
+async function peersOf() {
+  if (!session.built.rig) throw new Error(`peers: only the head scene has them, not ${session.scene}`);
+  if (!session.peers) {
+    const { openPeers } = await import('./peers.js');
+    session.peers = await openPeers(session);
   }
-  const byStage = {};
-  for (const { stage, ms } of times) (byStage[stage] ??= []).push(ms);
-  const stages = Object.fromEntries(Object.entries(byStage).map(([stage, list]) => [stage, median(list)]));
-  return { stages, frames, kernelPixels: sss.kernelPixels, samples: sss.kernel.length / 4 };
+  return session.peers;
 }
 
-window.bench = { info, open, close, reference, measure, readDense, breakdown, drawChart };
+/** Each engine's image, plain and with its SSS, tone-mapped 8-bit (see bench/peers.js's peerImages). */
+async function peerImages() {
+  const { peerImages: images } = await import('./peers.js');
+  return images(await peersOf(), session);
+}
+
+/** The floor pass's input and output (bench/peers.js's floorImages). */
+async function peerFloorImages() {
+  const { floorImages } = await import('./peers.js');
+  return floorImages(await peersOf(), session);
+}
+
+/** A few timed frames of one peer measure (bench/peers.js's peerMeasure); bench/run.js interleaves them. */
+async function peerMeasure(options) {
+  const { peerMeasure: measurePeer } = await import('./peers.js');
+  return measurePeer(await peersOf(), session, options);
+}
+
+window.bench = { info, open, close, reference, measure, readDense, timeSss, peerImages, peerFloorImages, peerMeasure, drawChart };
 window.testReady = true;

@@ -129,6 +129,7 @@ async function heads({ aspect, count = 1 }) {
   return {
     scene: rig.scene, camera: rig.camera, light: rig.light, subsurface: [rig.head.material],
     worldUnitInMm: HEAD_WORLD_UNIT_IN_MM, widthMm: 1, isStandIn: loaded.isStandIn,
+    rig: count === 1 ? rig : null, // what bench/babylonHead.js copies (one head only)
   };
 }
 

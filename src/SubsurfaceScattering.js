@@ -27,10 +27,10 @@ import { FrameChecks, checkTargetSize, checkTargetLimits } from './support/frame
 import {
   FOLLOW_SURFACE_MODES, MAX_MULTISAMPLING, MAX_SCALE_MM, METHODS, MIN_SCALE_MM, PIPELINE_DEFAULTS, PIPELINE_OPTIONS,
 } from './options.js';
-import { estimatePixelsPerMm, planFrame } from './framePlan.js';
+import { estimatePixelsPerMm, nearestViewDepth, planFrame } from './framePlan.js';
 import { LightDepthTarget } from './1-light-depth/LightDepthTarget.js';
 import { PipelineMaterials } from './2-scene-split/PipelineMaterials.js';
-import { isShining } from './2-scene-split/transmittance.js';
+import { isShining, lightFromBehind } from './2-scene-split/transmittance.js';
 import { SubsurfaceScenePass } from './2-scene-split/SubsurfaceScenePass.js';
 import { BlurStage } from './3-blur/BlurStage.js';
 import { SubsurfaceComposePass } from './4-compose/SubsurfaceComposePass.js';
@@ -313,9 +313,12 @@ export class SubsurfaceScattering extends Pass {
     checks.scene(scene);
     const lightWorks = this.lightDepth !== null && checks.light(this.lightDepth, scene, this._transmittance);
     checks.end();
-    // 1. Light depth: linear depth seen from the light, for transmittance (not for a light that is off).
-    if (lightWorks && isShining(this.lightDepth.light, scene, camera)) {
+    // 1. Light depth: linear depth seen from the light, for transmittance (not for a light that is
+    //    off, nor one that reaches no subsurface mesh from behind: its map would go unread).
+    if (lightWorks && isShining(this.lightDepth.light, scene, camera) && this._transmits(scene, camera)) {
       this._stage('lightDepth', () => this.lightDepth.render(renderer, scene));
+    } else {
+      this.lightDepth?.invalidate();
     }
     // 2. Scene split: the opaque scene into the multi-target (colour | diffuse | surface | depth),
     //    multisampled as asked (or as the composer's buffer is).
@@ -359,6 +362,28 @@ export class SubsurfaceScattering extends Pass {
     } finally {
       this.stageTimer?.end(name);
     }
+  }
+
+  /**
+   * Whether the light can send transmitted light to a subsurface mesh of this pipeline this frame
+   * (lightFromBehind at each one's nearest point); the thickness view always reads the map.
+   * @private
+   */
+  _transmits(scene, camera) {
+    if (materialOutputOf(this.composePass.debugView) === 'thickness') return true;
+    // The matrices as the scene split's render will see them (three updates them the same way).
+    if (scene.matrixWorldAutoUpdate === true) scene.updateMatrixWorld();
+    if (camera.parent === null && camera.matrixWorldAutoUpdate === true) camera.updateMatrixWorld();
+    const { light } = this.lightDepth;
+    light.updateMatrixWorld();
+    light.target.updateMatrixWorld();
+    let transmits = false;
+    scene.traverseVisible((object) => {
+      if (transmits || !object.isMesh) return;
+      const materials = Array.isArray(object.material) ? object.material : [object.material];
+      if (materials.some((m) => this.subsurfaceMaterials.entries.get(m)?.options.transmittance) && lightFromBehind(light, camera, nearestViewDepth(object, camera))) transmits = true;
+    });
+    return transmits;
   }
 
   /** @private */

@@ -42,6 +42,28 @@ export function planFrame(frame) {
 }
 
 /**
+ * The view depth of `mesh`'s bounding box corner nearest the camera: no point of the mesh is
+ * nearer (world units; instanced and skinned meshes use their own boxes: all instances, the posed
+ * skin). The one place both frame-level bounds (the kernel's reach, whether light can come
+ * through from behind) take a mesh's extent from.
+ * @param {import('three').Mesh} mesh
+ * @param {import('three').Camera} camera (matrixWorldInverse up to date)
+ * @returns {number}
+ */
+export function nearestViewDepth(mesh, camera) {
+  if (typeof mesh.computeBoundingBox === 'function' && !mesh.boundingBox) mesh.computeBoundingBox();
+  if (!mesh.geometry.boundingBox) mesh.geometry.computeBoundingBox();
+  const { min, max } = mesh.boundingBox ?? mesh.geometry.boundingBox;
+  let nearest = Infinity;
+  for (let corner = 0; corner < 8; corner++) {
+    _corner.set(corner & 1 ? max.x : min.x, corner & 2 ? max.y : min.y, corner & 4 ? max.z : min.z);
+    _corner.applyMatrix4(mesh.matrixWorld).applyMatrix4(camera.matrixWorldInverse);
+    nearest = Math.min(nearest, -_corner.z);
+  }
+  return nearest;
+}
+
+/**
  * An upper bound on the on-screen size of a profile millimetre over `meshes`: each mesh's
  * bounding box corner nearest the camera, with the largest width its subsurface materials write.
  * @param {Iterable<import('three').Mesh>} meshes the meshes drawn with a subsurface material
@@ -56,17 +78,7 @@ export function estimatePixelsPerMm(meshes, camera, { width, height }, widthWorl
   const perspective = isPerspective(camera);
   let largest = 0;
   for (const mesh of meshes) {
-    // Instanced and skinned meshes have boxes of their own (all instances, the posed skin).
-    if (typeof mesh.computeBoundingBox === 'function' && !mesh.boundingBox) mesh.computeBoundingBox();
-    if (!mesh.geometry.boundingBox) mesh.geometry.computeBoundingBox();
-    const { min, max } = mesh.boundingBox ?? mesh.geometry.boundingBox;
-    let nearest = Infinity;
-    for (let corner = 0; corner < 8; corner++) {
-      _corner.set(corner & 1 ? max.x : min.x, corner & 2 ? max.y : min.y, corner & 4 ? max.z : min.z);
-      _corner.applyMatrix4(mesh.matrixWorld).applyMatrix4(camera.matrixWorldInverse);
-      nearest = Math.min(nearest, -_corner.z);
-    }
-    const depth = perspective ? Math.max(nearest, camera.near ?? 1e-6) : 1;
+    const depth = perspective ? Math.max(nearestViewDepth(mesh, camera), camera.near ?? 1e-6) : 1;
     for (const material of Array.isArray(mesh.material) ? mesh.material : [mesh.material]) {
       const widthWorld = widthWorldOf(material);
       if (widthWorld === undefined) continue;

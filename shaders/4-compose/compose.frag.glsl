@@ -29,10 +29,10 @@ void main() {
 	#endif
 	gl_FragDepth = depth;
 	vec4 light = texelFetch( tColor, pixel, 0 );
-	vec2 surface = texelFetch( tSurface, pixel, 0 ).rg;
 	vec4 unscattered = texelFetch( tDiffuse, pixel, 0 );
 	bool subsurface = unscattered.a > 0.0;
-	vec3 diffuse = gl_FragCoord.x < splitX ? unscattered.rgb : texelFetch( tScattered, pixel, 0 ).rgb;
+	// Only subsurface pixels read the scattered light (most of a frame is not skin).
+	vec3 diffuse = ! subsurface ? vec3( 0.0 ) : gl_FragCoord.x < splitX ? unscattered.rgb : texelFetch( tScattered, pixel, 0 ).rgb;
 	vec3 colour;
 	#if DEBUG_VIEW == DEBUG_VIEW_FINAL
 		colour = light.rgb + ( subsurface ? diffuse : vec3( 0.0 ) );
@@ -41,7 +41,8 @@ void main() {
 	#elif DEBUG_VIEW == DEBUG_VIEW_SPECULAR
 		colour = subsurface ? light.rgb : vec3( 0.0 );
 	#elif DEBUG_VIEW == DEBUG_VIEW_DEPTH
-		colour = vec3( surface.r > 0.0 ? 1.0 - surface.r / debugDepthRange : 0.0 );
+		float viewDepth = texelFetch( tSurface, pixel, 0 ).r;
+		colour = vec3( viewDepth > 0.0 ? 1.0 - viewDepth / debugDepthRange : 0.0 );
 	#elif DEBUG_VIEW == DEBUG_VIEW_MASK
 		colour = vec3( subsurface ? 1.0 : 0.0 );
 	#elif DEBUG_VIEW == DEBUG_VIEW_THICKNESS

@@ -76,7 +76,17 @@ export class LightDepthTarget {
     /** @type {Map<import('three').Material, ShaderMaterial>} depth materials of cut-out or clipped materials */
     this._shaped = new Map();
     this._onMaterialDispose = (event) => this._forget(event.target);
+    /**
+     * Whether the map holds the scene as last rendered: false until the first render and after
+     * `invalidate()`; materials send no transmittance from a map that does not.
+     */
+    this.valid = false;
     this.setSize(size);
+  }
+
+  /** Marks the map out of date (its pass was skipped this frame): no transmittance until the next render. */
+  invalidate() {
+    this.valid = false;
   }
 
   /** The linear light depth, world units (R channel). */
@@ -224,6 +234,7 @@ export class LightDepthTarget {
         renderer.autoClear = false;
         renderer.clear(true, true, false);
         renderer.render(scene, this.camera);
+        this.valid = true;
       } finally {
         for (const [object, material] of swapped) object.material = material;
       }

@@ -148,8 +148,8 @@ function applyBinding(uniforms, binding, scene, camera) {
   uniforms.sssDebugOutput.value = MATERIAL_OUTPUTS.indexOf(binding.debugOutput);
   uniforms.sssTransmits.value = false;
   if (!transmittance || !scene || !camera) return;
-  const { light } = transmittance.lightDepth;
-  uniforms.sssTransmits.value = isShining(light, scene, camera);
+  const { light, valid } = transmittance.lightDepth;
+  uniforms.sssTransmits.value = valid && isShining(light, scene, camera);
   uniforms.sssLightType.value = LIGHT_TYPES.indexOf(light.isSpotLight ? 'spot' : 'directional');
   updateLightUniforms(uniforms, light, scene, camera);
   writeTransmittanceUniforms(uniforms, transmittance, camera);

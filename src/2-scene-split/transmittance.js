@@ -126,6 +126,25 @@ export function isShining(light, scene, camera) {
   return node.visible && node === scene;
 }
 
+/**
+ * Whether `light` can send transmitted light to any point of a mesh whose nearest point lies
+ * `nearestDepth` in front of `camera` (nearestViewDepth). The material transmits only light that
+ * comes from behind the point as the camera sees it (shaders/2-scene-split/material/
+ * transmittedLight.glsl: smoothstep(0, 0.25, −toLight.z), in view space), so none reaches a mesh
+ * while a spot light is no farther along the view axis than its nearest point, or while a
+ * directional light shines from the camera's side. Then its light depth pass can be skipped.
+ * @param {import('three').SpotLight|import('three').DirectionalLight} light (world matrices up to date)
+ * @param {import('three').Camera} camera (matrixWorldInverse up to date)
+ * @param {number} nearestDepth world units
+ */
+export function lightFromBehind(light, camera, nearestDepth) {
+  const view = camera.matrixWorldInverse;
+  _position.setFromMatrixPosition(light.matrixWorld);
+  if (light.isSpotLight) return -_position.applyMatrix4(view).z > nearestDepth;
+  _direction.setFromMatrixPosition(light.target.matrixWorld);
+  return _direction.subVectors(_position, _direction).transformDirection(view).z < 0;
+}
+
 /** The uniform objects of the light the hooked material shades transmittance with. */
 export function lightUniformSlots() {
   return {

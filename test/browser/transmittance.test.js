@@ -240,6 +240,62 @@ describe('transmittance artifacts', () => {
     expect(r.side).toBeLessThan(1e-3);
   });
 
+  it('a light on the camera\'s side of every subsurface mesh skips the light depth pass and changes nothing; behind a mesh the pass runs, and moving back and forth leaves no stale map', async () => {
+    const r = await page.evaluate(async () => {
+      const { THREE, SSS, createRenderer, createComposer, read } = window.lab;
+      const renderer = createRenderer(64, 64);
+      const scene = new THREE.Scene();
+      const camera = new THREE.PerspectiveCamera(30, 1, 0.01, 10);
+      camera.position.set(0, 0, 0.4);
+      const skin = new THREE.MeshStandardMaterial({ color: 0xffffff, roughness: 0.6 });
+      const slab = new THREE.Mesh(new THREE.BoxGeometry(0.2, 0.2, 0.002), skin); // 2 mm: light comes through
+      scene.add(slab);
+      const light = new THREE.SpotLight(0xffffff, 20, 0, Math.PI / 6, 0, 0);
+      Object.assign(light.shadow.camera, { near: 0.05, far: 2 });
+      scene.add(light, light.target);
+      const sss = new SSS.SubsurfaceScattering({ scene, camera, light, worldUnitInMm: 1000 });
+      sss.makeSubsurface(skin);
+      const composer = createComposer(renderer, { type: THREE.FloatType });
+      composer.addPass(sss);
+      let stages = [];
+      sss.stageTimer = { begin: (stage) => stages.push(stage), end: () => {} };
+      // The slab's front face is 1 mm in front of z = 0: a light at z ≥ 0.001 is on the camera's side of all of it.
+      const frame = async (z, transmittance = true) => {
+        light.position.set(0.05, 0.02, z);
+        sss.setTransmittance(transmittance);
+        stages = [];
+        composer.render();
+        return { diffuse: await read(renderer, sss.scenePass.renderTarget, 1), lightDepth: stages.includes('lightDepth') };
+      };
+      const worst = (a, b) => a.diffuse.reduce((m, v, i) => Math.max(m, Math.abs(v - b.diffuse[i])), 0);
+      const brightest = (a) => Math.max(...a.diffuse.filter((_, i) => i % 4 !== 3));
+      const behind = await frame(-0.3);
+      const behindOff = await frame(-0.3, false);
+      const front = await frame(0.3);
+      const frontOff = await frame(0.3, false);
+      const grazing = await frame(0.0011); // just in front of the front face
+      const behindAgain = await frame(-0.3);
+      sss.setDebugView('thickness');
+      const thickness = await frame(0.3);
+      sss.dispose();
+      composer.dispose();
+      return {
+        behindPass: behind.lightDepth, frontPass: front.lightDepth, grazingPass: grazing.lightDepth, thicknessPass: thickness.lightDepth,
+        glow: brightest(behind) - brightest(behindOff), frontChange: worst(front, frontOff), backAgain: worst(behind, behindAgain),
+        grazingLit: brightest(grazing), thicknessMax: brightest(thickness),
+      };
+    });
+    expect(r.behindPass).toBe(true);
+    expect(r.glow).toBeGreaterThan(0.05); // 2 mm of skin lets red through
+    expect(r.frontPass).toBe(false);
+    expect(r.frontChange).toBe(0); // the model sends no light from the camera's side: exactly as without transmittance
+    expect(r.grazingPass).toBe(false);
+    expect(r.grazingLit).toBeGreaterThan(0); // the slab is still lit from the front
+    expect(r.backAgain).toBe(0); // the map skipped in between is rendered again, not read stale
+    expect(r.thicknessPass).toBe(true); // the thickness view reads the map whatever the light
+    expect(r.thicknessMax).toBeGreaterThan(0);
+  });
+
   it('with a wide spot cone (36°) behind the head, no single lit pixels: the light map is read with bilinear weights (version 0.1: about 100)', async () => {
     const demo = await openPage('/?still', { width: 640, height: 360 });
     const r = await demo.evaluate(async () => {

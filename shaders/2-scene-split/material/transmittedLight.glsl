@@ -21,10 +21,15 @@
 		// neighbourhood, which the blur already spreads: counted again it made a bright band
 		// along a front light's terminator.
 		float sssWrap = saturate( 0.3 + dot( - nonPerturbedNormal, sssToLight ) ) * smoothstep( 0.0, 0.25, - sssToLight.z );
-		sssThicknessMm = sssThicknessWorld( sssPosition, nonPerturbedNormal ) * sssThicknessToProfileMm;
-		sssTransmitted = sssLightColor * ( sssAttenuation * sssWrap )
-			* sssTransmittance( sssPosition, nonPerturbedNormal ) * BRDF_Lambert( material.diffuseColor );
-		// A degenerate light set-up must not turn the whole material NaN (outside the pipeline too).
-		if ( ! sssFinite( sssTransmitted ) ) sssTransmitted = vec3( 0.0 );
-		reflectedLight.directDiffuse += sssTransmitted;
+		// Most of a front-lit surface gets none (sssWrap is 0 wherever the light is on the camera's
+		// side of the point): the map and the profile are read only where some light comes through.
+		float sssWeight = sssAttenuation * sssWrap;
+		if ( sssWeight > 0.0 ) {
+			sssTransmitted = sssLightColor * sssWeight
+				* sssTransmittance( sssPosition, nonPerturbedNormal ) * BRDF_Lambert( material.diffuseColor );
+			// A degenerate light set-up must not turn the whole material NaN (outside the pipeline too).
+			if ( ! sssFinite( sssTransmitted ) ) sssTransmitted = vec3( 0.0 );
+			reflectedLight.directDiffuse += sssTransmitted;
+		}
+		if ( sssDebugOutput == SSS_OUTPUT_THICKNESS ) sssThicknessMm = sssThicknessWorld( sssPosition, nonPerturbedNormal ) * sssThicknessToProfileMm;
 	}

@@ -1,0 +1,35 @@
+// What the bench's side-by-side measures (shared by the page, bench/peers.js, and the runner,
+// bench/peerRun.js; no imports, so it loads in both).
+
+/** The four frames: three.js alone, ours (defaults), Babylon.js alone, Babylon.js with its SSS. */
+export const VARIANTS = Object.freeze(['threePlain', 'ours', 'babylonPlain', 'babylonSss']);
+
+/** The stages of the pipeline as its stageTimer names them (src/SubsurfaceScattering.js). */
+export const STAGES = Object.freeze(['lightDepth', 'scene', 'blurH', 'blurV', 'compose', 'transparent']);
+
+/**
+ * What one round times, a few frames each: the four frames; 'stages', frames of ours timed stage
+ * by stage; 'blur', its two blur passes re-run over the last scene split; 'floor', the fetch-only
+ * floor's two passes over the same pixels.
+ */
+export const PEER_MEASURES = Object.freeze([...VARIANTS, 'stages', 'blur', 'floor']);
+
+/**
+ * What version 0.2 added to a frame, each measured against the frame without it: MSAA 4 in the
+ * scene split (`multisampling`), a transparent object (drawn after the compose), and the compose's
+ * depth write (the scene's depth handed on to later passes). Timed on ours frame by frame
+ * ('stages') and on the plain three.js frame (`threePlain`) alike.
+ */
+export const ADDITIONS = Object.freeze(['msaa4', 'transparent', 'noDepthWrite']);
+
+/**
+ * Issue 10's optimizations, each undone for the measure (so the frame without them is timed next
+ * to the frame with them, in the same rounds): lightDepthEveryFrame draws the light depth pass
+ * every frame, as before it was skipped while the light reaches no subsurface mesh from behind;
+ * composeAsBefore runs the compose shader as it was before it fetched less (the scattered light
+ * at every pixel, the surface attachment always).
+ */
+export const UNDONE_OPTIMIZATIONS = Object.freeze(['lightDepthEveryFrame', 'composeAsBefore']);
+
+/** Everything the features block switches, one at a time. */
+export const FEATURES = Object.freeze([...ADDITIONS, ...UNDONE_OPTIMIZATIONS]);
