@@ -135,3 +135,9 @@ export function autoAgainstFixed(results, time = 'gpuMs') {
   }
   return out;
 }
+
+/** A short name for the renderer string ('SwiftShader' or the GPU's). */
+export function deviceName(webgl) {
+  if (/swiftshader/i.test(webgl.renderer)) return 'SwiftShader (CPU)';
+  return webgl.renderer.replace(/^ANGLE \(([^,]+), ([^,]+).*$/, '$2');
+}

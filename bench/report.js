@@ -1,7 +1,8 @@
 // Turns the bench's JSON into the chart's data and docs/BENCH.md (whose first section is meant to
 // be pasted into the README). Every number comes from the results; nothing is typed in by hand.
+import { surfaceTruthSummary } from './surfaceTruth/report.js';
 import {
-  autoAgainstFixed, dominates, isDefaultSetting, median, paretoFront, percent as pct, ratio, rowsOf, SAME_ERROR, SATURATION, settingName, spread, table,
+  autoAgainstFixed, deviceName, dominates, isDefaultSetting, median, paretoFront, percent as pct, ratio, rowsOf, SAME_ERROR, SATURATION, settingName, spread, table,
 } from './analysis.js';
 
 const MAIN = { scene: 'head', resolution: '1280x720' };
@@ -28,11 +29,6 @@ function autoNote(rows) {
     : ': no fixed budget measured reaches its error';
 }
 
-/** A short name for the renderer string ('SwiftShader' or the GPU's). */
-export function deviceName(webgl) {
-  if (/swiftshader/i.test(webgl.renderer)) return 'SwiftShader (CPU)';
-  return webgl.renderer.replace(/^ANGLE \(([^,]+), ([^,]+).*$/, '$2');
-}
 
 /** The Pareto front of each profile's rows: errors of different profiles are against different references. */
 export function frontsByProfile(rows) {
@@ -303,7 +299,32 @@ function featuresSection(json) {
  * @param {object} json the results file's content
  * @returns {string}
  */
-export function benchMarkdown(json) {
+/**
+ * The two measures beyond the dense reference, from their own runs' results when present:
+ * bench/transfer/run.js (gratings against the analytic transfer) and bench/surfaceTruth/run.js.
+ */
+function beyondDenseSection({ transfer, surfaceTruth } = {}) {
+  if (!transfer && !surfaceTruth) return '';
+  const parts = ['## Beyond the dense reference', ''];
+  if (transfer) {
+    const worst = (profile) => Math.max(...transfer.measurements.filter((m) => m.profile === profile).map((m) => m.worst));
+    const profiles = [...new Set(transfer.measurements.map((m) => m.profile))];
+    const scales = [...new Set(transfer.measurements.map((m) => m.pxPerMm))];
+    parts.push(`**Transfer** (\`npm run bench:transfer\`, ${transfer.date.slice(0, 10)}): cosine gratings of albedo on a flat plane at ${scales.join(', ')} px/mm, the default's measured modulation transfer against the analytic one (the profile marginal's Fourier transform), per channel; worst difference ${profiles.map((p) => `${p} ${worst(p).toFixed(3)}`).join(', ')}.`,
+      '', '![Measured against analytic transfer per channel](transfer.svg)', '');
+  }
+  if (surfaceTruth) {
+    parts.push(`**Surface-space truth** (\`npm run bench:truth\`, ${surfaceTruth.date.slice(0, 10)}; details, heat maps and the depth-rule variants in [SURFACE-TRUTH.md](SURFACE-TRUTH.md)): the head's light summed over its own surface in float64 at ${surfaceTruth.view.width}×${surfaceTruth.view.height}; error ‖setting − truth‖ / ‖no scattering − truth‖ (0: the truth, 1: no better than no scattering).`,
+      '', surfaceTruthSummary(surfaceTruth), '');
+  }
+  return parts.join('\n');
+}
+
+/**
+ * @param {object} json bench/results/<name>.json
+ * @param {{ transfer?: object, surfaceTruth?: object }} [beyond] the other runs' results (see beyondDenseSection)
+ */
+export function benchMarkdown(json, beyond = {}) {
   const { results } = json;
   const main = rowsOf(results, MAIN.scene, MAIN.resolution);
   const skin = main.filter((r) => r.profile === 'skin');
@@ -354,6 +375,8 @@ ${fronts.map(({ profile, rows }) => `Pareto front of the ${profile} settings, fa
 ${table(key)}
 
 Error: against the dense 2D reference (\`DenseSubsurfacePass\`: brute-force 2D convolution with the full radial profile, exact pixel energies, 99.7 % of the energy) of the same profile, over subsurface pixels, linear radiance; SSIM on the tone-mapped 8-bit output. Time: median of timer queries around the SSS passes only (${device}${/SwiftShader/.test(device) ? ': CPU times, compare them as ratios' : ''}); frame: a whole composer frame with a read-back fence. Reproduce with \`npm run bench\` (about ${Math.ceil(json.durationS / 60)} minutes here; \`npm run bench -- --quick\` in under 2).
+
+${beyondDenseSection(beyond)}
 
 ${peersSection(json)}
 

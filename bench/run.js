@@ -287,7 +287,8 @@ async function main() {
   log(`wrote ${reportOnly ? '' : `${relative(root, jsonPath)} and `}${relative(root, chartPath)}`);
   // The full run's report is docs/BENCH.md; a quick or GPU run's goes beside its results.
   const markdownPath = quick || gpu ? join(outDir, `${name}.md`) : join(root, 'docs/BENCH.md');
-  await writeFile(markdownPath, benchMarkdown(json));
+  const resultOf = async (file) => JSON.parse(await readFile(join(root, 'bench/results', file), 'utf8').catch(() => 'null'));
+  await writeFile(markdownPath, benchMarkdown(json, { transfer: await resultOf('transfer.json'), surfaceTruth: await resultOf('surface-truth.json') }));
   log(`wrote ${relative(root, markdownPath)}`);
   for (const p of json.peers ?? []) {
     const { overhead } = p.summary;

@@ -1,6 +1,6 @@
 // docs/SURFACE-TRUTH.md from bench/results/surface-truth.json (bench/surfaceTruth/run.js): every
 // number comes from the results.
-import { deviceName } from '../report.js';
+import { deviceName } from '../analysis.js';
 
 /** A markdown table. */
 const table = (header, rows) => [header, header.map(() => '---'), ...rows].map((r) => `| ${r.join(' | ')} |`).join('\n');
@@ -15,6 +15,21 @@ function lightTable(light) {
   const { uncertainty } = light;
   rows.push([`*the truth itself: from a ${uncertainty.atlasSize}² atlas instead of ${light.atlasSize}²*`, ...REGIONS.map((r) => `*${uncertainty.relative[r].toFixed(3)}*`)]);
   return table(['setting', ...REGIONS.map((r) => `${r} (${r === 'all' ? light.pixels : light.regionPixels[r]} px)`)], rows);
+}
+
+/**
+ * The short form for docs/BENCH.md: the default, the dense reference and the reference kernel per
+ * light, over all pixels and the regions where screen space fails, beside the truth's resolution.
+ * @param {object} results bench/results/surface-truth.json
+ */
+export function surfaceTruthSummary(results) {
+  const regions = ['all', 'silhouettes', 'creases', 'rest'];
+  const rows = results.lights.flatMap((light) => [
+    ...['default', 'dense', 'reference17'].map((name) => light.settings.find((s) => s.name === name)).filter(Boolean)
+      .map((s) => [light.name, s.name, ...regions.map((r) => s.relative[r].toFixed(3))]),
+    [light.name, '*the truth from a finer atlas*', ...regions.map((r) => `*${light.uncertainty.relative[r].toFixed(3)}*`)],
+  ]);
+  return table(['light', 'setting', ...regions], rows);
 }
 
 /**
