@@ -37,26 +37,33 @@ export class TimingsHud {
     this.fps.innerHTML = `<b>${fps}</b> fps <span class="hud-sub" title="CPU time of the render call">· render() ${cpu} ms</span>`;
     const stages = STAGES.filter((s) => Number.isFinite(t[s]));
     const total = stages.reduce((sum, s) => sum + t[s], 0);
-    this.passes.replaceChildren(...stages.map((s) => {
-      const row = document.createElement('div');
-      row.className = 'hud-pass';
-      row.dataset.stage = s;
+    const row = (s) => {
+      const skipped = t.skipped.includes(s);
+      const element = document.createElement('div');
+      element.className = skipped ? 'hud-pass hud-skipped' : 'hud-pass';
+      element.dataset.stage = s;
+      if (skipped) {
+        element.title = s === 'lightDepth'
+          ? 'not run this frame: the light reaches no subsurface mesh from behind (or transmittance is off), so no map is needed'
+          : 'not run this frame';
+      }
       const name = document.createElement('span');
       name.textContent = NAMES[s];
       const bar = document.createElement('span');
       bar.className = 'hud-bar';
-      bar.style.setProperty('--share', total > 0 ? (t[s] / total).toFixed(3) : '0');
+      bar.style.setProperty('--share', !skipped && total > 0 ? (t[s] / total).toFixed(3) : '0');
       const ms = document.createElement('span');
       ms.className = 'hud-ms';
-      ms.textContent = format(t[s]);
-      row.append(name, bar, ms);
-      return row;
-    }));
+      ms.textContent = skipped ? 'skipped' : format(t[s]);
+      element.append(name, bar, ms);
+      return element;
+    };
+    this.passes.replaceChildren(...STAGES.filter((s) => stages.includes(s) || t.skipped.includes(s)).map(row));
     if (stages.length > 1) {
-      const row = document.createElement('div');
-      row.className = 'hud-pass hud-total';
-      row.innerHTML = `<span>all passes</span><span class="hud-bar"></span><span class="hud-ms">${format(total)}</span>`;
-      this.passes.append(row);
+      const totalRow = document.createElement('div');
+      totalRow.className = 'hud-pass hud-total';
+      totalRow.innerHTML = `<span>all passes</span><span class="hud-bar"></span><span class="hud-ms">${format(total)}</span>`;
+      this.passes.append(totalRow);
     }
     this.drawPlot();
   }

@@ -29,6 +29,7 @@ export class PassTimings {
   constructor(renderer, sss) {
     this.stages = new GpuStageTimer(renderer, { window: WINDOW });
     sss.stageTimer = this.stages;
+    this.sss = sss;
     this.renderer = rendererName(renderer.getContext());
     this.software = isSoftwareRenderer(this.renderer);
     this.frameTimes = [];
@@ -36,6 +37,8 @@ export class PassTimings {
     /** The last HISTORY frame intervals, ms (the plot). */
     this.history = [];
     this.lastFrame = null;
+    /** The stages the last frame ran (the light depth pass is skipped while no light comes through). */
+    this.ran = new Set();
   }
 
   /** True when per-stage times can be measured at all (timer queries). */
@@ -52,12 +55,20 @@ export class PassTimings {
     }
     this.lastFrame = now;
     keepLast(this.frameTimes, cpuMs, WINDOW);
+    this.ran = new Set(this.stages.begun);
+    this.stages.begun.clear();
     this.stages.poll();
   }
 
-  /** { stage: median ms, ..., cpu: ms, fps } */
+  /** { stage: median ms, ..., cpu: ms, fps, skipped: stages timed before but not run by the last frame } */
   summary() {
-    return { ...this.stages.medians(), cpu: median(this.frameTimes), fps: 1000 / median(this.frameIntervals) };
+    const medians = this.stages.medians();
+    // Timed before and not now, or the light depth pass of a pipeline with a light (skipped while
+    // the light reaches no subsurface mesh from behind, and with transmittance off).
+    const skipped = this.lastFrame === null ? [] : STAGES.filter((s) => !this.ran.has(s)
+      && (s in medians || (s === 'lightDepth' && this.sss.lightDepth !== null)));
+    for (const s of skipped) delete medians[s];
+    return { ...medians, skipped, cpu: median(this.frameTimes), fps: 1000 / median(this.frameIntervals) };
   }
 }
 

@@ -24,6 +24,8 @@ export class GpuStageTimer {
     this.active = null;
     this.pending = [];
     this.samples = new Map(); // stage → last `window` times, ms
+    /** The stages begun since the caller last cleared it (the demo: per frame, to tell skipped stages). */
+    this.begun = new Set();
   }
 
   /** True when GPU times can be measured at all. */
@@ -32,6 +34,7 @@ export class GpuStageTimer {
   }
 
   begin(stage) {
+    this.begun.add(stage);
     if (!this.ext || !this.recording || this.active) return;
     const query = this.gl.createQuery();
     this.gl.beginQuery(this.ext.TIME_ELAPSED_EXT, query);

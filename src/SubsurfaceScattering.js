@@ -16,6 +16,10 @@
 //   5. compose       src/4-compose/       colour + scattered diffuse into the composer's buffer,
 //                                         with the scene's depth
 //   6. transparent   src/2-scene-split/   transparent objects blended over it, depth-tested
+//
+// Over 300 lines because it is the public API: the options' checks, the setters and getters
+// (methods, profile, light, sizes, debug views) and their errors are most of it; the frame is
+// render() and the stages' own files.
 import { FloatType, HalfFloatType } from 'three';
 import { Pass } from 'three/addons/postprocessing/Pass.js';
 import { getProfile } from './profiles/presets.js';
