@@ -236,29 +236,4 @@ async function images(setting) {
   return { truth: await toPng(truthImage), unscattered: await toPng(unscattered), setting: await toPng(scattered) };
 }
 
-/** (truth − unscattered) and (setting − unscattered) as signed PNGs: grey 0.5 + gain × the change. */
-async function changeImages(setting, gain = 10) {
-  const { truth, unscattered, width, height } = session;
-  const { scattered } = await renderSetting(setting);
-  const toPng = async (change) => {
-    const canvas = new OffscreenCanvas(width, height);
-    const context = canvas.getContext('2d');
-    const image = context.createImageData(width, height);
-    for (let y = 0; y < height; y++) for (let x = 0; x < width; x++) {
-      const i = (height - 1 - y) * width + x;
-      for (let c = 0; c < 3; c++) image.data[4 * (y * width + x) + c] = Math.min(255, Math.max(0, Math.round(255 * (0.5 + gain * change(i, c)))));
-      image.data[4 * (y * width + x) + 3] = 255;
-    }
-    context.putImageData(image, 0, 0);
-    return base64(await canvas.convertToBlob());
-  };
-  const truthAt = new Float64Array(3 * width * height);
-  const has = new Uint8Array(width * height);
-  truth.pixels.forEach((i, q) => { has[i] = 1; for (let c = 0; c < 3; c++) truthAt[3 * i + c] = truth.light[3 * q + c]; });
-  return {
-    truth: await toPng((i, c) => (has[i] ? truthAt[3 * i + c] - unscattered[4 * i + c] : 0)),
-    setting: await toPng((i, c) => (has[i] ? scattered[4 * i + c] - unscattered[4 * i + c] : 0)),
-  };
-}
-
-window.surfaceTruthBench = { open, measure, truthUncertainty, images, changeImages, close };
+window.surfaceTruthBench = { open, measure, truthUncertainty, images, close };

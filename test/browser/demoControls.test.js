@@ -1,29 +1,16 @@
 // The demo's controls change the image where and how they should, measured on the linear HDR
 // frame (float read-back) of the page itself; the URL hash reproduces a view.
-import { describe, it, expect, afterEach } from 'vitest';
+import { describe, it, expect } from 'vitest';
 import { readFileSync, existsSync } from 'node:fs';
-import { openPage, evaluateFloats } from '../harness/page.js';
+import { demoOpener } from '../harness/demoPage.js';
+import { evaluateFloats } from '../harness/page.js';
 
 const W = 480;
 const H = 270;
 const statusFile = new URL('../../public/assets/head-status.json', import.meta.url);
 const scanAvailable = existsSync(statusFile) && JSON.parse(readFileSync(statusFile, 'utf8')).complete === true;
 
-let pages = [];
-async function demo(hash) {
-  const page = await openPage(`/?still${hash ? `#${hash}` : ''}`, { width: W, height: H });
-  expect(await page.evaluate('window.testReady')).toBe(true);
-  await page.evaluate(() => window.demo.stop());
-  pages.push(page);
-  return page;
-}
-afterEach(async () => {
-  for (const page of pages) {
-    expect(page.problems).toEqual([]);
-    await page.close();
-  }
-  pages = [];
-});
+const demo = demoOpener({ width: W, height: H });
 
 /** The full head lit as before the first view changed (issue 13): the hash of these tests' scenes. */
 const fullHead = (extra) => `shot=head&split=0&${extra.includes('lightAzimuth') ? '' : 'lightAzimuth=30&'}lightElevation=25&lightIntensity=2.6&${extra}`;

@@ -6,9 +6,10 @@
 // 4. figure 2's ear reads as back-lit skin (green/red above a floor derived from the profile);
 // 5. every hash example in README.md and docs/ shows what it says; at 400 px the panel is folded
 //    and covers neither the face nor the attribution.
-import { describe, it, expect, afterEach } from 'vitest';
+import { describe, it, expect } from 'vitest';
 import { readFileSync, readdirSync, existsSync } from 'node:fs';
-import { openPage, evaluateFloats, screenshotPixels } from '../harness/page.js';
+import { demoOpener } from '../harness/demoPage.js';
+import { evaluateFloats, screenshotPixels } from '../harness/page.js';
 import { profiles } from '../../src/profiles/presets.js';
 import { defaultState } from '../../demo/state.js';
 import { figureState } from '../../demo/figures.js';
@@ -16,21 +17,7 @@ import { figureState } from '../../demo/figures.js';
 const statusFile = new URL('../../public/assets/head-status.json', import.meta.url);
 const scanAvailable = existsSync(statusFile) && JSON.parse(readFileSync(statusFile, 'utf8')).complete === true;
 
-let pages = [];
-async function demo(hash, { width = 800, height = 450 } = {}) {
-  const page = await openPage(`/?still${hash ? `#${hash}` : ''}`, { width, height });
-  expect(await page.evaluate('window.testReady')).toBe(true);
-  await page.evaluate(() => window.demo.stop());
-  pages.push(page);
-  return page;
-}
-afterEach(async () => {
-  for (const page of pages) {
-    expect(page.problems).toEqual([]);
-    await page.close();
-  }
-  pages = [];
-});
+const demo = demoOpener({ width: 800, height: 450 });
 
 /** Renders and returns the screenshot of the image alone (no header, panel, divider...). */
 async function bareImage(page) {
