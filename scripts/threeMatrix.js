@@ -13,7 +13,7 @@ const root = fileURLToPath(new URL('..', import.meta.url));
 const version = process.argv[2] ?? `0.${SUPPORTED_THREE.oldest}.0`;
 if (!/^0\.\d+\.\d+$/.test(version)) throw new RangeError(`threeMatrix: version must look like 0.168.0, got ${version}`);
 
-/** What the matrix runs: the pipeline's core (blur, transmittance, the drop-in pass) and the integrations. */
+/** What the matrix runs: the pipeline's core (blur, transmittance, the drop-in pass), the integrations and the reliability suite (bad inputs, leaks, soak, context loss). */
 const CORE_TESTS = [
   'test/browser/threeVersion.test.js', // first: fails at once if the alias did not take
   'test/browser/blur.test.js',
@@ -21,6 +21,7 @@ const CORE_TESTS = [
   'test/browser/dropIn.test.js',
   'test/browser/postprocessing.test.js',
   'test/browser/r3f.test.js',
+  'test/browser/reliability.test.js',
 ];
 
 const folder = `${root}node_modules/.cache/three-matrix/${version}`;
