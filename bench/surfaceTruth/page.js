@@ -14,7 +14,7 @@ import { GAUSSIANS } from '/test/oracle/closedForms.js';
 import { renderSurfaceAtlas } from './atlas.js';
 import { coarsen, surfaceTruth } from './scatter.js';
 import { classifyPixels, REGION_NAMES } from './regions.js';
-import { heatMap, base64 } from './heatMap.js';
+import { heatMap, pngOf } from './heatMap.js';
 
 let session = null;
 
@@ -220,19 +220,8 @@ async function images(setting) {
   const truthImage = new Float32Array(4 * width * height);
   truth.pixels.forEach((i, q) => { for (let c = 0; c < 3; c++) truthImage[4 * i + c] = truth.light[3 * q + c]; });
   const { scattered } = await renderSetting(setting);
-  const toPng = async (data) => {
-    const canvas = new OffscreenCanvas(width, height);
-    const context = canvas.getContext('2d');
-    const image = context.createImageData(width, height);
-    for (let y = 0; y < height; y++) for (let x = 0; x < width; x++) {
-      const i = ((height - 1 - y) * width + x) * 4;
-      const j = (y * width + x) * 4;
-      for (let c = 0; c < 3; c++) image.data[j + c] = Math.min(255, Math.round(255 * Math.max(data[i + c], 0) ** (1 / 2.2)));
-      image.data[j + 3] = 255;
-    }
-    context.putImageData(image, 0, 0);
-    return base64(await canvas.convertToBlob());
-  };
+  // Linear light to 8 bits with a 2.2 gamma (near sRGB), for a look.
+  const toPng = (data) => pngOf(width, height, (i) => [0, 1, 2].map((c) => Math.min(255, Math.round(255 * Math.max(data[4 * i + c], 0) ** (1 / 2.2)))));
   return { truth: await toPng(truthImage), unscattered: await toPng(unscattered), setting: await toPng(scattered) };
 }
 
