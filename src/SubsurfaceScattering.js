@@ -20,18 +20,16 @@
 // Over 300 lines because it is the public API: the options' checks, the setters and getters
 // (methods, profile, light, sizes, debug views) and their errors are most of it; the frame is
 // render() and the stages' own files.
-import { FloatType, HalfFloatType } from 'three';
 import { Pass } from 'three/addons/postprocessing/Pass.js';
 import { getProfile } from './profiles/presets.js';
 import { ProfileLookup } from './profiles/ProfileLookup.js';
-import { checkBoolean, checkInteger, checkNumber, checkOneOf, checkOptions } from './support/parameterChecks.js';
+import { checkBoolean, checkNumber, checkOptions } from './support/parameterChecks.js';
 import { describe } from './support/rendererSupport.js';
 import { PASS_BOOLEANS, booleanFields } from './support/booleanFields.js';
 import { FrameChecks, checkTargetSize, checkTargetLimits } from './support/frameChecks.js';
-import {
-  FOLLOW_SURFACE_MODES, MAX_MULTISAMPLING, MAX_SCALE_MM, METHODS, MIN_SCALE_MM, PIPELINE_DEFAULTS, PIPELINE_OPTIONS,
-} from './options.js';
-import { estimatePixelsPerMm, nearestViewDepth, planFrame } from './framePlan.js';
+import { warnDeprecated } from './support/deprecation.js';
+import { PIPELINE_SCHEMA, checkOption, checkPipelineOptions } from './options.js';
+import { estimatePixelsPerMm, nearestViewDepth } from './framePlan.js';
 import { LightDepthTarget } from './1-light-depth/LightDepthTarget.js';
 import { PipelineMaterials } from './2-scene-split/PipelineMaterials.js';
 import { isShining, lightFromBehind } from './2-scene-split/transmittance.js';
@@ -42,27 +40,6 @@ import { materialOutputOf } from './4-compose/debugViews.js';
 
 export { METHODS, AUTO_SAMPLES, AUTO_REACH } from './options.js';
 export { MIN_KERNEL_PIXELS } from './3-blur/samplingModel.js';
-
-function checkDepthThreshold(depthThresholdMm) {
-  return checkNumber('depthThresholdMm', depthThresholdMm, { min: 0, minExclusive: true, max: MAX_SCALE_MM, unit: 'mm' });
-}
-
-function checkWorldUnit(worldUnitInMm) {
-  return checkNumber('worldUnitInMm', worldUnitInMm, { min: MIN_SCALE_MM, max: MAX_SCALE_MM, unit: 'mm' });
-}
-
-function checkScene(scene) {
-  if (!scene || scene.isScene !== true) throw new TypeError(`SubsurfaceScattering: scene must be a THREE.Scene, got ${describe(scene)}`);
-  return scene;
-}
-
-function checkCamera(camera) {
-  if (!camera || camera.isCamera !== true) throw new TypeError(`SubsurfaceScattering: camera must be a THREE.Camera, got ${describe(camera)}`);
-  return camera;
-}
-
-/** The light depth map's resolution, checked under the pipeline's option name (LightDepthTarget calls it `size`). */
-const LIGHT_DEPTH_SIZES = Object.freeze({ min: 16, max: 8192 });
 
 /**
  * new SubsurfaceScattering({ ... }): the defaults are PIPELINE_DEFAULTS.
@@ -110,26 +87,7 @@ export class SubsurfaceScattering extends Pass {
   /** @param {SubsurfaceScatteringOptions} options */
   constructor(options) {
     super();
-    if (options === undefined || options === null || typeof options !== 'object' || Array.isArray(options)) {
-      throw new TypeError(`SubsurfaceScattering: options must be an object { scene, camera, ... }, got ${describe(options)}`);
-    }
-    checkOptions('SubsurfaceScattering options', options, PIPELINE_OPTIONS);
-    const o = { ...PIPELINE_DEFAULTS, type: HalfFloatType, ...options };
-    const { scene, camera, light } = o;
-    checkScene(scene);
-    checkCamera(camera);
-    if (light !== null && !(light?.isSpotLight || light?.isDirectionalLight)) {
-      throw new TypeError(`SubsurfaceScattering: light must be a THREE.SpotLight, THREE.DirectionalLight or null, got ${describe(light)}`);
-    }
-    checkWorldUnit(o.worldUnitInMm);
-    checkOneOf('followSurface', o.followSurface, FOLLOW_SURFACE_MODES);
-    checkOneOf('method', o.method, METHODS);
-    checkDepthThreshold(o.depthThresholdMm);
-    checkBoolean('foreshortening', o.foreshortening);
-    if (o.type !== HalfFloatType && o.type !== FloatType) {
-      throw new RangeError(`SubsurfaceScattering: type must be THREE.HalfFloatType or THREE.FloatType (light needs HDR targets), got ${describe(o.type)}`);
-    }
-    checkInteger('lightDepthSize', o.lightDepthSize, LIGHT_DEPTH_SIZES.min, LIGHT_DEPTH_SIZES.max, 'pixels');
+    const o = checkPipelineOptions(options); // every option checked here, once, against the schema
 
     this.needsSwap = false; // like RenderPass: it draws into the read buffer
     /** As RenderPass: true clears the target first; false draws over it (see render's step 5). */
@@ -138,15 +96,14 @@ export class SubsurfaceScattering extends Pass {
     this.clearDepth = false;
     this._clearColor = null;
     this._clearAlpha = null;
-    this._scene = scene;
-    this._camera = camera;
+    this._scene = o.scene;
+    this._camera = o.camera;
     this._worldUnitInMm = o.worldUnitInMm;
-    this._scattering = true;
+    this._depthThresholdMm = o.depthThresholdMm;
     this._stageTimer = null;
     this.profileLookup = new ProfileLookup(getProfile(o.profile));
-    this.lightDepth = light ? new LightDepthTarget(light, { size: o.lightDepthSize }) : null;
-    this._transmittance = light !== null;
-    this.depthThresholdMm = o.depthThresholdMm;
+    this.lightDepth = o.light ? new LightDepthTarget(o.light, { size: o.lightDepthSize }) : null;
+    this._transmittance = o.light !== null;
     this.multisampling = o.multisampling;
     /** The size setSize last gave, device pixels (checked against the GPU's limits on the next frame). */
     this._size = { width: 1, height: 1 };
@@ -156,11 +113,11 @@ export class SubsurfaceScattering extends Pass {
     this._checks = new FrameChecks('SubsurfaceScattering');
 
     // Stages 2, 3 and 4.
-    this.scenePass = new SubsurfaceScenePass(scene, camera, { type: o.type, owner: this });
+    this.scenePass = new SubsurfaceScenePass(o.scene, o.camera, { type: o.type, owner: this });
     this.blur = new BlurStage({
       type: o.type, profileLookup: this.profileLookup, method: o.method, samples: o.samples, strength: o.strength, falloff: o.falloff,
       surface: {
-        camera, surfaceTexture: this.scenePass.surfaceTexture, diffuseTexture: this.scenePass.diffuseTexture,
+        camera: o.camera, surfaceTexture: this.scenePass.surfaceTexture, diffuseTexture: this.scenePass.diffuseTexture,
         followSurface: o.followSurface, depthThresholdWorld: o.depthThresholdMm / o.worldUnitInMm, foreshortening: o.foreshortening,
       },
     });
@@ -171,26 +128,27 @@ export class SubsurfaceScattering extends Pass {
       scatteredTexture: this.blur.scatteredTarget.texture,
       depthTexture: this.scenePass.depthTexture,
     });
+    this._debug = { view: 'final', depthRange: 100, thicknessRangeMm: 10 };
     /** The materials made subsurface through this pipeline (see makeSubsurface). */
     this.subsurfaceMaterials = new PipelineMaterials(this, () => ({
       worldUnitInMm: this.worldUnitInMm,
       lightDepth: this.transmittance ? this.lightDepth : null,
       lookup: this.profileLookup,
-      debugOutput: materialOutputOf(this.composePass.debugView),
+      debugOutput: materialOutputOf(this._debug.view),
     }));
-    /** What the last frame ran: { samples, kernelPixels, blur } (see planFrame). */
-    this.plan = { samples: this.blur.kernelOptions.samples, kernelPixels: 0, blur: false };
+    /** What the last frame ran: { samples, kernelPixels, blur, passes } (see src/3-blur/blurPlan.js). */
+    this.plan = this.blur.lastPlan;
     /** The largest on-screen kernel radius of the last frame, pixels (plan.kernelPixels). */
     this.kernelPixels = 0;
   }
+
+  // ---- The settings: each a property, checked on assignment by the options schema (src/options.js).
 
   /**
    * As RenderPass: the clear colour of the scene (null: the renderer's).
    * @type {import('three').ColorRepresentation|null}
    */
-  get clearColor() {
-    return this._clearColor;
-  }
+  get clearColor() { return this._clearColor; }
 
   set clearColor(color) {
     const ok = color === null || typeof color === 'string' || color?.isColor === true || (typeof color === 'number' && Number.isFinite(color));
@@ -202,51 +160,32 @@ export class SubsurfaceScattering extends Pass {
    * As RenderPass: the clear alpha of the scene, 0..1 (null: the renderer's).
    * @type {number|null}
    */
-  get clearAlpha() {
-    return this._clearAlpha;
-  }
+  get clearAlpha() { return this._clearAlpha; }
 
   set clearAlpha(alpha) {
     this._clearAlpha = alpha === null ? null : checkNumber('SubsurfaceScattering.clearAlpha', alpha, { min: 0, max: 1 });
   }
 
-  /**
-   * The scene rendered, read every frame (assignable).
-   * @type {import('three').Scene}
-   */
-  get scene() {
-    return this._scene;
-  }
+  /** The scene rendered, read every frame. @type {import('three').Scene} */
+  get scene() { return this._scene; }
 
-  set scene(scene) {
-    this._scene = checkScene(scene);
-  }
+  set scene(scene) { this._scene = checkOption(PIPELINE_SCHEMA, 'scene', scene); }
 
-  /**
-   * The camera rendered with, read every frame (assignable: `sss.camera = otherCamera` switches the view).
-   * @type {import('three').Camera}
-   */
-  get camera() {
-    return this._camera;
-  }
+  /** The camera rendered with, read every frame (`sss.camera = otherCamera` switches the view). @type {import('three').Camera} */
+  get camera() { return this._camera; }
 
-  set camera(camera) {
-    this._camera = checkCamera(camera);
-  }
+  set camera(camera) { this._camera = checkOption(PIPELINE_SCHEMA, 'camera', camera); }
 
   /**
    * Millimetres per world unit (1000 for metres): assigning it rescales every material of the
    * pipeline and the depth threshold.
    * @type {number}
    */
-  get worldUnitInMm() {
-    return this._worldUnitInMm;
-  }
+  get worldUnitInMm() { return this._worldUnitInMm; }
 
   set worldUnitInMm(worldUnitInMm) {
-    checkWorldUnit(worldUnitInMm);
-    this._worldUnitInMm = worldUnitInMm;
-    this.blur.setFollowSurface(this.followSurface, this.depthThresholdMm / worldUnitInMm);
+    this._worldUnitInMm = checkOption(PIPELINE_SCHEMA, 'worldUnitInMm', worldUnitInMm);
+    this.blur.setFollowSurface(this.followSurface, this._depthThresholdMm / worldUnitInMm);
     this.subsurfaceMaterials.rebindAll();
   }
 
@@ -254,34 +193,123 @@ export class SubsurfaceScattering extends Pass {
    * false turns the blur off: the compose adds the unblurred diffuse light (transmittance stays).
    * @type {boolean}
    */
-  get scattering() {
-    return this._scattering;
+  get scattering() { return this.blur.scattering; }
+
+  set scattering(scattering) { this.blur.scattering = checkBoolean('SubsurfaceScattering.scattering', scattering); }
+
+  /** How the blur weighs its taps (METHOD_TABLE); a switch between 'footprint' and the fixed-tap methods recompiles once. @type {import('./options.js').Method} */
+  get method() { return this.blur.method; }
+
+  /** @param {import('./options.js').Method} method */
+  set method(method) { this.blur.setKernel({ method }); }
+
+  /** Taps per direction asked for, or 'auto' (this frame's count: `plan.samples`). @type {number|'auto'} */
+  get samples() { return this.blur.samples; }
+
+  /** @param {number|'auto'} samples */
+  set samples(samples) { this.blur.setKernel({ samples: checkOption(PIPELINE_SCHEMA, 'samples', samples) }); }
+
+  /** The diffusion profile (a preset's name or a profile object; read back as the profile object). @type {object} */
+  get profile() { return this.blur.kernelOptions.profile; }
+
+  /** @param {import('./options.js').ProfileName|object} profile */
+  set profile(profile) { this.blur.setKernel({ profile }); }
+
+  /** RGB 0..1, mix with no scattering; undefined: the method's default. @type {number[]|undefined} */
+  get strength() { return this.blur.kernelOptions.strength; }
+
+  /** @param {number[]} strength */
+  set strength(strength) { this.blur.setKernel({ strength: checkOption(PIPELINE_SCHEMA, 'strength', strength) }); }
+
+  /** RGB (0, 10], method 'reference''s kernel shape; undefined: the reference's. @type {number[]|undefined} */
+  get falloff() { return this.blur.kernelOptions.falloff; }
+
+  /** @param {number[]} falloff */
+  set falloff(falloff) { this.blur.setKernel({ falloff: checkOption(PIPELINE_SCHEMA, 'falloff', falloff) }); }
+
+  /** What a tap on another surface does. @type {import('./options.js').FollowSurfaceMode} */
+  get followSurface() { return this.blur.horizontalPass.followSurface; }
+
+  /** @param {import('./options.js').FollowSurfaceMode} mode */
+  set followSurface(mode) {
+    this.blur.setFollowSurface(checkOption(PIPELINE_SCHEMA, 'followSurface', mode), this._depthThresholdMm / this._worldUnitInMm);
   }
 
-  set scattering(scattering) {
-    this._scattering = checkBoolean('SubsurfaceScattering.scattering', scattering);
+  /** The depth step taken for another surface, mm. @type {number} */
+  get depthThresholdMm() { return this._depthThresholdMm; }
+
+  /** @param {number} depthThresholdMm */
+  set depthThresholdMm(depthThresholdMm) {
+    this._depthThresholdMm = checkOption(PIPELINE_SCHEMA, 'depthThresholdMm', depthThresholdMm);
+    this.blur.setFollowSurface(this.followSurface, depthThresholdMm / this._worldUnitInMm);
+  }
+
+  /** Narrow the blur on surfaces seen at grazing angles. @type {boolean} */
+  get foreshortening() { return this.blur.horizontalPass.foreshortening; }
+
+  /** @param {boolean} enabled */
+  set foreshortening(enabled) { this.blur.setForeshortening(checkOption(PIPELINE_SCHEMA, 'foreshortening', enabled)); }
+
+  /**
+   * Light through thin parts for every material of this pipeline (a uniform: no recompile). true
+   * needs the constructor's `light`.
+   * @type {boolean}
+   */
+  get transmittance() { return this._transmittance; }
+
+  /** @param {boolean} enabled */
+  set transmittance(enabled) {
+    checkBoolean('SubsurfaceScattering.transmittance', enabled);
+    if (enabled && !this.lightDepth) {
+      throw new TypeError('SubsurfaceScattering.transmittance: light must be a THREE.SpotLight or THREE.DirectionalLight to turn transmittance on, ' +
+        'and this pipeline has none (pass `light` to the constructor)');
+    }
+    this._transmittance = enabled;
+    this.subsurfaceMaterials.rebindAll();
   }
 
   /**
-   * Light through thin parts for every material of this pipeline (needs the constructor's `light`);
-   * the same as setTransmittance.
-   * @type {boolean}
+   * MSAA samples of the scene split: 'auto' (the composer buffer's) or 0..16.
+   * @type {number|'auto'}
    */
-  get transmittance() {
-    return this._transmittance;
-  }
+  get multisampling() { return this._multisampling; }
 
-  set transmittance(enabled) {
-    this.setTransmittance(checkBoolean('SubsurfaceScattering.transmittance', enabled));
-  }
+  /** @param {number|'auto'} samples */
+  set multisampling(samples) { this._multisampling = checkOption(PIPELINE_SCHEMA, 'multisampling', samples); }
+
+  /**
+   * The final image or one ingredient (DEBUG_VIEWS): 'final', 'diffuse', 'specular', 'depth',
+   * 'mask', 'thickness', 'transmittance'.
+   * @type {import('./4-compose/debugViews.js').DebugView}
+   */
+  get debugView() { return this._debug.view; }
+
+  /** @param {import('./4-compose/debugViews.js').DebugView} view */
+  set debugView(view) { this._showDebug({ ...this._debug, view }); }
+
+  /** World units the 'depth' view maps to black..white (default 100). @type {number} */
+  get debugDepthRange() { return this._debug.depthRange; }
+
+  /** @param {number} depthRange */
+  set debugDepthRange(depthRange) { this._showDebug({ ...this._debug, depthRange }); }
+
+  /** Profile mm the 'thickness' view maps to black..white (default 10). @type {number} */
+  get debugThicknessRangeMm() { return this._debug.thicknessRangeMm; }
+
+  /** @param {number} thicknessRangeMm */
+  set debugThicknessRangeMm(thicknessRangeMm) { this._showDebug({ ...this._debug, thicknessRangeMm }); }
+
+  /** The fraction of the width, from the left, shown without scattering (0..1; 0 = none). @type {number} */
+  get split() { return this.composePass.split; }
+
+  /** @param {number} fraction */
+  set split(fraction) { this.composePass.setSplit(fraction); }
 
   /**
    * Optional { begin(stage), end(stage) } around each stage (dev/gpuTimer.js measures with it), or null.
    * @type {{ begin(stage: StageName): void, end(stage: StageName): void }|null}
    */
-  get stageTimer() {
-    return this._stageTimer;
-  }
+  get stageTimer() { return this._stageTimer; }
 
   set stageTimer(timer) {
     if (timer !== null && !(timer && typeof timer.begin === 'function' && typeof timer.end === 'function')) {
@@ -290,15 +318,20 @@ export class SubsurfaceScattering extends Pass {
     this._stageTimer = timer;
   }
 
+  // ---- What the last frame did.
+
   /**
    * What the last frame found wrong with the camera, the light or the scene, one message each (empty
    * when nothing is): each is also warned about on the console, once per pipeline. See the README's
    * "Errors and limits".
    * @type {readonly string[]}
    */
-  get problems() {
-    return this._checks.current;
-  }
+  get problems() { return this._checks.current; }
+
+  /** The scene's depth from the last frame (its opaque part), a DepthTexture, for passes of your own. */
+  get depthTexture() { return this.scenePass.depthTexture; }
+
+  // ---- The frame.
 
   /**
    * One frame into `readBuffer` (or the screen with renderToScreen), as RenderPass draws.
@@ -327,11 +360,13 @@ export class SubsurfaceScattering extends Pass {
     // 2. Scene split: the opaque scene into the multi-target (colour | diffuse | surface | depth),
     //    multisampled as asked (or as the composer's buffer is).
     Object.assign(this.scenePass, { scene, camera, clearColor: this.clearColor, clearAlpha: this.clearAlpha });
-    const samples = this._multisampling === 'auto' ? (readBuffer?.samples ?? 0) : this._multisampling;
-    if (this.scenePass.setSamples(samples)) this.blur.setMultisampled(samples > 0);
+    const msaaSamples = this._multisampling === 'auto' ? (readBuffer?.samples ?? 0) : this._multisampling;
+    if (this.scenePass.setSamples(msaaSamples)) this.blur.setMultisampled(msaaSamples > 0);
     this._stage('scene', () => this.scenePass.render(renderer));
-    // 3. Plan: the kernel's reach on screen, the taps for 'auto', no blur under half a pixel.
-    this.plan = this._planFrame();
+    // 3. Plan: the blur plans itself (src/3-blur/blurPlan.js) from the on-screen size of a profile
+    //    millimetre: its taps for 'auto', no blur under half a pixel.
+    this.plan = this.blur.plan(this._pixelsPerMm());
+    this.kernelPixels = this.plan.kernelPixels;
     // 4. Blur: the diffuse light, horizontally then vertically (or densely), into scatteredTarget.
     if (this.plan.blur) this.renderScattering(renderer);
     // 5. Compose: colour + the scattered (without blur: the unblurred) diffuse light, and the
@@ -351,11 +386,12 @@ export class SubsurfaceScattering extends Pass {
   }
 
   /**
-   * Stage 4 alone over the last scene split, into scatteredTarget (the bench re-runs it to time it).
+   * Stage 4 alone over the last scene split, into scatteredTarget, as the last frame planned it
+   * (the bench re-runs it to time it).
    * @param {import('three').WebGLRenderer} renderer
    */
   renderScattering(renderer) {
-    this.blur.render(renderer, this.camera, (stage, draw) => this._stage(stage, draw));
+    this.blur.render(renderer, this.camera, (stage, draw) => this._stage(stage, draw), this.plan);
   }
 
   /** @private @param {StageName} name @param {() => void} draw */
@@ -374,7 +410,7 @@ export class SubsurfaceScattering extends Pass {
    * @private
    */
   _transmits(scene, camera) {
-    if (materialOutputOf(this.composePass.debugView) === 'thickness') return true;
+    if (materialOutputOf(this._debug.view) === 'thickness') return true;
     // The matrices as the scene split's render will see them (three updates them the same way).
     if (scene.matrixWorldAutoUpdate === true) scene.updateMatrixWorld();
     if (camera.parent === null && camera.matrixWorldAutoUpdate === true) camera.updateMatrixWorld();
@@ -390,63 +426,22 @@ export class SubsurfaceScattering extends Pass {
     return transmits;
   }
 
-  /** @private */
-  _planFrame() {
+  /** The largest on-screen size of a profile mm over the subsurface meshes the split drew. @private */
+  _pixelsPerMm() {
     const { width, height } = this.scenePass.renderTarget;
-    const pixelsPerMm = estimatePixelsPerMm(this.scenePass.subsurfaceMeshes, this.camera, { width, height },
+    return estimatePixelsPerMm(this.scenePass.subsurfaceMeshes, this.camera, { width, height },
       (m) => (this.scenePass.categoryOf(m) === 'subsurface' ? this.subsurfaceMaterials.widthWorldOf(m) : undefined));
-    const plan = planFrame({
-      scattering: this.scattering,
-      pixelsPerMm,
-      samples: this.blur.samples,
-      autoRadiusMm: this.profileLookup.marginalRadiusMm,
-      radiusMmOf: (samples) => this.blur.radiusMmOf(samples),
-      autoSamples: (radiusPx) => this.blur.autoSamplesFor(radiusPx),
-    });
-    if (plan.samples !== this.blur.kernelOptions.samples) this.blur.applyKernel({ samples: plan.samples });
-    this.kernelPixels = plan.kernelPixels;
-    return plan;
   }
 
-  /**
-   * MSAA samples of the scene split: 'auto' (the composer buffer's) or 0..MAX_MULTISAMPLING.
-   * @type {number|'auto'}
-   */
-  get multisampling() {
-    return this._multisampling;
+  /** @private @param {{ view: string, depthRange: number, thicknessRangeMm: number }} debug */
+  _showDebug(debug) {
+    const { view, depthRange, thicknessRangeMm } = debug;
+    this.composePass.setDebugView(view, { depthRange, thicknessRangeMm }); // checks all three
+    this._debug = debug;
+    this.subsurfaceMaterials.setDebugOutput(materialOutputOf(view));
   }
 
-  set multisampling(samples) {
-    if (samples !== 'auto') checkInteger('multisampling', samples, 0, MAX_MULTISAMPLING, "samples (or 'auto')");
-    this._multisampling = samples;
-  }
-
-  /** The scene's depth from the last frame (its opaque part), a DepthTexture, for passes of your own. */
-  get depthTexture() {
-    return this.scenePass.depthTexture;
-  }
-
-  /** The stage passes in frame order (each usable on its own). */
-  get passes() {
-    return [this.scenePass, this.blur.horizontalPass, this.blur.verticalPass, this.composePass];
-  }
-
-  // Stage 3's parts and settings (see BlurStage).
-  get horizontalPass() { return this.blur.horizontalPass; }
-  get verticalPass() { return this.blur.verticalPass; }
-  /** The dense 2D reference (method 'dense'), built on first use. */
-  get densePass() { return this.blur.densePass; }
-  /** The last frame's scattered diffuse light. */
-  get scatteredTarget() { return this.blur.scatteredTarget; }
-  /** @type {Float32Array} the separable kernel (computeKernel's layout) */
-  get kernel() { return this.blur.kernel; }
-  /** @type {import('./options.js').Method} */
-  get method() { return this.blur.method; }
-  get autoSamples() { return this.blur.autoSamples; }
-  get followSurface() { return this.blur.horizontalPass.followSurface; }
-  get foreshortening() { return this.blur.horizontalPass.foreshortening; }
-  /** The kernel's current settings: { profile, samples, strength, falloff }, plus method. */
-  get kernelOptions() { return { ...this.blur.kernelOptions, method: this.method }; }
+  // ---- Materials, composer, size, disposal.
 
   /**
    * Adds this pass to `composer` (in place of a RenderPass); the same as composer.addPass(sss).
@@ -485,68 +480,7 @@ export class SubsurfaceScattering extends Pass {
    * The materials made subsurface through this pipeline, each with its binding and options.
    * @type {Map<import('three').MeshStandardMaterial, { hook: import('./2-scene-split/subsurfaceMaterial.js').SubsurfaceBinding, options: SubsurfaceMaterialOptions }>}
    */
-  get materials() {
-    return this.subsurfaceMaterials.entries;
-  }
-
-  /**
-   * Turns transmittance on or off for every material of this pipeline (a uniform: no recompile).
-   * @param {boolean} enabled
-   */
-  setTransmittance(enabled) {
-    if (typeof enabled !== 'boolean') throw new TypeError(`setTransmittance: enabled must be a boolean, got ${describe(enabled)}`);
-    if (enabled && !this.lightDepth) {
-      throw new TypeError('setTransmittance: light must be a THREE.SpotLight or THREE.DirectionalLight to turn transmittance on, ' +
-        'and this pipeline has none (pass `light` to the constructor)');
-    }
-    this._transmittance = enabled;
-    this.subsurfaceMaterials.rebindAll();
-  }
-
-  /**
-   * Shows the final image or one ingredient (see DEBUG_VIEWS of SubsurfaceComposePass): 'final',
-   * 'diffuse', 'specular', 'depth', 'mask', 'thickness', 'transmittance'.
-   * @param {import('./4-compose/debugViews.js').DebugView} view
-   * @param {{ depthRange?: number, thicknessRangeMm?: number }} [options] the ranges the depth
-   *   (world units, default 100) and thickness (mm, default 10) views map to black..white
-   */
-  setDebugView(view, options) {
-    this.composePass.setDebugView(view, options);
-    this.subsurfaceMaterials.setDebugOutput(materialOutputOf(view));
-  }
-
-  /** @param {number} fraction of the width, from the left, shown without scattering (0..1; 0 = none) */
-  setSplit(fraction) {
-    this.composePass.setSplit(fraction);
-  }
-
-  /**
-   * Rebuilds the kernel (and the profile tables when the profile changes). Changing the method
-   * between 'footprint' and the fixed-tap ones recompiles the blur shaders once.
-   * @param {{ profile?: import('./options.js').ProfileName|object, method?: import('./options.js').Method, samples?: number|'auto', strength?: number[], falloff?: number[] }} options
-   */
-  setKernel(options = {}) {
-    if (options === null || typeof options !== 'object' || Array.isArray(options)) {
-      throw new TypeError(`setKernel: options must be an object { profile, method, samples, strength, falloff }, got ${describe(options)}`);
-    }
-    checkOptions('setKernel options', options, KERNEL_OPTIONS);
-    this.blur.setKernel({ ...options });
-  }
-
-  /**
-   * @param {import('./options.js').FollowSurfaceMode} mode
-   * @param {number} [depthThresholdMm]
-   */
-  setFollowSurface(mode, depthThresholdMm = this.depthThresholdMm) {
-    checkDepthThreshold(depthThresholdMm);
-    this.blur.setFollowSurface(mode, depthThresholdMm / this.worldUnitInMm);
-    this.depthThresholdMm = depthThresholdMm;
-  }
-
-  /** @param {boolean} enabled narrow the blur on surfaces seen at grazing angles */
-  setForeshortening(enabled) {
-    this.blur.setForeshortening(checkBoolean('foreshortening', enabled));
-  }
+  get materials() { return this.subsurfaceMaterials.entries; }
 
   /**
    * Sizes every target, as the composer does on composer.setSize. At least 1 × 1; larger than the
@@ -570,6 +504,81 @@ export class SubsurfaceScattering extends Pass {
     this.composePass.dispose();
     this.lightDepth?.dispose();
     this.profileLookup.dispose();
+  }
+
+  // ---- The stages' parts, for pipelines of your own and for inspection (unstable: they follow
+  //      the stages' code; the settings above are the API).
+
+  /** @internal The stage passes in frame order (each usable on its own). */
+  get passes() { return [this.scenePass, this.blur.horizontalPass, this.blur.verticalPass, this.composePass]; }
+  /** @internal */
+  get horizontalPass() { return this.blur.horizontalPass; }
+  /** @internal */
+  get verticalPass() { return this.blur.verticalPass; }
+  /** @internal The dense 2D reference (method 'dense'), built on first use. */
+  get densePass() { return this.blur.densePass; }
+  /** @internal The last frame's scattered diffuse light. */
+  get scatteredTarget() { return this.blur.scatteredTarget; }
+  /** @internal @type {Float32Array} the separable kernel of the last frame (computeKernel's layout) */
+  get kernel() { return this.blur.kernel; }
+  /** @internal Whether the taps are chosen for the on-screen scale (samples 'auto'). */
+  get autoSamples() { return this.blur.autoSamples; }
+  /** @internal The kernel's current settings: { profile, samples, strength, falloff }, plus method. */
+  get kernelOptions() { return { ...this.blur.kernelOptions, method: this.method }; }
+
+  // ---- Version 0.2's setter methods: deprecated (one setter style: assign the property).
+
+  /**
+   * @deprecated assign `method`, `samples`, `profile`, `strength`, `falloff`
+   * @param {{ profile?: import('./options.js').ProfileName|object, method?: import('./options.js').Method, samples?: number|'auto', strength?: number[], falloff?: number[] }} options
+   */
+  setKernel(options = {}) {
+    warnDeprecated('SubsurfaceScattering.setKernel()', 'the properties (sss.method = ..., sss.samples = ..., sss.profile = ...)');
+    if (options === null || typeof options !== 'object' || Array.isArray(options)) {
+      throw new TypeError(`setKernel: options must be an object { profile, method, samples, strength, falloff }, got ${describe(options)}`);
+    }
+    checkOptions('setKernel options', options, KERNEL_OPTIONS);
+    this.blur.setKernel({ ...options });
+  }
+
+  /** @deprecated assign `transmittance` @param {boolean} enabled */
+  setTransmittance(enabled) {
+    warnDeprecated('SubsurfaceScattering.setTransmittance()', 'sss.transmittance = enabled');
+    this.transmittance = enabled;
+  }
+
+  /**
+   * @deprecated assign `followSurface` and `depthThresholdMm`
+   * @param {import('./options.js').FollowSurfaceMode} mode @param {number} [depthThresholdMm]
+   */
+  setFollowSurface(mode, depthThresholdMm = this.depthThresholdMm) {
+    warnDeprecated('SubsurfaceScattering.setFollowSurface()', 'sss.followSurface = mode; sss.depthThresholdMm = mm');
+    checkOption(PIPELINE_SCHEMA, 'depthThresholdMm', depthThresholdMm);
+    this.followSurface = mode;
+    this.depthThresholdMm = depthThresholdMm;
+  }
+
+  /** @deprecated assign `foreshortening` @param {boolean} enabled */
+  setForeshortening(enabled) {
+    warnDeprecated('SubsurfaceScattering.setForeshortening()', 'sss.foreshortening = enabled');
+    this.foreshortening = enabled;
+  }
+
+  /**
+   * @deprecated assign `debugView` (and `debugDepthRange`, `debugThicknessRangeMm`)
+   * @param {import('./4-compose/debugViews.js').DebugView} view
+   * @param {{ depthRange?: number, thicknessRangeMm?: number }} [options]
+   */
+  setDebugView(view, options = {}) {
+    warnDeprecated('SubsurfaceScattering.setDebugView()', 'sss.debugView = view (and sss.debugDepthRange, sss.debugThicknessRangeMm)');
+    const { depthRange = 100, thicknessRangeMm = 10 } = checkOptions('setDebugView options', options, ['depthRange', 'thicknessRangeMm']);
+    this._showDebug({ view, depthRange, thicknessRangeMm });
+  }
+
+  /** @deprecated assign `split` @param {number} fraction */
+  setSplit(fraction) {
+    warnDeprecated('SubsurfaceScattering.setSplit()', 'sss.split = fraction');
+    this.split = fraction;
   }
 }
 

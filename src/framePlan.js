@@ -1,37 +1,27 @@
-// What runs this frame, decided once per frame after the scene split and before the blur:
-// how far the kernel reaches on screen, how many taps 'auto' takes, and whether the blur runs at
-// all (not below half a pixel: it could not move light into another pixel). planFrame is pure
-// and estimatePixelsPerMm only reads the scene graph; both run in Node (test/unit/framePlan.test.js).
+// The scene's side of a frame's plan: how large a profile millimetre is on screen over the
+// subsurface meshes drawn (estimatePixelsPerMm), the one input the blur stage's own plan takes
+// from outside it (src/3-blur/blurPlan.js), and the nearest depth of a mesh, which the light's
+// side test shares. Both only read the scene graph and run in Node (test/unit/framePlan.test.js).
+// planFrame is version 0.2's plan with callbacks into the blur, kept for one minor version.
 import { Vector3 } from 'three';
-import { AUTO_REACH, AUTO_SAMPLES } from './options.js';
 import { MIN_KERNEL_PIXELS } from './3-blur/samplingModel.js';
+import { autoSampleCount } from './3-blur/blurPlan.js';
 import { isPerspective, pixelsPerMm } from './support/screenScale.js';
+
+export { autoSampleCount };
 
 const _corner = new Vector3();
 
 /**
- * 'auto' taps: the fewest of AUTO_SAMPLES whose (samples - 3) / 2 single-pixel footprints per side
- * reach AUTO_REACH of `radiusPx`, the on-screen radius holding 99 % of the marginal's energy; the
- * largest when none does.
- * @param {number} radiusPx
- * @returns {number}
- */
-export function autoSampleCount(radiusPx) {
-  return AUTO_SAMPLES.find((n) => (n - 3) / 2 >= AUTO_REACH * radiusPx) ?? AUTO_SAMPLES[AUTO_SAMPLES.length - 1];
-}
-
-/**
+ * Version 0.2's frame plan (deprecated: the blur stage plans itself, src/3-blur/blurPlan.js).
  * @param {object} frame
- * @param {boolean} frame.scattering the blur is switched on (SubsurfaceScattering.scattering)
- * @param {number} frame.pixelsPerMm the largest on-screen size of a profile millimetre over the
- *   subsurface surfaces drawn, pixels (0 when none is drawn)
+ * @param {boolean} frame.scattering the blur is switched on
+ * @param {number} frame.pixelsPerMm the largest on-screen size of a profile millimetre, pixels
  * @param {number|'auto'} frame.samples the taps asked for
  * @param {number} frame.autoRadiusMm the radius 'auto' must resolve pixel by pixel (the marginal's 99 %)
  * @param {(samples: number) => number} frame.radiusMmOf the blur's reach with that many taps, mm
- * @param {(radiusPx: number) => number} [frame.autoSamples=autoSampleCount] the taps 'auto' takes for
- *   the on-screen radius holding 99 % of the marginal's energy
- * @returns {{ samples: number, kernelPixels: number, blur: boolean }} the taps to use, the largest
- *   on-screen reach of the kernel (pixels), and whether the blur stage runs
+ * @param {(radiusPx: number) => number} [frame.autoSamples=autoSampleCount] the taps 'auto' takes
+ * @returns {{ samples: number, kernelPixels: number, blur: boolean }}
  */
 export function planFrame(frame) {
   if (frame === null || typeof frame !== 'object') throw new TypeError(`planFrame: frame must be an object { scattering, pixelsPerMm, samples, ... }, got ${frame === null ? 'null' : typeof frame}`);

@@ -1,6 +1,6 @@
 // Stage 3: one direction of the separable, depth- and mask-aware subsurface blur.
 // Defines (src/3-blur/SubsurfaceBlurPass.js sets them): AXIS (0 = horizontal, 1 = vertical: an
-// index into vectors), SAMPLES (taps, odd), FOLLOW_SURFACE (FOLLOW_SURFACE_OFF, _DROP, _LERP),
+// index into vectors), SAMPLES (the taps compiled for, odd; KERNEL_MODE_TAPS runs tapCount of them), FOLLOW_SURFACE (FOLLOW_SURFACE_OFF, _DROP, _LERP),
 // FORESHORTEN (0 or 1: grazing-angle correction, below), SSS_COVERAGE (0 or 1: the inputs were
 // resolved from MSAA, shaders/common/surfaceSample.glsl), SSS_MAX_SLOPE, SSS_MIN_KERNEL_PIXELS,
 // SSS_ENERGY_LEFT (the numbers of src/3-blur/samplingModel.js) and KERNEL_MODE:
@@ -35,6 +35,7 @@
 uniform sampler2D tDiffuse;  // the multi-target's diffuse light (or the horizontal pass's output); alpha: the mask
 uniform sampler2D tSurface;  // the multi-target's surface: r linear view depth (world units), g world units per profile mm
 uniform vec4 kernel[ SAMPLES ]; // (weight R, G, B, offset in kernel mm), centre tap first
+uniform int tapCount;           // KERNEL_MODE_TAPS: the kernel's taps (<= SAMPLES; 'auto' sets it per frame)
 uniform float kernelRadiusMm;   // the kernel's reach: below SSS_MIN_KERNEL_PIXELS of it a pixel does no work
 uniform vec3 strength;          // KERNEL_MODE_FOOTPRINT: mix with no scattering (the reference's strength)
 uniform vec2 projectionScale;   // camera.projectionMatrix.elements[0], [5]
@@ -116,6 +117,7 @@ void main() {
 		weightSum = kernel[ 0 ].rgb;
 		sum = centre * weightSum;
 		for ( int i = 1; i < SAMPLES; i ++ ) {
+			if ( i >= tapCount ) break;
 			addTap( kernel[ i ].a * stepPx, kernel[ i ].rgb, pixel, surface.r, slope, centre, sum, weightSum );
 		}
 	#else

@@ -1,8 +1,7 @@
 // The materials one pipeline made subsurface, with the options it was given for each: what
 // SubsurfaceScattering.makeSubsurface binds (the material hook keeps one binding per pipeline),
 // rebinds when transmittance is switched, points at a debug output, and unbinds on dispose.
-import { checkBoolean, checkNumber, checkOptions } from '../support/parameterChecks.js';
-import { MATERIAL_DEFAULTS, MATERIAL_OPTIONS } from '../options.js';
+import { MATERIAL_DEFAULTS, checkMaterialOptions } from '../options.js';
 import { makeSubsurface, getSubsurface, subsurfaceBindingOf } from './subsurfaceMaterial.js';
 
 export class PipelineMaterials {
@@ -24,13 +23,8 @@ export class PipelineMaterials {
    * @param {{ widthMm?: number, widthScale?: number, strength?: number, transmittance?: boolean, translucency?: number, shrinkMm?: number }} options
    */
   bind(material, options = {}) {
-    const { strength, ...rest } = checkOptions('makeSubsurface options', options, MATERIAL_OPTIONS); // `strength`: widthScale's old name
-    const o = { ...MATERIAL_DEFAULTS, ...this.entries.get(material)?.options, ...rest };
-    if (strength !== undefined) o.widthScale = checkNumber('strength', strength, { min: 0, max: 1 });
-    checkBoolean('transmittance', o.transmittance);
-    // Checked here too, so a later switch of transmittance cannot fail half-way.
-    checkNumber('translucency', o.translucency, { min: 0, max: 1, maxExclusive: true });
-    checkNumber('shrinkMm', o.shrinkMm, { min: 0, max: 1000, unit: 'mm' });
+    // Checked whole here, so a later switch of transmittance cannot fail half-way.
+    const o = checkMaterialOptions(options, { ...MATERIAL_DEFAULTS, ...this.entries.get(material)?.options });
     const { worldUnitInMm, lightDepth, lookup, debugOutput } = this.settings();
     const hook = makeSubsurface(material, {
       widthMm: o.widthMm,

@@ -22,10 +22,10 @@ import clearcoatGlsl from '../../shaders/2-scene-split/material/clearcoat.glsl?r
 import outputGlsl from '../../shaders/2-scene-split/material/output.glsl?raw';
 import finiteGlsl from '../../shaders/common/finite.glsl?raw';
 import { assembleGlsl, enumDefines } from '../support/glsl.js';
-import { checkNumber, checkOneOf, checkOptions } from '../support/parameterChecks.js';
+import { checkOneOf, checkOptions } from '../support/parameterChecks.js';
 import { describe } from '../support/rendererSupport.js';
 import { SUPPORTED_THREE, SUPPORTED_THREE_RANGE, threeRelease } from '../support/threeVersion.js';
-import { MATERIAL_DEFAULTS } from '../options.js';
+import { MATERIAL_DEFAULTS, MATERIAL_SCHEMA, PIPELINE_SCHEMA, checkOption } from '../options.js';
 import { ATTACHMENT_DEFINES, DRAW_PHASES, currentDraw } from './subsurfaceTarget.js';
 import {
   TRANSMITTANCE_CHUNKS, isShining, lightUniformSlots, transmittanceSettings, transmittanceUniformSlots,
@@ -159,8 +159,7 @@ function applyBinding(uniforms, binding, scene, camera) {
 function withWidthScale(options) {
   if (options.strength === undefined) return options;
   const { strength, ...rest } = options;
-  checkNumber('strength', strength, { min: 0, max: 1 });
-  return { widthScale: strength, ...rest };
+  return { widthScale: MATERIAL_SCHEMA.widthScale.check(strength, 'strength'), ...rest };
 }
 
 /**
@@ -230,9 +229,9 @@ export function makeSubsurface(material, options = {}, owner = STANDALONE) {
     update(next = {}) {
       checkOptions('makeSubsurface options', next, STANDALONE_OPTIONS);
       const o = { ...this.options, ...withWidthScale(next) };
-      checkNumber('widthMm', o.widthMm, { min: 0, minExclusive: true, max: 1000, unit: 'mm' });
-      checkNumber('widthScale', o.widthScale, { min: 0, max: 1 });
-      checkNumber('worldUnitInMm', o.worldUnitInMm, { min: 0, minExclusive: true, max: 1e9, unit: 'mm' });
+      checkOption(MATERIAL_SCHEMA, 'widthMm', o.widthMm);
+      checkOption(MATERIAL_SCHEMA, 'widthScale', o.widthScale);
+      checkOption(PIPELINE_SCHEMA, 'worldUnitInMm', o.worldUnitInMm);
       this.transmittance = o.transmittance ? transmittanceSettings({ ...o.transmittance, worldUnitInMm: o.worldUnitInMm, widthMm: o.widthMm }) : null;
       this.options = o;
       if (latest(state.bindings) === this) applyBinding(state.uniforms, this); // the uniforms show the latest settings

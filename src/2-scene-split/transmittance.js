@@ -6,11 +6,10 @@ import { Matrix4, Vector3 } from 'three';
 import transmittanceGlsl from '../../shaders/2-scene-split/transmittance.glsl?raw';
 import profileLookupGlsl from '../../shaders/common/profileLookup.glsl?raw';
 import { assembleGlsl } from '../support/glsl.js';
-import { checkNumber } from '../support/parameterChecks.js';
 import { describe } from '../support/rendererSupport.js';
 import { LightDepthTarget } from '../1-light-depth/LightDepthTarget.js';
 import { ProfileLookup } from '../profiles/ProfileLookup.js';
-import { MATERIAL_DEFAULTS } from '../options.js';
+import { MATERIAL_DEFAULTS, MATERIAL_SCHEMA, PIPELINE_SCHEMA, checkOption } from '../options.js';
 
 /** The chunks shaders/2-scene-split/transmittance.glsl includes, by path. */
 export const TRANSMITTANCE_CHUNKS = Object.freeze({
@@ -56,10 +55,8 @@ export function transmittanceSettings(options) {
   } = options;
   if (!(lightDepth instanceof LightDepthTarget)) throw new TypeError(`transmittance: lightDepth must be a LightDepthTarget, got ${describe(lightDepth)}`);
   if (!(lookup instanceof ProfileLookup)) throw new TypeError(`transmittance: lookup must be a ProfileLookup, got ${describe(lookup)}`);
-  checkNumber('worldUnitInMm', worldUnitInMm, { min: 0, minExclusive: true, max: 1e9, unit: 'mm' });
-  checkNumber('widthMm', widthMm, { min: 0, minExclusive: true, max: 1000, unit: 'mm' });
-  checkNumber('translucency', translucency, { min: 0, max: 1, maxExclusive: true });
-  checkNumber('shrinkMm', shrinkMm, { min: 0, max: 1000, unit: 'mm' });
+  checkOption(PIPELINE_SCHEMA, 'worldUnitInMm', worldUnitInMm);
+  for (const [name, value] of Object.entries({ widthMm, translucency, shrinkMm })) checkOption(MATERIAL_SCHEMA, name, value);
   return Object.freeze({ lightDepth, lookup, worldUnitInMm, widthMm, translucency, shrinkMm });
 }
 

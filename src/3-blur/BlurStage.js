@@ -1,22 +1,25 @@
-// Stage 3 as the orchestrator runs it: the kernel settings (method, taps, profile, strength,
-// falloff), the two separable passes and the dense reference they can be swapped for, and the two
-// targets they write (the horizontal pass's output, then the scattered light). One object, so
-// the orchestrator's frame calls `blur.render()` and its setters forward here.
+// Stage 3 as the orchestrator runs it: the blur's settings (method, taps, profile, strength,
+// falloff, on or off), its plan for each frame (planBlur, pure, from these settings and the
+// scene's scale), the two separable passes and the dense reference they can be swapped for, and
+// the two targets they write (the horizontal pass's output, then the scattered light). One owner:
+// the orchestrator's frame calls `blur.plan(pixelsPerMm)` then `blur.render()`, and its setters
+// forward here. Which method does what is BLUR_MODES's (src/3-blur/blurPlan.js) and METHOD_TABLE's.
 import { WebGLRenderTarget } from 'three';
 import { computeKernel, kernelRadiusMm } from '../profiles/kernel.js';
 import { getProfile } from '../profiles/presets.js';
-import { checkOneOf } from '../support/parameterChecks.js';
-import { METHODS, METHOD_TABLE } from '../options.js';
-import { AUTO_MAX_SAMPLES } from '../profiles/footprints.js';
-import { autoSampleCount } from '../framePlan.js';
+import { AUTO_SAMPLES, METHOD_TABLE, PIPELINE_SCHEMA, checkOption } from '../options.js';
+import { blurModeOf, planBlur } from './blurPlan.js';
 import { SubsurfaceBlurPass } from './SubsurfaceBlurPass.js';
 import { DenseSubsurfacePass } from './DenseSubsurfacePass.js';
 
 /** The dense reference's loop bound, pixels of radius (method 'dense' is for validation). */
 const DENSE_MAX_RADIUS_PX = 256;
 
-/** The separable passes' mode for a method: footprints snapped to pixels, or fixed taps. */
-const blurModeOf = (method) => (METHOD_TABLE[method].blur === 'footprint' ? 'footprint' : 'taps');
+/** What the two separable passes run for a method: footprints snapped to pixels, or fixed taps. */
+const passModeOf = (method) => (METHOD_TABLE[method].blur === 'footprint' ? 'footprint' : 'taps');
+
+/** The kernel settings setKernel accepts. */
+const KERNEL_SETTINGS = Object.freeze(['profile', 'method', 'samples', 'strength', 'falloff']);
 
 export class BlurStage {
   /**
@@ -24,7 +27,7 @@ export class BlurStage {
    * @param {number} options.type HalfFloatType or FloatType for the two targets
    * @param {import('../profiles/ProfileLookup.js').ProfileLookup} options.profileLookup the pipeline's
    *   profile tables (refilled here when the profile changes)
-   * @param {string} options.method one of METHODS
+   * @param {import('../options.js').Method} options.method
    * @param {number|'auto'} options.samples
    * @param {number[]} [options.strength]
    * @param {number[]} [options.falloff]
@@ -32,33 +35,50 @@ export class BlurStage {
    *   followSurface, depthThresholdWorld, foreshortening)
    */
   constructor({ type, profileLookup, method, samples, strength, falloff, surface }) {
-    checkOneOf('method', method, METHODS);
     this.profileLookup = profileLookup;
-    this.method = method;
-    this.autoSamples = samples === 'auto';
-    this.kernelOptions = { profile: profileLookup.profile, samples: this.autoSamples ? this._autoStart(method) : samples, strength, falloff };
+    /** false turns the blur off (the orchestrator's `scattering`). */
+    this.scattering = true;
+    this._settings = { profile: profileLookup.profile, method: checkOption(PIPELINE_SCHEMA, 'method', method), samples, strength, falloff };
     this._kernels = new Map(); // computed kernels by their arguments: 'auto' switches between a few
-    this.kernel = this._computeKernel(this.kernelOptions, method);
     this._surface = surface;
     this._blurTarget = new WebGLRenderTarget(1, 1, { type, depthBuffer: false });
     this._blurTarget.texture.name = 'subsurface.horizontal';
     /** The scattered diffuse light, premultiplied by its coverage like the multi-target's. */
     this.scatteredTarget = new WebGLRenderTarget(1, 1, { type, depthBuffer: false });
     this.scatteredTarget.texture.name = 'subsurface.scattered';
-    const blur = {
-      ...surface, kernel: this.kernel, mode: blurModeOf(method), profileLookup, strength: strength ?? [1, 1, 1], autoFootprints: this._autoFootprints(),
-    };
+    const firstKernel = this._kernelFor(this._startSamples());
+    const blur = { ...surface, kernel: firstKernel, mode: passModeOf(method), profileLookup, strength: strength ?? [1, 1, 1], autoFootprints: this._autoFootprints() };
     this.horizontalPass = new SubsurfaceBlurPass({ ...blur, direction: 'horizontal' });
     this.verticalPass = new SubsurfaceBlurPass({ ...blur, direction: 'vertical', diffuseTexture: this._blurTarget.texture });
     this._densePass = null; // built when first asked for
     this._size = { width: 1, height: 1 };
     this._multisampled = false;
+    /** The kernel the separable passes hold (computeKernel's layout). */
+    this.kernel = firstKernel;
+    this._applySettings();
+    /** The last frame's plan (see planBlur). */
+    this.lastPlan = { samples: this.kernel.length / 4, kernelPixels: 0, blur: false, passes: blurModeOf(method).passes };
+  }
+
+  /** @type {import('../options.js').Method} */
+  get method() { return this._settings.method; }
+
+  /** The taps asked for: a count, or 'auto'. */
+  get samples() { return this._settings.samples; }
+
+  /** Whether the taps are chosen per frame (or per pixel) for the on-screen scale. */
+  get autoSamples() { return this._settings.samples === 'auto'; }
+
+  /** The kernel's settings: { profile, samples (this frame's count), strength, falloff }. */
+  get kernelOptions() {
+    const { profile, strength, falloff } = this._settings;
+    return { profile, samples: this.kernel.length / 4, strength, falloff };
   }
 
   /** The dense 2D reference (method 'dense'), built on first use. */
   get densePass() {
     if (!this._densePass) {
-      this._densePass = new DenseSubsurfacePass({ ...this._surface, profile: this.kernelOptions.profile, maxRadiusPx: DENSE_MAX_RADIUS_PX });
+      this._densePass = new DenseSubsurfacePass({ ...this._surface, profile: this._settings.profile, maxRadiusPx: DENSE_MAX_RADIUS_PX });
       this._densePass.setSize(this._size.width, this._size.height);
       this._densePass.setMultisampled(this._multisampled);
     }
@@ -70,46 +90,67 @@ export class BlurStage {
     return [this.horizontalPass, this.verticalPass, ...(this._densePass ? [this._densePass] : [])];
   }
 
-  /** The taps asked for: a count, or 'auto'. */
-  get samples() {
-    return this.autoSamples ? 'auto' : this.kernelOptions.samples;
+  /** 'footprint' with 'auto': per pixel the fewest taps for its scale, within the AUTO_MAX_SAMPLES budget. */
+  _autoFootprints() {
+    return this.autoSamples && METHOD_TABLE[this.method].blur === 'footprint';
+  }
+
+  /** The count the passes are built with before the first plan: the mode's 'auto' start, or the count asked for. */
+  _startSamples() {
+    return this.autoSamples ? blurModeOf(this.method).autoSamples(0) : this.samples;
+  }
+
+  /** computeKernel for this method's kernel (METHOD_TABLE) with `samples` taps, cached. */
+  _kernelFor(samples) {
+    const { profile, method, strength, falloff } = this._settings;
+    const args = { profile, samples, strength, falloff, method: METHOD_TABLE[method].kernel };
+    const key = JSON.stringify([profile.name, args.method, samples, strength, falloff]);
+    if (!this._kernels.has(key)) this._kernels.set(key, computeKernel(args));
+    return this._kernels.get(key);
   }
 
   /**
-   * 'auto': footprints choose their taps per pixel from the table (the kernel only bounds them), so
-   * the frame keeps AUTO_MAX_SAMPLES; fixed-tap kernels take the frame's count (autoSampleCount).
-   * @param {number} radiusPx the on-screen radius holding 99 % of the marginal's energy
+   * What planBlur needs, all of it this stage's own: the reach of each kernel it may choose is
+   * read lazily (a kernel is computed once, when a frame first needs its count).
+   * @returns {import('./blurPlan.js').BlurSettings}
    */
-  autoSamplesFor(radiusPx) {
-    return this._autoFootprints() ? AUTO_MAX_SAMPLES : autoSampleCount(radiusPx);
-  }
-
-  _autoFootprints(method = this.method) {
-    return this.autoSamples && METHOD_TABLE[method].blur === 'footprint';
-  }
-
-  /** The kernel's count when 'auto' starts: the footprints' bound, or a middle count for fixed taps. */
-  _autoStart(method) {
-    return METHOD_TABLE[method].blur === 'footprint' ? AUTO_MAX_SAMPLES : 17;
-  }
-
-  /** The blur's reach with `samples` taps, mm: below half a pixel of it nothing moves. */
-  radiusMmOf(samples) {
-    const blur = METHOD_TABLE[this.method].blur;
-    if (blur === 'dense') return this.densePass.radiusMm;
-    if (blur === 'footprint') return this.profileLookup.marginalRadiusMm;
-    return kernelRadiusMm(this._computeKernel({ ...this.kernelOptions, samples }, this.method));
+  get planSettings() {
+    const counts = this.autoSamples ? AUTO_SAMPLES : [this.samples];
+    const kernelReachMm = {};
+    for (const n of counts) Object.defineProperty(kernelReachMm, n, { enumerable: true, get: () => kernelRadiusMm(this._kernelFor(n)) });
+    return {
+      method: this.method,
+      samples: this.samples,
+      scattering: this.scattering,
+      marginalRadiusMm: this.profileLookup.marginalRadiusMm,
+      denseRadiusMm: blurModeOf(this.method).passes === 'dense' ? this.densePass.radiusMm : 0,
+      kernelReachMm,
+    };
   }
 
   /**
-   * Stage 3 over the multi-target, into scatteredTarget.
+   * Plans this frame (planBlur) and gives the separable passes the kernel of the planned count: a
+   * uniform change, never a recompile (the shaders are compiled for the mode's tap capacity).
+   * @param {number} pixelsPerMm the largest on-screen size of a profile mm this frame
+   * @returns {import('./blurPlan.js').BlurPlan}
+   */
+  plan(pixelsPerMm) {
+    const plan = planBlur(this.planSettings, pixelsPerMm);
+    if (plan.samples !== this.kernel.length / 4) this._setPassKernels(this._kernelFor(plan.samples));
+    this.lastPlan = plan;
+    return plan;
+  }
+
+  /**
+   * Stage 3 over the multi-target, into scatteredTarget, as `plan` says.
    * @param {import('three').WebGLRenderer} renderer
    * @param {import('three').Camera} camera the camera of the scene split
    * @param {(stage: string, draw: () => void) => void} timed runs each pass, timed as `stage`
+   * @param {import('./blurPlan.js').BlurPlan} [plan] the frame's plan (default: the last one)
    */
-  render(renderer, camera, timed) {
+  render(renderer, camera, timed, plan = this.lastPlan) {
     for (const pass of this.surfacePasses) pass.camera = camera;
-    if (METHOD_TABLE[this.method].blur === 'dense') {
+    if (plan.passes === 'dense') {
       timed('dense', () => this.densePass.render(renderer, this.scatteredTarget, null));
     } else {
       timed('blurH', () => this.horizontalPass.render(renderer, this._blurTarget, null));
@@ -117,52 +158,53 @@ export class BlurStage {
     }
   }
 
-  /** computeKernel for `method` (see METHOD_TABLE: 'footprint' builds on the marginal kernel), cached. */
-  _computeKernel(options, method) {
-    const args = { ...options, method: METHOD_TABLE[method].kernel };
-    const key = JSON.stringify([args.profile.name, args.method, args.samples, args.strength, args.falloff]);
-    if (!this._kernels.has(key)) this._kernels.set(key, computeKernel(args));
-    return this._kernels.get(key);
-  }
-
   /**
-   * Rebuilds the kernel (and the profile tables when the profile changes).
+   * Changes kernel settings: { profile, method, samples, strength, falloff } (checked here; each
+   * left out keeps its value). A change of method between 'footprint' and the fixed-tap ones
+   * recompiles the blur shaders once; nothing else does.
    * @param {{ profile?: string|object, method?: string, samples?: number|'auto', strength?: number[], falloff?: number[] }} options
    */
-  setKernel({ method = this.method, samples, ...options } = {}) {
-    checkOneOf('method', method, METHODS);
-    if (samples === 'auto') {
-      this.autoSamples = true;
-      options.samples = this._autoStart(method);
-    } else if (samples !== undefined) {
-      this.autoSamples = false;
-      options.samples = samples;
-    } else if (this.autoSamples && this._autoFootprints(method) !== this._autoFootprints()) {
-      options.samples = this._autoStart(method); // 'auto' kept across a switch of method
+  setKernel(options = {}) {
+    const next = { ...this._settings };
+    for (const name of KERNEL_SETTINGS) {
+      if (options[name] === undefined) continue;
+      next[name] = checkOption(PIPELINE_SCHEMA, name, options[name]);
     }
-    this.applyKernel(options, method);
-  }
-
-  /** Sets kernel options without touching 'auto' (the frame plan's taps go through here). */
-  applyKernel(options, method = this.method) {
-    const next = { ...this.kernelOptions, ...options };
     if (options.profile !== undefined) next.profile = getProfile(options.profile);
-    const kernel = this._computeKernel(next, method);
-    this._warnBuiltInKernel(method, next.profile);
-    const profileChanged = next.profile !== this.profileLookup.profile;
-    this.kernelOptions = next;
-    this.method = method;
-    this.kernel = kernel;
+    const profileChanged = next.profile !== this._settings.profile;
+    this._warnBuiltInKernel(next.method, next.profile);
+    // The kernel first: a setting computeKernel refuses leaves the stage as it was.
+    const previous = this._settings;
+    this._settings = next;
+    try {
+      this.kernel = this._kernelFor(this._startSamples());
+    } catch (error) {
+      this._settings = previous;
+      throw error;
+    }
     if (profileChanged) {
       this.profileLookup.setProfile(next.profile); // tens of ms: only on a change
       this._densePass?.setProfile(next.profile);
     }
+    this._applySettings();
+  }
+
+  /** Gives both separable passes the settings' mode, kernel and strength. */
+  _applySettings() {
+    const mode = passModeOf(this.method);
     for (const pass of [this.horizontalPass, this.verticalPass]) {
-      pass.autoFootprints = this._autoFootprints(method);
-      pass.setMode(blurModeOf(method));
-      pass.setKernel(kernel);
-      pass.setStrength(next.strength ?? [1, 1, 1]);
+      pass.autoFootprints = this._autoFootprints();
+      pass.setMode(mode);
+      pass.setStrength(this._settings.strength ?? [1, 1, 1]);
     }
+    this._setPassKernels(this.kernel);
+  }
+
+  /** @param {Float32Array} kernel */
+  _setPassKernels(kernel) {
+    const capacity = blurModeOf(this.method).tapCapacity(kernel.length / 4, this.autoSamples);
+    for (const pass of [this.horizontalPass, this.verticalPass]) pass.setKernel(kernel, capacity);
+    this.kernel = kernel;
   }
 
   /**
@@ -170,7 +212,7 @@ export class BlurStage {
    * other profile then drives only transmittance. Said once per profile, not silently.
    */
   _warnBuiltInKernel(method, profile) {
-    if (method !== 'reference' || profile === getProfile('skin')) return;
+    if (METHOD_TABLE[method].kernel !== 'reference' || profile === getProfile('skin')) return;
     this._warnedProfiles ??= new WeakSet();
     if (this._warnedProfiles.has(profile)) return;
     this._warnedProfiles.add(profile);

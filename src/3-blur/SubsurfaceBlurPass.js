@@ -2,7 +2,7 @@
 // them (horizontal, then vertical) make the paper's two screen-space passes. Only subsurface
 // pixels change; taps on other pixels, off screen or on another surface are dropped and the rest
 // renormalised per channel (or lerped back to the centre colour, as in the reference).
-import { Vector3, Vector4 } from 'three';
+import { Vector3 } from 'three';
 import blurGlsl from '../../shaders/3-blur/subsurfaceBlur.frag.glsl?raw';
 import profileLookupGlsl from '../../shaders/common/profileLookup.glsl?raw';
 import { kernelRadiusMm } from '../profiles/kernel.js';
@@ -90,7 +90,8 @@ export class SubsurfaceBlurPass extends SurfacePass {
       chunks: CHUNKS,
       defines: { AXIS: DIRECTIONS.indexOf(direction), SAMPLES: 1, ...FOOTPRINT_DEFINES, ...enumDefines('KERNEL_MODE', KERNEL_MODES, mode) },
       uniforms: {
-        kernel: { value: [] },
+        kernel: { value: new Float32Array(4) },
+        tapCount: { value: 1 },
         kernelRadiusMm: { value: 0 },
         strength: { value: new Vector3(1, 1, 1) },
         tProfile: { value: null },
@@ -138,18 +139,26 @@ export class SubsurfaceBlurPass extends SurfacePass {
     this.mode = mode;
   }
 
-  /** @param {Float32Array} kernel see computeKernel */
-  setKernel(kernel) {
+  /**
+   * @param {Float32Array} kernel see computeKernel
+   * @param {number} [tapCapacity] 'taps' mode: the most taps the shader is compiled for (at least
+   *   the kernel's); a kernel of fewer taps is then a uniform change, not a recompile, so 'auto'
+   *   can change the count every frame. 'footprint' mode: ignored (the kernel's count is the budget).
+   */
+  setKernel(kernel, tapCapacity = 0) {
     if (!(kernel instanceof Float32Array) || kernel.length < 4 || kernel.length % 4 !== 0) {
       throw new TypeError('SubsurfaceBlurPass: kernel must be a Float32Array of 4 numbers per tap (see computeKernel)');
     }
     if (!kernel.every(Number.isFinite)) throw new RangeError('SubsurfaceBlurPass: kernel holds NaN or Infinity');
     const samples = kernel.length / 4;
-    const taps = [];
-    for (let i = 0; i < samples; i++) taps.push(new Vector4().fromArray(kernel, i * 4));
+    const capacity = this.mode === 'taps' ? Math.max(samples, tapCapacity) : samples;
+    // (weight R, G, B, offset mm) per tap, zero-padded to the capacity: three uploads a flat array as is.
+    const taps = new Float32Array(capacity * 4);
+    taps.set(kernel);
     this.uniforms.kernel.value = taps;
+    this.uniforms.tapCount.value = samples;
     this.uniforms.kernelRadiusMm.value = kernelRadiusMm(kernel);
-    setDefines(this.material, { SAMPLES: samples });
+    setDefines(this.material, { SAMPLES: capacity });
     this.kernel = kernel;
   }
 

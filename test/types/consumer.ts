@@ -1,9 +1,11 @@
 // A strict TypeScript consumer of every export (test/unit/types.test.js compiles it against the
 // declarations generated from the JSDoc, installed as a package). It must compile with no error;
-// test/unit/types.test.js also checks that ALL_EXPORTS names every value the package exports.
+// test/unit/types.test.js also checks that ALL_EXPORTS names every value the package exports, and
+// ALL_INTERNALS every value of the unstable three-separable-sss/internals entry.
 import * as THREE from 'three';
 import { EffectComposer } from 'three/addons/postprocessing/EffectComposer.js';
 import * as SSS from 'three-separable-sss';
+import * as INTERNALS from 'three-separable-sss/internals';
 import {
   SubsurfaceScattering, makeSubsurface, getSubsurface, LightDepthTarget, ProfileLookup, computeKernel,
   type DebugView, type Method, type FollowSurfaceMode, type ProfileName, type SubsurfaceScatteringOptions,
@@ -24,16 +26,28 @@ const sss = new SubsurfaceScattering(options);
 const materialOptions: SubsurfaceMaterialOptions = { widthMm: 1, widthScale: 0.8, transmittance: true };
 const binding: SubsurfaceBinding = sss.makeSubsurface(skin, materialOptions);
 const width: number = binding.widthWorld;
-sss.setDebugView('mask'); // the options argument is optional
-sss.setDebugView('thickness', { thicknessRangeMm: 5 });
+// One setter style: every setting is a property, checked on assignment.
+sss.debugView = 'mask';
+sss.debugThicknessRangeMm = 5;
+sss.debugDepthRange = 2;
 const views: readonly DebugView[] = SSS.DEBUG_VIEWS;
 const mask: 'mask' = SSS.DEBUG_VIEW.MASK;
-sss.setSplit(0.5);
-sss.setTransmittance(true);
+sss.split = 0.5;
+sss.transmittance = true;
+sss.profile = 'marble';
+sss.method = 'reference';
+sss.samples = 25;
+sss.samples = 'auto';
+sss.strength = [1, 0.5, 0.25];
+sss.falloff = [1, 0.37, 0.3];
+sss.followSurface = 'lerp';
+sss.depthThresholdMm = 4;
+sss.foreshortening = false;
+const asked: Method = sss.method;
+// Version 0.2's setter methods: deprecated, still typed.
+sss.setDebugView('thickness', { thicknessRangeMm: 5 });
 sss.setKernel({ profile: 'marble', method: 'reference', samples: 25 });
-sss.setFollowSurface('lerp');
 sss.setFollowSurface('off', 4);
-sss.setForeshortening(false);
 sss.scattering = false;
 sss.enabled = true;
 sss.clear = false;
@@ -58,7 +72,37 @@ const hook = makeSubsurface(new THREE.MeshStandardMaterial(), { widthMm: 2, worl
 const bound: SubsurfaceBinding | undefined = getSubsurface(skin);
 hook.dispose();
 
-/** Every value the package exports, each used where its type is checked. */
+/** Every value of the unstable internals entry, each used where its type is checked. */
+export const ALL_INTERNALS = {
+  METHOD_TABLE: INTERNALS.METHOD_TABLE.footprint.blur satisfies 'footprint',
+  AUTO_SAMPLES: INTERNALS.AUTO_SAMPLES satisfies readonly number[],
+  AUTO_REACH: INTERNALS.AUTO_REACH satisfies number,
+  PIPELINE_SCHEMA: INTERNALS.PIPELINE_SCHEMA.worldUnitInMm.doc satisfies string,
+  MATERIAL_SCHEMA: INTERNALS.MATERIAL_SCHEMA.widthMm.default,
+  PIPELINE_OPTIONS: INTERNALS.PIPELINE_OPTIONS satisfies readonly string[],
+  MATERIAL_OPTIONS: INTERNALS.MATERIAL_OPTIONS satisfies readonly string[],
+  checkPipelineOptions: INTERNALS.checkPipelineOptions({ scene, camera }),
+  checkMaterialOptions: INTERNALS.checkMaterialOptions({ widthMm: 2 }),
+  planBlur: INTERNALS.planBlur({ method: 'footprint', samples: 'auto', scattering: true, marginalRadiusMm: 3, denseRadiusMm: 0, kernelReachMm: {} }, 2).samples satisfies number,
+  autoSampleCount: INTERNALS.autoSampleCount(4) satisfies number,
+  BLUR_MODES: INTERNALS.BLUR_MODES.taps.passes,
+  planFrame: INTERNALS.planFrame({ scattering: true, pixelsPerMm: 2, samples: 'auto', autoRadiusMm: 3, radiusMmOf: (n: number) => n / 2 }).blur satisfies boolean,
+  estimatePixelsPerMm: INTERNALS.estimatePixelsPerMm([], camera, { width: 640, height: 360 }, () => 0.001) satisfies number,
+  nearestViewDepth: INTERNALS.nearestViewDepth,
+  MIN_KERNEL_PIXELS: INTERNALS.MIN_KERNEL_PIXELS satisfies number,
+  BlurStage: INTERNALS.BlurStage,
+  DRAW_PHASES: INTERNALS.DRAW_PHASES.SPLIT satisfies 'split',
+  footprintsOf: INTERNALS.footprintsOf(kernel).edgesMm satisfies number[],
+  KERNEL_MODES: INTERNALS.KERNEL_MODES,
+  FootprintTable: INTERNALS.FootprintTable,
+  footprintAllocation: INTERNALS.footprintAllocation((x: number) => [x, x, x], 17, 2).stepError satisfies number,
+  footprintTable: INTERNALS.footprintTable,
+  FOOTPRINT_SCALES: INTERNALS.FOOTPRINT_SCALES.perOctave satisfies number,
+  QuadrantEnergyLookup: INTERNALS.QuadrantEnergyLookup,
+  isPerspective: INTERNALS.isPerspective(camera) satisfies boolean,
+};
+
+/** Every value the package exports (the deprecated aliases of version 0.2 too), each used where its type is checked. */
 export const ALL_EXPORTS = {
   SubsurfaceScattering: SSS.SubsurfaceScattering satisfies typeof SubsurfaceScattering,
   MIN_KERNEL_PIXELS: SSS.MIN_KERNEL_PIXELS satisfies number,
@@ -108,4 +152,4 @@ export const ALL_EXPORTS = {
   pixelsPerMm: SSS.pixelsPerMm(0.001, 0.6, 2, 720) satisfies number,
   isPerspective: SSS.isPerspective(camera) satisfies boolean,
 };
-void [width, removed];
+void [width, removed, asked];

@@ -22,13 +22,15 @@ new SubsurfaceScattering({ scene, camera, samples: '17' });
 new SubsurfaceScattering({ scene, camera, light: new THREE.PointLight() });
 const sss = new SubsurfaceScattering({ scene, camera });
 // @ts-expect-error an unknown debug view
+sss.debugView = 'masks';
+// @ts-expect-error an unknown debug view (version 0.2's setter, deprecated)
 sss.setDebugView('masks');
 // @ts-expect-error only MeshStandardMaterial and MeshPhysicalMaterial scatter
 sss.makeSubsurface(new THREE.MeshBasicMaterial());
 // @ts-expect-error widthMm is a number
 sss.makeSubsurface(new THREE.MeshStandardMaterial(), { widthMm: '1' });
-// @ts-expect-error setSplit takes a fraction
-sss.setSplit('half');
+// @ts-expect-error split is a fraction
+sss.split = 'half';
 // @ts-expect-error multisampling is a number or 'auto'
 sss.multisampling = 'on';
 // @ts-expect-error scattering is a boolean (at run time too: 'no' is a TypeError, not true)
@@ -36,7 +38,9 @@ sss.scattering = 'no';
 // @ts-expect-error enabled is a boolean
 sss.enabled = 'no';
 // @ts-expect-error the kernel's method is one of the four
-sss.setKernel({ method: 'gauss' });
+sss.method = 'gauss';
+// @ts-expect-error samples is an odd count or 'auto'
+sss.samples = 'many';
 // @ts-expect-error computeKernel's method is 'reference' or 'marginal'
 computeKernel({ method: 'footprint' });
 // @ts-expect-error makeSubsurface needs a material

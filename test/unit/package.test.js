@@ -21,11 +21,13 @@ describe('the built package', () => {
       // The subpath exports too: pmndrs postprocessing's pass, the React Three Fiber components.
       const pmndrs = await import(${JSON.stringify(`${outDir}/postprocessing.js`)});
       const react = await import(${JSON.stringify(`${outDir}/react.js`)});
+      const internals = await import(${JSON.stringify(`${outDir}/internals.js`)});
       const added = Object.getOwnPropertyNames(globalThis).filter((k) => !before.has(k));
       const k17 = m.computeKernel({ samples: 17, method: 'reference' });
       console.log(JSON.stringify({
         exports: Object.keys(m).sort(), added, typeofWindow: typeof window, typeofDocument: typeof document,
-        pmndrs: Object.keys(pmndrs).sort(), react: Object.keys(react).sort(),
+        pmndrs: Object.keys(pmndrs).sort(), react: Object.keys(react).sort(), internals: Object.keys(internals).sort(),
+        planned: internals.planBlur({ method: 'footprint', samples: 'auto', scattering: true, marginalRadiusMm: 3, denseRadiusMm: 0, kernelReachMm: {} }, 2),
         centre17: Array.from(k17.slice(0, 4)),
         sizes: [11, 17, 25].map((n) => m.referenceKernel(n).length / 4),
         chunk: m.transmittanceChunk.includes('sssTransmittance('),
@@ -36,6 +38,9 @@ describe('the built package', () => {
     expect(out.pmndrs).toEqual(['SubsurfaceScatteringPass']);
     expect(out.react).toEqual(['Subsurface', 'SubsurfaceComposer', 'useSubsurface', 'useSubsurfaceComposer', 'useSubsurfaceScattering']);
     expect(out.added).toEqual([]);
+    // The unstable entry: the blur's plan runs in plain Node too (63 taps: the footprints' budget).
+    expect(out.internals).toContain('planBlur');
+    expect(out.planned).toEqual({ samples: 63, kernelPixels: 6, blur: true, passes: 'separable' });
     for (const name of ['computeKernel', 'profiles', 'transmittance', 'LightDepthTarget', 'transmittanceChunk', 'makeSubsurface', 'SubsurfaceBlurPass', 'SubsurfaceScattering']) {
       expect(out.exports).toContain(name);
     }

@@ -8,6 +8,7 @@ import { spawnSync } from 'node:child_process';
 import { cpSync, mkdirSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
 import * as runtime from '../../src/index.js';
+import * as internals from '../../src/internals.js';
 
 const root = fileURLToPath(new URL('../..', import.meta.url));
 // Inside the repository so that three, @types/three, postprocessing, react and R3F resolve from its node_modules.
@@ -76,10 +77,11 @@ describe('the generated declarations', () => {
     expect([...new Set(errors.map((e) => e.line))].sort((a, b) => a - b)).toEqual(expectedLines);
   }, 120_000);
 
-  it('consumer.ts names every value the package exports', () => {
+  it('consumer.ts names every value the package and its internals entry export', () => {
     const consumer = readFileSync(`${root}test/types/consumer.ts`, 'utf8');
-    const block = consumer.slice(consumer.indexOf('export const ALL_EXPORTS'));
-    const named = [...block.matchAll(/^ {2}(\w+):/gm)].map((m) => m[1]).sort();
-    expect(named).toEqual(Object.keys(runtime).sort());
+    const namesIn = (block) => [...block.matchAll(/^ {2}(\w+):/gm)].map((m) => m[1]).sort();
+    expect(namesIn(consumer.slice(consumer.indexOf('export const ALL_EXPORTS')))).toEqual(Object.keys(runtime).sort());
+    const internalsBlock = consumer.slice(consumer.indexOf('export const ALL_INTERNALS'), consumer.indexOf('export const ALL_EXPORTS'));
+    expect(namesIn(internalsBlock)).toEqual(Object.keys(internals).sort());
   });
 });

@@ -1,0 +1,97 @@
+// Stage 3's plan for one frame, pure (test/unit/blurPlan.test.js): which blur runs, with how many
+// taps, and how far it reaches on screen. BlurStage calls it with the settings it owns; the only
+// input from outside is the scene's scale (pixels per profile mm, src/framePlan.js's
+// estimatePixelsPerMm). BLUR_MODES is the dispatch on METHOD_TABLE's `blur` column: no method is
+// compared by name anywhere else in the stage.
+import { AUTO_REACH, AUTO_SAMPLES, METHOD_TABLE } from '../options.js';
+import { AUTO_MAX_SAMPLES } from '../profiles/footprints.js';
+import { MIN_KERNEL_PIXELS } from './samplingModel.js';
+
+/**
+ * 'auto' taps of the fixed-tap methods: the fewest of AUTO_SAMPLES whose (samples - 3) / 2
+ * single-pixel footprints per side reach AUTO_REACH of `radiusPx`, the on-screen radius holding
+ * 99 % of the marginal's energy; the largest when none does.
+ * @param {number} radiusPx
+ * @returns {number}
+ */
+export function autoSampleCount(radiusPx) {
+  return AUTO_SAMPLES.find((n) => (n - 3) / 2 >= AUTO_REACH * radiusPx) ?? AUTO_SAMPLES[AUTO_SAMPLES.length - 1];
+}
+
+/**
+ * What the blur stage knows when it plans (all its own data).
+ * @typedef {object} BlurSettings
+ * @property {import('../options.js').Method} method
+ * @property {number|'auto'} samples the taps asked for
+ * @property {boolean} scattering the blur is switched on
+ * @property {number} marginalRadiusMm the radius holding 99 % of the profile's marginal, mm
+ * @property {number} denseRadiusMm the dense reference's reach, mm
+ * @property {Readonly<Record<number, number>>} kernelReachMm the fixed-tap kernel's outermost tap,
+ *   mm, for each count the plan can choose (the count asked for, or every AUTO_SAMPLES for 'auto')
+ */
+
+/**
+ * What each blur mode of METHOD_TABLE does:
+ * - passes: the separable pair ('separable') or the dense 2D pass ('dense');
+ * - tapCapacity: the most taps the mode's shader is compiled for ('auto' changes the count per frame
+ *   by a uniform below it, never by a recompile): the kernel's count for 'footprint' (its budget),
+ *   the largest 'auto' count for fixed taps;
+ * - autoSamples(radiusPx): the taps 'auto' takes for the on-screen radius of the marginal's 99 %;
+ * - reachMm(settings, samples): how far the blur reaches, mm (below half a pixel nothing moves).
+ */
+export const BLUR_MODES = Object.freeze({
+  footprint: Object.freeze({
+    passes: 'separable',
+    // Footprints choose their taps per pixel from the table (src/profiles/footprints.js): the frame
+    // keeps the budget, the pixel takes what its scale needs.
+    autoSamples: () => AUTO_MAX_SAMPLES,
+    tapCapacity: (samples) => samples,
+    // The tail is sampled at least a pixel out: the reach is the marginal's 99 % radius.
+    reachMm: (settings) => settings.marginalRadiusMm,
+  }),
+  taps: Object.freeze({
+    passes: 'separable',
+    autoSamples: autoSampleCount,
+    tapCapacity: (samples, auto) => (auto ? AUTO_SAMPLES[AUTO_SAMPLES.length - 1] : samples),
+    reachMm: (settings, samples) => reachOfTaps(settings, samples),
+  }),
+  dense: Object.freeze({
+    passes: 'dense',
+    autoSamples: () => AUTO_MAX_SAMPLES, // unused by the dense pass; kept for a switch back
+    tapCapacity: (samples) => samples,
+    reachMm: (settings) => settings.denseRadiusMm,
+  }),
+});
+
+function reachOfTaps(settings, samples) {
+  const reach = settings.kernelReachMm[samples];
+  if (reach === undefined) throw new RangeError(`planBlur: no kernel reach for ${samples} taps (kernelReachMm has ${Object.keys(settings.kernelReachMm).join(', ')})`);
+  return reach;
+}
+
+/** The BLUR_MODES entry of a method. @param {import('../options.js').Method} method */
+export function blurModeOf(method) {
+  return BLUR_MODES[METHOD_TABLE[method].blur];
+}
+
+/**
+ * The plan of one frame's stage 3.
+ * @typedef {object} BlurPlan
+ * @property {number} samples the taps this frame (the budget for 'footprint')
+ * @property {number} kernelPixels the largest on-screen reach of the kernel, pixels
+ * @property {boolean} blur whether the blur stage runs (not below half a pixel, not switched off)
+ * @property {'separable'|'dense'} passes which passes run
+ */
+
+/**
+ * @param {BlurSettings} settings
+ * @param {number} pixelsPerMm the largest on-screen size of a profile millimetre over the
+ *   subsurface surfaces drawn (0 when none is)
+ * @returns {BlurPlan}
+ */
+export function planBlur(settings, pixelsPerMm) {
+  const mode = blurModeOf(settings.method);
+  const samples = settings.samples === 'auto' ? mode.autoSamples(settings.marginalRadiusMm * pixelsPerMm) : settings.samples;
+  const kernelPixels = mode.reachMm(settings, samples) * pixelsPerMm;
+  return { samples, kernelPixels, blur: settings.scattering && kernelPixels >= MIN_KERNEL_PIXELS, passes: mode.passes };
+}
