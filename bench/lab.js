@@ -12,7 +12,8 @@ import {
 } from 'three';
 import { EffectComposer } from 'three/addons/postprocessing/EffectComposer.js';
 import { OutputPass } from 'three/addons/postprocessing/OutputPass.js';
-import { SubsurfaceScattering, AUTO_SAMPLES, pixelsPerMm, footprintTable } from '/src/index.js';
+import { SubsurfaceScattering, pixelsPerMm } from '/src/index.js';
+import { AUTO_SAMPLES, footprintTable } from '/src/internals.js';
 import { AUTO_STEP_ERROR, footprintRowOf } from '/src/profiles/footprints.js';
 import { readRenderTargetFloats } from '/dev/readback.js';
 import { GpuStageTimer } from '/dev/gpuTimer.js';
@@ -121,13 +122,13 @@ function radiusPixels(surface, radiusMm) {
 /** The pipeline's profile (the scene split's transmittance, the blur and the dense reference). */
 function useProfile(profile) {
   const { sss } = session;
-  if (sss.profileLookup.profile.name !== profile) sss.setKernel({ profile });
+  if (sss.profileLookup.profile.name !== profile) sss.profile = profile;
 }
 
 /** The dense reference with `coverage` as the pipeline's blur stage. */
 function useDense(coverage) {
   const { sss } = session;
-  sss.setKernel({ method: 'dense' });
+  sss.method = 'dense';
   sss.densePass.setCoverage(coverage);
   return sss.densePass;
 }
@@ -246,7 +247,7 @@ async function measure({ kind, profile, method, samples, coverage, frames, sssFr
   } else {
     // 'auto': 'footprint' picks per pixel; the fixed-tap methods per frame, when the frame starts.
     const auto = samples === 'auto';
-    sss.setKernel({ method, samples });
+    Object.assign(sss, { method, samples });
     if (auto) composer.render();
     const perPixel = auto && method === 'footprint';
     Object.assign(row, { method, samples: perPixel ? 'auto' : sss.kernel.length / 4, auto });
@@ -300,8 +301,7 @@ async function readDense({ profile, coverage = 0.997, followSurface = 'drop', fo
   const { sss, composer, renderer, built, width, height } = session;
   useProfile(profile);
   const dense = useDense(coverage);
-  sss.setFollowSurface(followSurface);
-  sss.setForeshortening(foreshortening);
+  Object.assign(sss, { followSurface, foreshortening });
   composer.render();
   const p = built.camera.projectionMatrix.elements;
   return {

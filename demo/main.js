@@ -132,13 +132,13 @@ async function start() {
       sss.scattering = state.sss;
       divider.show(state.split, dividerVisible());
     },
-    kernel: () => sss.setKernel({
+    kernel: () => Object.assign(sss, {
       profile: state.profile, method: state.method, samples: state.samples,
       strength: [...state.strength], falloff: [...state.falloff],
     }),
     material: () => sss.makeSubsurface(material, { widthMm: state.width, translucency: state.translucency, shrinkMm: state.shrink }),
-    followSurface: () => sss.setFollowSurface(state.followSurface, state.depthThreshold),
-    transmittance: () => sss.setTransmittance(state.transmittance),
+    followSurface: () => Object.assign(sss, { followSurface: state.followSurface, depthThresholdMm: state.depthThreshold }),
+    transmittance: () => { sss.transmittance = state.transmittance; },
     lightDepthSize: () => sss.lightDepth.setSize(state.lightDepthSize),
     specular: () => { material.specularIntensity = state.specular; material.roughness = state.roughness; },
     light: () => {
@@ -147,12 +147,12 @@ async function start() {
       light.color.set(state.lightColor);
     },
     split: () => {
-      sss.setSplit(state.split);
+      sss.split = state.split;
       divider.show(state.split, dividerVisible());
     },
     view: () => {
       // Depth view: white at the camera, black 30 units (1.5 m) away, past the head at any zoom.
-      sss.setDebugView(state.view === 'kernel' ? 'final' : state.view, { depthRange: 30 });
+      Object.assign(sss, { debugView: state.view === 'kernel' ? 'final' : state.view, debugDepthRange: 30 });
       kernelCanvas.hidden = state.view !== 'kernel';
       if (state.view === 'kernel') drawKernel(kernelCanvas, sss.kernel, state.method === 'reference' ? null : getProfile(state.profile));
       divider.show(state.split, dividerVisible());

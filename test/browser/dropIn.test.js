@@ -119,13 +119,54 @@ describe('transparent objects', () => {
       const make = (options) => new SSS.SubsurfaceScattering({ scene: built.scene, camera: built.camera, worldUnitInMm: DEFAULTS.worldUnitInMm, ...options });
       make({ method: 'reference', profile: 'skin' }).dispose(); // Jimenez's own profile: nothing to say
       const sss = make({ method: 'footprint', profile: 'marble' });
-      sss.setKernel({ method: 'reference' });
-      sss.setKernel({ samples: 25 }); // the same profile again: said already
-      sss.setKernel({ method: 'marginal' });
+      sss.method = 'reference';
+      sss.samples = 25; // the same profile again: said already
+      sss.method = 'marginal';
       sss.dispose();
     });
     expect(warnings).toHaveLength(1);
     expect(warnings[0]).toMatch(/method 'reference' blurs with Jimenez's built-in skin kernel.*profile 'marble' is used for transmittance only/);
+  });
+});
+
+describe('no frame recompiles a shader', () => {
+  it("'auto' changes its tap count with the on-screen scale by a uniform: the program count stays as the first frame left it", async () => {
+    const r = await page.evaluate(() => {
+      const { SSS, createRenderer, createComposer, buildScene, DEFAULTS } = window.lab;
+      const renderer = createRenderer(DEFAULTS.width, DEFAULTS.height);
+      const built = buildScene('slab', { aspect: 1 });
+      const out = {};
+      for (const method of ['marginal', 'reference', 'footprint']) {
+        const sss = new SSS.SubsurfaceScattering({ scene: built.scene, camera: built.camera, worldUnitInMm: DEFAULTS.worldUnitInMm, method, samples: 'auto' });
+        sss.makeSubsurface(built.subsurface[0], { widthMm: 1 });
+        const composer = createComposer(renderer);
+        composer.addPass(sss);
+        const start = built.camera.position.clone();
+        const frames = [];
+        // Far to near: the kernel grows on screen, so 'auto' takes more taps frame by frame.
+        for (const distance of [6, 3, 1.5, 0.8, 0.5]) {
+          built.camera.position.copy(start).multiplyScalar(distance);
+          built.camera.updateMatrixWorld();
+          composer.render();
+          frames.push({ samples: sss.plan.samples, kernelPixels: sss.plan.kernelPixels, programs: renderer.info.programs.length });
+        }
+        built.camera.position.copy(start);
+        out[method] = frames;
+        sss.dispose();
+        composer.dispose();
+      }
+      renderer.dispose();
+      return out;
+    });
+    for (const [method, frames] of Object.entries(r)) {
+      // The kernel grew on screen over the frames (the test moves the camera in).
+      expect(frames.at(-1).kernelPixels, method).toBeGreaterThan(frames[0].kernelPixels * 4);
+      // Every frame after the first compiled nothing.
+      for (const frame of frames) expect(frame.programs, `${method}: ${JSON.stringify(frames)}`).toBe(frames[0].programs);
+    }
+    // The fixed-tap methods did change their count (the footprints choose per pixel, the frame keeps 63).
+    for (const method of ['marginal', 'reference']) expect(new Set(r[method].map((f) => f.samples)).size, method).toBeGreaterThan(1);
+    expect(new Set(r.footprint.map((f) => f.samples))).toEqual(new Set([63]));
   });
 });
 

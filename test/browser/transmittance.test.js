@@ -223,7 +223,7 @@ describe('transmittance artifacts', () => {
         composer.addPass(sss);
         composer.render();
         const on = await read(renderer, sss.scenePass.renderTarget, 1);
-        sss.setTransmittance(false);
+        sss.transmittance = false;
         composer.render();
         const off = await read(renderer, sss.scenePass.renderTarget, 1);
         let added = 0;
@@ -262,7 +262,7 @@ describe('transmittance artifacts', () => {
       // The slab's front face is 1 mm in front of z = 0: a light at z ≥ 0.001 is on the camera's side of all of it.
       const frame = async (z, transmittance = true) => {
         light.position.set(0.05, 0.02, z);
-        sss.setTransmittance(transmittance);
+        sss.transmittance = transmittance;
         stages = [];
         composer.render();
         return { diffuse: await read(renderer, sss.scenePass.renderTarget, 1), lightDepth: stages.includes('lightDepth') };
@@ -275,7 +275,7 @@ describe('transmittance artifacts', () => {
       const frontOff = await frame(0.3, false);
       const grazing = await frame(0.0011); // just in front of the front face
       const behindAgain = await frame(-0.3);
-      sss.setDebugView('thickness');
+      sss.debugView = 'thickness';
       const thickness = await frame(0.3);
       sss.dispose();
       composer.dispose();

@@ -7,6 +7,7 @@ import { RenderPass } from 'three/addons/postprocessing/RenderPass.js';
 import { ShaderPass } from 'three/addons/postprocessing/ShaderPass.js';
 import { OutputPass } from 'three/addons/postprocessing/OutputPass.js';
 import * as SSS from '/src/index.js';
+import * as INTERNALS from '/src/internals.js';
 import { readRenderTargetFloats } from '/dev/readback.js';
 import { mulberry32 as random } from '/demo/seededRandom.js';
 
@@ -165,10 +166,10 @@ async function run(options) {
     const home = built.light.position.clone();
     built.light.position.x += 4;
     composer.render();
-    sss.setTransmittance(false);
+    sss.transmittance = false;
     composer.render();
     built.light.position.copy(home);
-    sss.setTransmittance(true);
+    sss.transmittance = true;
   }
   composer.render();
   const reads = { output: () => read(renderer, composer.readBuffer) };
@@ -180,7 +181,7 @@ async function run(options) {
       kernel: sss.kernel, kernelPixels: sss.kernelPixels, blurEnabled: sss.plan.blur,
       method: sss.method, profile: sss.profileLookup.profile.name,
       footprint: sss.horizontalPass.footprintTable?.table
-        ? { table: sss.horizontalPass.footprintTable.table, scales: SSS.FOOTPRINT_SCALES } : undefined,
+        ? { table: sss.horizontalPass.footprintTable.table, scales: INTERNALS.FOOTPRINT_SCALES } : undefined,
       projectionScale: [p[0], p[5]], depthThresholdWorld: sss.horizontalPass.depthThresholdWorld,
       thicknessWorld: built.thicknessWorld,
     });

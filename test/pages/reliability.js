@@ -92,7 +92,7 @@ async function cycles({ count = 20 } = {}) {
   const cycle = async (i) => {
     const t = fixtureOn(renderer, { width: WIDTH, height: HEIGHT });
     t.usePipeline({ method: SSS.METHODS[i % SSS.METHODS.length], multisampling: i % 2 ? 4 : 0 });
-    t.sss.setDebugView(i % 3 === 0 ? 'final' : 'transmittance');
+    t.sss.debugView = i % 3 === 0 ? 'final' : 'transmittance';
     const frame = await t.frame();
     t.dispose();
     const error = gl.getError();
@@ -117,35 +117,32 @@ async function cycles({ count = 20 } = {}) {
 // the next option change. The changes go round in a cycle that ends where it began (the last one
 // resets), so the state after each full cycle is the same: what is held then must not grow.
 const CHANGES = [
-  (s) => s.sss.setKernel({ method: 'marginal' }),
-  (s) => s.sss.setKernel({ method: 'footprint', samples: 9 }), // a footprint table of another width
-  (s) => s.sss.setKernel({ profile: 'marble' }),
-  (s) => s.sss.setFollowSurface('lerp', 4),
-  (s) => s.sss.setDebugView('diffuse'),
-  (s) => s.sss.setSplit(0.5),
+  (s) => { s.sss.method = 'marginal'; },
+  (s) => Object.assign(s.sss, { method: 'footprint', samples: 9 }), // a footprint table of another width
+  (s) => { s.sss.profile = 'marble'; },
+  (s) => Object.assign(s.sss, { followSurface: 'lerp', depthThresholdMm: 4 }),
+  (s) => { s.sss.debugView = 'diffuse'; },
+  (s) => { s.sss.split = 0.5; },
   (s) => { s.sss.scattering = false; },
-  (s) => s.sss.setTransmittance(false),
+  (s) => { s.sss.transmittance = false; },
   (s) => { s.sss.multisampling = 4; },
   (s) => s.composer.setSize(WIDTH + 16, HEIGHT + 9),
-  (s) => s.sss.setForeshortening(false),
+  (s) => { s.sss.foreshortening = false; },
   (s) => s.sss.lightDepth.setSize(32),
   (s) => s.sss.makeSubsurface(s.material, { widthMm: 8, translucency: 0.3 }),
-  (s) => s.sss.setKernel({ method: 'reference', samples: 'auto', profile: 'skinBurley' }),
-  (s) => s.sss.setDebugView('thickness'),
-  (s) => s.sss.setKernel({ method: 'dense', profile: 'skin' }),
+  (s) => Object.assign(s.sss, { profile: 'skinBurley', method: 'reference', samples: 'auto' }),
+  (s) => { s.sss.debugView = 'thickness'; },
+  (s) => Object.assign(s.sss, { method: 'dense', profile: 'skin' }),
   (s) => { s.sss.worldUnitInMm = 50; },
   (s) => { s.sss.clear = false; },
-  (s) => s.sss.setTransmittance(true),
+  (s) => { s.sss.transmittance = true; },
   (s) => {
     const { sss } = s;
-    sss.setKernel({ method: 'footprint', samples: 'auto', profile: 'skin' });
-    sss.setFollowSurface('drop', 6);
-    sss.setDebugView('final');
-    sss.setSplit(0);
+    Object.assign(sss, { method: 'footprint', samples: 'auto', profile: 'skin', followSurface: 'drop', depthThresholdMm: 6, debugView: 'final', split: 0 });
     sss.scattering = true;
     sss.multisampling = 'auto';
     s.composer.setSize(WIDTH, HEIGHT);
-    sss.setForeshortening(true);
+    sss.foreshortening = true;
     sss.lightDepth.setSize(64);
     sss.makeSubsurface(s.material, { widthMm: 5, translucency: 0 });
     sss.worldUnitInMm = 100;

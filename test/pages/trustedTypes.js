@@ -14,7 +14,7 @@ async function run() {
   renderer.setSize(64, 36, false);
   document.body.appendChild(renderer.domElement);
   const t = createFixture(THREE, SSS, { renderer, EffectComposer, read: readRenderTargetFloats, width: 64, height: 36 });
-  t.sss.setDebugView('final');
+  t.sss.debugView = 'final';
   const frame = await t.frame();
   const glError = renderer.getContext().getError();
   const violationsWhileRendering = window.__violations?.length ?? null;
