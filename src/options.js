@@ -102,6 +102,7 @@ export const MAX_WIDTH_MM = 1000;
  * @property {string} type the TypeScript type, e.g. "number|'auto'"
  * @property {string} doc one line, units first
  * @property {boolean} [required] the option has no default: leaving it out is an error
+ * @property {string} [defaultDoc] the default as the docs write it, where its value is a code
  */
 
 const SCALE_RANGE = Object.freeze({ min: MIN_SCALE_MM, max: MAX_SCALE_MM, unit: 'mm' });
@@ -166,7 +167,7 @@ export const PIPELINE_SCHEMA = Object.freeze({
     check: (value, name) => checkRgb(name, value, { min: 0, max: 1 }),
   },
   falloff: {
-    default: undefined, type: 'number[]', doc: "RGB, (0, 10]: the shape of method 'reference''s kernel",
+    default: undefined, type: 'number[]', doc: "RGB, (0, 10]: method 'reference' only, its kernel's shape",
     check: (value, name) => checkRgb(name, value, { min: 0, max: 10, minExclusive: true }),
   },
   followSurface: {
@@ -187,7 +188,7 @@ export const PIPELINE_SCHEMA = Object.freeze({
     check: (value, name) => checkInteger(name, value, LIGHT_DEPTH_SIZES.min, LIGHT_DEPTH_SIZES.max, 'pixels'),
   },
   type: {
-    default: HalfFloatType, type: "import('three').TextureDataType", doc: 'THREE.HalfFloatType or THREE.FloatType light targets',
+    default: HalfFloatType, defaultDoc: 'THREE.HalfFloatType', type: "import('three').TextureDataType", doc: 'THREE.HalfFloatType or THREE.FloatType light targets',
     check(value, name) {
       if (value !== HalfFloatType && value !== FloatType) {
         throw new RangeError(`SubsurfaceScattering: ${name} must be THREE.HalfFloatType or THREE.FloatType (light needs HDR targets), got ${describe(value)}`);
@@ -231,7 +232,7 @@ export const MATERIAL_SCHEMA = Object.freeze({
 });
 
 /** Old option names still accepted, each mapped to its schema name (one minor version; see CHANGELOG.md). */
-const MATERIAL_ALIASES = Object.freeze({ strength: 'widthScale' });
+export const MATERIAL_ALIASES = Object.freeze({ strength: 'widthScale' });
 
 /** @param {Readonly<Record<string, OptionSpec>>} schema */
 const defaultsOf = (schema) => Object.freeze(Object.fromEntries(

@@ -1,0 +1,65 @@
+// The options' one source (src/options.js's schema) and what derives from it: the defaults, the
+// checks, the typedefs the TypeScript declarations come from, the README's options table, and the
+// README's export table against the main entry, one for one.
+import { describe, it, expect } from 'vitest';
+import { readFileSync } from 'node:fs';
+import { fileURLToPath } from 'node:url';
+import { Scene, PerspectiveCamera, HalfFloatType } from 'three';
+import {
+  PIPELINE_SCHEMA, MATERIAL_SCHEMA, PIPELINE_DEFAULTS, MATERIAL_DEFAULTS, checkPipelineOptions, checkMaterialOptions,
+} from '../../src/options.js';
+import * as mainEntry from '../../src/index.js';
+import { expectedFiles } from '../../scripts/optionsDoc.js';
+
+const root = fileURLToPath(new URL('../..', import.meta.url));
+
+describe('the options schema', () => {
+  it('gives every option a check, a type and a doc; the defaults are its defaults', () => {
+    for (const [name, spec] of [...Object.entries(PIPELINE_SCHEMA), ...Object.entries(MATERIAL_SCHEMA)]) {
+      expect(typeof spec.check, name).toBe('function');
+      expect(spec.type.length, name).toBeGreaterThan(0);
+      expect(spec.doc.length, name).toBeGreaterThan(10);
+      // A default passes its own check (undefined: the option has none).
+      if (spec.default !== undefined) expect(spec.check(spec.default, name), name).toEqual(spec.default);
+    }
+    expect(PIPELINE_DEFAULTS).toMatchObject({ worldUnitInMm: 1000, method: 'footprint', samples: 'auto', type: HalfFloatType });
+    expect(MATERIAL_DEFAULTS).toEqual({ widthMm: 1, widthScale: 1, transmittance: true, translucency: 0, shrinkMm: 0.6 });
+  });
+
+  it('has one bound per quantity: worldUnitInMm is refused alike by the pipeline, the material hook and transmittance', async () => {
+    const { makeSubsurface } = mainEntry;
+    const { MeshStandardMaterial } = await import('three');
+    const scene = new Scene();
+    const camera = new PerspectiveCamera();
+    const message = /worldUnitInMm must be in \[0\.000001, 1000000\] mm, got 1000000000/;
+    expect(() => checkPipelineOptions({ scene, camera, worldUnitInMm: 1e9 })).toThrow(message);
+    expect(() => makeSubsurface(new MeshStandardMaterial(), { worldUnitInMm: 1e9 })).toThrow(message);
+    expect(() => mainEntry.createTransmittanceUniforms({ lightDepth: null, lookup: null, worldUnitInMm: 1e9 })).toThrow(/lightDepth must be a LightDepthTarget/);
+  });
+
+  it('checks a whole options object once: unknown keys named, explicit undefined refused where there is a default', () => {
+    const scene = new Scene();
+    const camera = new PerspectiveCamera();
+    expect(() => checkPipelineOptions({ scene, camera, samles: 9 })).toThrow(/unknown option "samles"/);
+    expect(() => checkPipelineOptions({ scene, camera, light: undefined })).toThrow(/light must be .* or null, got undefined/);
+    expect(checkPipelineOptions({ scene, camera, strength: undefined }).strength).toBeUndefined();
+    expect(checkPipelineOptions({ scene, camera }).lightDepthSize).toBe(1024);
+    expect(checkMaterialOptions({ strength: 0.5 }).widthScale).toBe(0.5); // the old name
+    expect(() => checkMaterialOptions({ strength: 2 })).toThrow(/strength must be in \[0, 1\], got 2/);
+  });
+});
+
+describe('what derives from the schema', () => {
+  it('the typedefs and the README options table are as scripts/optionsDoc.js writes them (npm run options-doc)', () => {
+    for (const { file, current, expected } of expectedFiles()) expect(current, `${file} is out of date: run npm run options-doc`).toBe(expected);
+  });
+
+  it("the README's export table names every export of the main entry, and nothing else", () => {
+    const readme = readFileSync(`${root}README.md`, 'utf8');
+    const section = readme.slice(readme.indexOf('### What the module exports'), readme.indexOf('#### Options'));
+    const firstColumns = [...section.matchAll(/^\| ([^|]+) \|/gm)].map((m) => m[1]).filter((c) => c !== 'export' && !c.startsWith('---'));
+    const named = firstColumns.flatMap((cell) => [...cell.matchAll(/`(\w+)`/g)].map((m) => m[1]));
+    expect(new Set(named).size).toBe(named.length);
+    expect(named.sort()).toEqual(Object.keys(mainEntry).sort());
+  });
+});
