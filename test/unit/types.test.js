@@ -22,8 +22,8 @@ const COMPILER_OPTIONS = {
   noUnusedLocals: false, isolatedModules: true,
 };
 
-function compile(files, name) {
-  writeFileSync(`${project}/${name}.json`, JSON.stringify({ compilerOptions: COMPILER_OPTIONS, files }, null, 2));
+function compile(files, name, options = {}) {
+  writeFileSync(`${project}/${name}.json`, JSON.stringify({ compilerOptions: { ...COMPILER_OPTIONS, ...options }, files }, null, 2));
   const run = spawnSync(process.execPath, [tsc, '-p', `${name}.json`, '--pretty', 'false'], { cwd: project, encoding: 'utf8' });
   return { status: run.status, output: `${run.stdout}${run.stderr}` };
 }
@@ -46,10 +46,21 @@ beforeAll(() => {
   expect(generate.status, generate.stdout + generate.stderr).toBe(0);
   cpSync(`${root}package.json`, `${installed}/package.json`);
   cpSync(`${root}test/types`, `${project}/src`, { recursive: true });
-  // The README's usage snippet as a TypeScript file.
+  // The README's snippets as TypeScript files: the usage snippet as it is, the later ones with the
+  // usage snippet's variables they build on declared.
   const readme = readFileSync(`${root}README.md`, 'utf8');
-  const snippet = readme.slice(readme.indexOf('## Usage')).match(/```js\n([\s\S]*?)```/)[1];
-  writeFileSync(`${project}/src/readme.ts`, `${snippet}\nexport {};\n`);
+  const snippets = [...readme.slice(readme.indexOf('## Usage')).matchAll(/```(js|ts|jsx)\n([\s\S]*?)```/g)].map(([, lang, code]) => ({ lang, code }));
+  expect(snippets.map((s) => s.lang)).toEqual(['js', 'ts', 'js', 'jsx']);
+  const context = [
+    "import * as THREE from 'three';",
+    'declare const renderer: THREE.WebGLRenderer, scene: THREE.Scene, camera: THREE.PerspectiveCamera;',
+    'declare const light: THREE.SpotLight, skin: THREE.MeshStandardMaterial, pattern: THREE.Texture;',
+  ].join('\n');
+  writeFileSync(`${project}/src/readme.ts`, `${snippets[0].code}\nexport {};\n`);
+  snippets.slice(1).forEach(({ lang, code }, i) => {
+    const withoutThree = code.replace("import * as THREE from 'three';\n", '');
+    writeFileSync(`${project}/src/readme-${i + 1}.${lang === 'jsx' ? 'tsx' : 'ts'}`, `${context}\n${withoutThree}\nexport {};\n`);
+  });
   // The misuses without their directives: the lines after each must be the errors.
   const bare = [];
   for (const line of misuse) {
@@ -62,7 +73,13 @@ beforeAll(() => {
 
 describe('the generated declarations', () => {
   it('compile a strict consumer of the README snippet, every export, the pmndrs pass and the R3F components', () => {
-    const { status, output } = compile(['src/readme.ts', 'src/consumer.ts', 'src/integrations.tsx', 'src/misuse.ts'], 'tsconfig.consumer');
+    const { status, output } = compile(['src/readme.ts', 'src/readme-1.ts', 'src/readme-2.ts', 'src/consumer.ts', 'src/integrations.tsx', 'src/misuse.ts'], 'tsconfig.consumer');
+    expect(output).toBe('');
+    expect(status).toBe(0);
+  }, 120_000);
+
+  it("compile the README's JSX snippet (strict, but its untyped props as plain JavaScript's)", () => {
+    const { status, output } = compile(['src/readme-3.tsx'], 'tsconfig.jsx', { noImplicitAny: false });
     expect(output).toBe('');
     expect(status).toBe(0);
   }, 120_000);
