@@ -26,6 +26,7 @@ import { getProfile } from './profiles/presets.js';
 import { ProfileLookup } from './profiles/ProfileLookup.js';
 import { checkBoolean, checkInteger, checkNumber, checkOneOf, checkOptions } from './support/parameterChecks.js';
 import { describe } from './support/rendererSupport.js';
+import { checkThreeRevision } from './support/threeVersion.js';
 import { PASS_BOOLEANS, booleanFields } from './support/booleanFields.js';
 import { FrameChecks, checkTargetSize, checkTargetLimits } from './support/frameChecks.js';
 import {
@@ -109,6 +110,7 @@ const LIGHT_DEPTH_SIZES = Object.freeze({ min: 16, max: 8192 });
 export class SubsurfaceScattering extends Pass {
   /** @param {SubsurfaceScatteringOptions} options */
   constructor(options) {
+    checkThreeRevision('SubsurfaceScattering'); // first: older releases fail inside the stages
     super();
     if (options === undefined || options === null || typeof options !== 'object' || Array.isArray(options)) {
       throw new TypeError(`SubsurfaceScattering: options must be an object { scene, camera, ... }, got ${describe(options)}`);

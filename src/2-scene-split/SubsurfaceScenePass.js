@@ -19,6 +19,7 @@ import { assertFloatRenderTargets, describe } from '../support/rendererSupport.j
 import { checkOptions } from '../support/parameterChecks.js';
 import { PASS_BOOLEANS, booleanFields } from '../support/booleanFields.js';
 import { preservingRendererState } from '../support/rendererState.js';
+import { checkThreeRevision } from '../support/threeVersion.js';
 
 const ZERO = new Float32Array(4);
 const _clearColor = new Color();
@@ -45,6 +46,7 @@ export class SubsurfaceScenePass extends Pass {
    *   (SubsurfaceScattering passes itself; default: this pass)
    */
   constructor(scene, camera, options = {}) {
+    checkThreeRevision('SubsurfaceScenePass');
     super();
     const { type = HalfFloatType, lightDepth = null, owner = this } = checkOptions('SubsurfaceScenePass options', options, ['type', 'lightDepth', 'owner']);
     if (!scene || scene.isScene !== true) throw new TypeError(`SubsurfaceScenePass: scene must be a THREE.Scene, got ${describe(scene)}`);

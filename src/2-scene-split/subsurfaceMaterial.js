@@ -24,7 +24,7 @@ import finiteGlsl from '../../shaders/common/finite.glsl?raw';
 import { assembleGlsl, enumDefines } from '../support/glsl.js';
 import { checkNumber, checkOneOf, checkOptions } from '../support/parameterChecks.js';
 import { describe } from '../support/rendererSupport.js';
-import { SUPPORTED_THREE, SUPPORTED_THREE_RANGE, threeRelease } from '../support/threeVersion.js';
+import { checkThreeRevision, supportedThreeNote, threeRelease } from '../support/threeVersion.js';
 import { MATERIAL_DEFAULTS } from '../options.js';
 import { ATTACHMENT_DEFINES, DRAW_PHASES, currentDraw } from './subsurfaceTarget.js';
 import {
@@ -66,8 +66,7 @@ function latest(bindings) {
 /** Replaces `needle` in `source`, failing loudly (naming three's release and ours) if three's shader no longer has it. */
 function inject(source, needle, replacement) {
   if (!source.includes(needle)) {
-    throw new Error(`makeSubsurface: "${needle}" not found in the material's shader: ${threeRelease()} is not supported ` +
-      `(supported: three ${SUPPORTED_THREE_RANGE}, r${SUPPORTED_THREE.oldest} to r${SUPPORTED_THREE.newest})`);
+    throw new Error(`makeSubsurface: "${needle}" not found in the material's shader: ${threeRelease()} is not supported ${supportedThreeNote()}`);
   }
   return source.replace(needle, replacement);
 }
@@ -193,6 +192,7 @@ function withWidthScale(options) {
  * @returns {SubsurfaceBinding}
  */
 export function makeSubsurface(material, options = {}, owner = STANDALONE) {
+  checkThreeRevision('makeSubsurface');
   if (!material || material.isMeshStandardMaterial !== true) {
     throw new TypeError(`makeSubsurface: material must be a THREE.MeshStandardMaterial or MeshPhysicalMaterial, got ${describe(material)}`);
   }
