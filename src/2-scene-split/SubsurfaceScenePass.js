@@ -26,6 +26,12 @@ const _clearColor = new Color();
 /** Transparent subsurface materials already warned about (once each). */
 const warnedTransparent = new WeakSet();
 
+/** A material as a message names it: by the name the user gave it, else by its type and its mesh's name. */
+function materialLabel(material, mesh) {
+  if (material.name) return `material "${material.name}"`;
+  return mesh.name ? `the ${material.type} of mesh "${mesh.name}"` : `an unnamed ${material.type} of an unnamed ${mesh.type}`;
+}
+
 /** The category each visible material is drawn in. */
 const CATEGORIES = Object.freeze({ SUBSURFACE: 'subsurface', OPAQUE: 'opaque', TRANSPARENT: 'transparent' });
 
@@ -121,7 +127,7 @@ export class SubsurfaceScenePass extends Pass {
         const category = m.transparent ? CATEGORIES.TRANSPARENT : getSubsurface(m) ? CATEGORIES.SUBSURFACE : CATEGORIES.OPAQUE;
         if (m.transparent && getSubsurface(m) && !warnedTransparent.has(m)) {
           warnedTransparent.add(m);
-          console.warn(`SubsurfaceScattering: material "${m.name || m.uuid}" is transparent, so it is blended over the scattered image without scattering (as three blends transparent objects). Set transparent = false to make it scatter; alphaTest or alphaHash keep its cut-outs.`);
+          console.warn(`SubsurfaceScattering: ${materialLabel(m, object)} is transparent, so it is blended over the scattered image without scattering (as three blends transparent objects). Set transparent = false to make it scatter; alphaTest or alphaHash keep its cut-outs.`);
         }
         categories.set(m, category);
         if (category === CATEGORIES.TRANSPARENT) transparent++;

@@ -1,0 +1,117 @@
+// What a user meets the day they adopt or upgrade (issue 22), against plain three.js as the oracle:
+// a subsurface material drawn outside any pipeline is three's own; the transparent-material
+// warning names what the user named; a pipeline disabled with nothing else drawing its scene says
+// the frame is frozen (0.1's `enabled = false` turned the blur off); renderer.setEffects([sss])
+// draws the composer path's pixels without the renderer's own draw of the scene.
+import { describe, it, expect, beforeAll, afterAll } from 'vitest';
+import { openPage, evaluateFloats } from '../harness/page.js';
+
+let page;
+const warnings = [];
+beforeAll(async () => {
+  page = await openPage('/test/pages/lab.html');
+  page.on('console', (msg) => { if (msg.type() === 'warn') warnings.push(msg.text()); });
+});
+afterAll(async () => {
+  expect(page.problems).toEqual([]);
+  await page.close();
+});
+
+/** Largest |a − b| over RGB, and the fraction of pixels differing by more than `tolerance`. */
+function compare(a, b, tolerance) {
+  let worst = 0;
+  let differing = 0;
+  for (let i = 0; i < a.length / 4; i++) {
+    let d = 0;
+    for (let c = 0; c < 3; c++) d = Math.max(d, Math.abs(a[i * 4 + c] - b[i * 4 + c]));
+    worst = Math.max(worst, d);
+    if (d > tolerance) differing++;
+  }
+  return { worst, differing: differing / (a.length / 4) };
+}
+
+describe('a subsurface material outside the pipeline', () => {
+  it("draws exactly three's own material in a plain RenderPass and in a direct render, after the pipeline drew it with transmittance", async () => {
+    const r = await evaluateFloats(page, async () => {
+      const { THREE, SSS, createRenderer, createComposer, read, buildScene, RenderPass, DEFAULTS } = window.lab;
+      const renderer = createRenderer(DEFAULTS.width, DEFAULTS.height);
+      const built = buildScene('backlit', { thicknessMm: 2, slabSize: 2 });
+      built.scene.add(new THREE.HemisphereLight(0xffffff, 0x332222, 1)); // the front is lit too
+      const material = built.subsurface[0];
+      const plain = createComposer(renderer);
+      plain.addPass(new RenderPass(built.scene, built.camera));
+      const minimap = new THREE.WebGLRenderTarget(DEFAULTS.width, DEFAULTS.height, { type: THREE.HalfFloatType });
+      const drawPlain = async () => {
+        plain.render();
+        renderer.setRenderTarget(minimap);
+        renderer.render(built.scene, built.camera);
+        renderer.setRenderTarget(null);
+        return { pass: await read(renderer, plain.readBuffer), direct: await read(renderer, minimap) };
+      };
+      const threeOwn = await drawPlain(); // before the material is made subsurface
+
+      const sss = new SSS.SubsurfaceScattering({ scene: built.scene, camera: built.camera, light: built.light, worldUnitInMm: DEFAULTS.worldUnitInMm });
+      sss.makeSubsurface(material, { widthMm: 1 });
+      const composer = createComposer(renderer);
+      composer.addPass(sss);
+      composer.render();
+      const pipeline = await read(renderer, composer.readBuffer);
+      sss.setDebugView('transmittance');
+      composer.render();
+      const transmitted = await read(renderer, composer.readBuffer);
+      sss.setDebugView('final');
+      composer.render(); // the pipeline's settings are the material's last ones, light included
+      const outside = await drawPlain();
+      const hooked = material.customProgramCacheKey().includes('subsurface');
+      sss.dispose();
+      composer.dispose();
+      plain.dispose();
+      minimap.dispose();
+      return { threeOwn, outside, pipeline, transmitted, hooked, glError: renderer.getContext().getError() };
+    });
+    expect(r.glError).toBe(0);
+    expect(r.hooked).toBe(true); // the plain draws went through the hooked shader
+    // The light does come through here: the pipeline adds it over most of the slab.
+    let lit = 0;
+    for (let i = 0; i < r.transmitted.length / 4; i++) if (r.transmitted[i * 4] > 1e-3) lit++;
+    expect(lit / (r.transmitted.length / 4)).toBeGreaterThan(0.1);
+    expect(compare(r.pipeline, r.threeOwn.pass, 1e-3).differing).toBeGreaterThan(0.1);
+    // Outside the pipeline: three's own pixels (the latest pipeline's transmittance was added before).
+    for (const path of ['pass', 'direct']) {
+      const { worst, differing } = compare(r.outside[path], r.threeOwn[path], 1e-4);
+      expect(differing, path).toBe(0);
+      expect(worst, path).toBeLessThan(1e-4);
+    }
+  });
+});
+
+describe('messages name what the user named', () => {
+  it("the transparent-material warning names an unnamed material by its type and its mesh's name, never by its uuid", async () => {
+    warnings.length = 0;
+    const r = await page.evaluate(() => {
+      const { THREE, SSS, createRenderer, createComposer, buildScene, DEFAULTS } = window.lab;
+      const renderer = createRenderer(64, 36);
+      const built = buildScene('slab', { aspect: 64 / 36 });
+      const material = built.subsurface[0];
+      material.transparent = true;
+      built.scene.children[0].name = 'ear';
+      const other = new THREE.MeshPhysicalMaterial({ transparent: true, opacity: 0.5 });
+      built.scene.add(new THREE.Mesh(new THREE.PlaneGeometry(0.2, 0.2), other)); // an unnamed mesh
+      const sss = new SSS.SubsurfaceScattering({ scene: built.scene, camera: built.camera, worldUnitInMm: DEFAULTS.worldUnitInMm });
+      sss.makeSubsurface(material);
+      sss.makeSubsurface(other);
+      const composer = createComposer(renderer);
+      composer.addPass(sss);
+      composer.render();
+      composer.render();
+      sss.dispose();
+      composer.dispose();
+      return { uuids: [material.uuid, other.uuid] };
+    });
+    const transparent = warnings.filter((w) => w.includes('is transparent'));
+    expect(transparent).toHaveLength(2);
+    expect(transparent[0]).toMatch(/^SubsurfaceScattering: the MeshStandardMaterial of mesh "ear" is transparent, so it is blended/);
+    expect(transparent[1]).toMatch(/^SubsurfaceScattering: an unnamed MeshPhysicalMaterial of an unnamed Mesh is transparent/);
+    for (const uuid of r.uuids) expect(warnings.join('\n')).not.toContain(uuid);
+  });
+});
