@@ -115,3 +115,76 @@ describe('messages name what the user named', () => {
     for (const uuid of r.uuids) expect(warnings.join('\n')).not.toContain(uuid);
   });
 });
+
+describe('upgrading from 0.1: enabled = false', () => {
+  it('disabled with nothing else drawing its scene, the pipeline warns once that the frame is frozen; with a RenderPass in its place it says nothing', async () => {
+    const frozenWarnings = () => warnings.filter((w) => w.includes('enabled is false and nothing else draws its scene'));
+    warnings.length = 0;
+    // 1. A RenderPass takes over, before or after it in the composer: the scene is drawn, nothing to say.
+    await page.evaluate(() => {
+      const { SSS, createRenderer, createComposer, buildScene, RenderPass, OutputPass, DEFAULTS } = window.lab;
+      const renderer = createRenderer(64, 36);
+      const built = buildScene('slab', { pattern: 'noise', aspect: 64 / 36 });
+      for (const order of ['before', 'after']) {
+        const sss = new SSS.SubsurfaceScattering({ scene: built.scene, camera: built.camera, worldUnitInMm: DEFAULTS.worldUnitInMm });
+        sss.makeSubsurface(built.subsurface[0]);
+        const renderPass = new RenderPass(built.scene, built.camera);
+        renderPass.enabled = false;
+        const composer = createComposer(renderer);
+        for (const pass of order === 'before' ? [renderPass, sss] : [sss, renderPass]) composer.addPass(pass);
+        composer.addPass(new OutputPass());
+        composer.render();
+        sss.enabled = false;
+        renderPass.enabled = true;
+        for (let i = 0; i < 8; i++) {
+          composer.render();
+          if (sss.enabled || sss.enabled) throw new Error('enabled'); // the user reads it too
+        }
+        sss.dispose();
+        composer.dispose();
+      }
+    });
+    expect(frozenWarnings()).toEqual([]);
+    // 2. Disabled, with only an overlay of another scene after it: the composer's buffer keeps the
+    //    last frame while the scene changes.
+    const r = await evaluateFloats(page, async () => {
+      const { THREE, SSS, createRenderer, createComposer, read, buildScene, RenderPass, DEFAULTS } = window.lab;
+      const renderer = createRenderer(64, 36);
+      const built = buildScene('slab', { pattern: 'noise', aspect: 64 / 36 });
+      const sss = new SSS.SubsurfaceScattering({ scene: built.scene, camera: built.camera, worldUnitInMm: DEFAULTS.worldUnitInMm });
+      sss.makeSubsurface(built.subsurface[0]);
+      const hud = new THREE.Scene();
+      const badge = new THREE.Mesh(new THREE.PlaneGeometry(0.3, 0.3), new THREE.MeshBasicMaterial({ color: 0xffff00 }));
+      badge.position.set(-2, 1, 1);
+      hud.add(badge);
+      const overlay = new RenderPass(hud, built.camera);
+      overlay.clear = false;
+      const composer = createComposer(renderer);
+      composer.addPass(sss);
+      composer.addPass(overlay);
+      composer.render();
+      sss.enabled = false;
+      const hookLeft = Object.hasOwn(built.scene, 'onAfterRender'); // watching while disabled
+      const before = await read(renderer, composer.readBuffer);
+      built.subsurface[0].color.setRGB(0.2, 0.2, 1);
+      for (let i = 0; i < 8; i++) composer.render();
+      const frozen = await read(renderer, composer.readBuffer);
+      // Enabled again it draws; the warning is not repeated when disabled again.
+      sss.enabled = true;
+      composer.render();
+      const live = await read(renderer, composer.readBuffer);
+      sss.enabled = false;
+      for (let i = 0; i < 8; i++) composer.render();
+      sss.dispose();
+      const hookAfterDispose = Object.hasOwn(built.scene, 'onAfterRender');
+      composer.dispose();
+      return { before, frozen, live, hookLeft, hookAfterDispose };
+    });
+    expect(frozenWarnings()).toHaveLength(1);
+    expect(frozenWarnings()[0]).toMatch(/set scattering = false \(in version 0\.1 that was enabled = false\)/);
+    expect(compare(r.frozen, r.before, 0).worst).toBe(0); // frozen indeed
+    expect(compare(r.live, r.before, 1e-3).differing).toBeGreaterThan(0.5); // the colour change shows once enabled
+    expect(r.hookLeft).toBe(true);
+    expect(r.hookAfterDispose).toBe(false); // the scene as it was after dispose
+  });
+});
