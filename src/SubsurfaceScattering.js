@@ -135,6 +135,8 @@ export class SubsurfaceScattering extends Pass {
     checkInteger('lightDepthSize', o.lightDepthSize, LIGHT_DEPTH_SIZES.min, LIGHT_DEPTH_SIZES.max, 'pixels');
 
     this.needsSwap = false; // like RenderPass: it draws into the read buffer
+    /** As RenderPass: first in renderer.setEffects([...]) (three r182+), the renderer leaves the scene's draw to it. */
+    this.isRenderPass = true;
     /** As RenderPass: true clears the target first; false draws over it (see render's step 5). */
     this.clear = true;
     /** As RenderPass: with clear false, true ignores the target's earlier depth. */

@@ -188,3 +188,63 @@ describe('upgrading from 0.1: enabled = false', () => {
     expect(r.hookAfterDispose).toBe(false); // the scene as it was after dispose
   });
 });
+
+describe('renderer.setEffects (three r182+)', () => {
+  it("setEffects([sss]) draws the composer path's pixels, and the renderer skips its own draw of the scene (isRenderPass)", async () => {
+    const r = await page.evaluate(async () => {
+      const { THREE, SSS, EffectComposer, OutputPass, buildScene, DEFAULTS } = window.lab;
+      const { width, height } = DEFAULTS;
+      const renderer = new THREE.WebGLRenderer({ antialias: false, outputBufferType: THREE.HalfFloatType });
+      renderer.setPixelRatio(1);
+      renderer.setSize(width, height, false);
+      // No tone mapping: on a renderer with an output buffer, OutputPass's tone mapping in the
+      // composer path would be applied again by the renderer's output (setEffects needs no OutputPass).
+      const built = buildScene('mixed', { intensity: 2 });
+      const sss = new SSS.SubsurfaceScattering({ scene: built.scene, camera: built.camera, worldUnitInMm: DEFAULTS.worldUnitInMm });
+      sss.makeSubsurface(built.subsurface[0], { widthMm: 1 });
+      // Draws of an ordinary mesh per frame: the pipeline's own is one (its first call).
+      const ordinary = built.scene.children.find((o) => o.isMesh && !built.subsurface.includes(o.material));
+      let draws = 0;
+      ordinary.onBeforeRender = () => { draws++; };
+      const gl = renderer.getContext();
+      const canvas = () => {
+        const pixels = new Uint8Array(width * height * 4);
+        gl.readPixels(0, 0, width, height, gl.RGBA, gl.UNSIGNED_BYTE, pixels);
+        return Array.from(pixels);
+      };
+      const frame = (draw) => { draws = 0; draw(); return { pixels: canvas(), draws }; };
+
+      const composer = new EffectComposer(renderer, new THREE.WebGLRenderTarget(width, height, { type: THREE.HalfFloatType }));
+      composer.addPass(sss);
+      composer.addPass(new OutputPass());
+      composer.render(); // compile
+      const viaComposer = frame(() => composer.render());
+      renderer.setEffects([sss]);
+      renderer.render(built.scene, built.camera); // compile
+      const viaEffects = frame(() => renderer.render(built.scene, built.camera));
+      sss.isRenderPass = false;
+      renderer.setEffects([sss]);
+      const withSceneDraw = frame(() => renderer.render(built.scene, built.camera));
+      renderer.setEffects(null);
+      sss.dispose();
+      composer.dispose();
+      const glError = gl.getError();
+      renderer.dispose();
+      return { viaComposer, viaEffects, withSceneDraw, glError, revision: THREE.REVISION };
+    });
+    expect(Number(r.revision)).toBeGreaterThanOrEqual(182);
+    expect(r.glError).toBe(0);
+    let worst = 0;
+    let lit = 0;
+    for (let i = 0; i < r.viaComposer.pixels.length; i++) {
+      worst = Math.max(worst, Math.abs(r.viaComposer.pixels[i] - r.viaEffects.pixels[i]));
+      if (i % 4 === 0 && r.viaComposer.pixels[i] > 10) lit++;
+    }
+    expect(lit).toBeGreaterThan(1000); // a picture, not a black frame
+    expect(worst).toBeLessThanOrEqual(1); // 8-bit canvas: at most one level apart
+    expect(r.withSceneDraw.pixels).toEqual(r.viaEffects.pixels);
+    expect(r.viaComposer.draws).toBe(1);
+    expect(r.viaEffects.draws).toBe(1); // the renderer's own draw skipped
+    expect(r.withSceneDraw.draws).toBe(2); // without isRenderPass it draws the scene first, for nothing
+  });
+});
