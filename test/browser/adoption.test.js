@@ -4,18 +4,12 @@
 // the frame is frozen (0.1's `enabled = false` turned the blur off); renderer.setEffects([sss])
 // draws the composer path's pixels without the renderer's own draw of the scene.
 import { describe, it, expect, beforeAll, afterAll } from 'vitest';
-import { openPage, evaluateFloats } from '../harness/page.js';
+import { openLabPage, closeCheckedPage, evaluateFloats } from '../harness/page.js';
 
 let page;
 const warnings = [];
-beforeAll(async () => {
-  page = await openPage('/test/pages/lab.html');
-  page.on('console', (msg) => { if (msg.type() === 'warn') warnings.push(msg.text()); });
-});
-afterAll(async () => {
-  expect(page.problems).toEqual([]);
-  await page.close();
-});
+beforeAll(async () => { page = await openLabPage(warnings); });
+afterAll(() => closeCheckedPage(page));
 
 /** Largest |a − b| over RGB, and the fraction of pixels differing by more than `tolerance`. */
 function compare(a, b, tolerance) {
