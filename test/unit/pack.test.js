@@ -3,7 +3,7 @@
 // installed it would (three and the optional peers resolvable beside it, nothing else).
 import { describe, it, expect } from 'vitest';
 import { execFileSync } from 'node:child_process';
-import { mkdtempSync, mkdirSync, readFileSync, readdirSync, rmSync, symlinkSync, writeFileSync, existsSync } from 'node:fs';
+import { existsSync, mkdirSync, mkdtempSync, readFileSync, readdirSync, renameSync, rmSync, symlinkSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join, relative } from 'node:path';
 import { fileURLToPath } from 'node:url';
@@ -47,7 +47,7 @@ describe('npm pack', () => {
       const app = join(work, 'app');
       mkdirSync(join(app, 'node_modules', '@react-three'), { recursive: true });
       execFileSync('tar', ['-xzf', join(work, report.filename), '-C', join(app, 'node_modules')]);
-      execFileSync('mv', [join(app, 'node_modules', 'package'), join(app, 'node_modules', 'three-separable-sss')]);
+      renameSync(join(app, 'node_modules', 'package'), join(app, 'node_modules', 'three-separable-sss'));
       for (const peer of PEERS) symlinkSync(join(root, 'node_modules', peer), join(app, 'node_modules', peer), 'dir');
       writeFileSync(join(app, 'package.json'), '{ "private": true, "type": "module" }\n');
       const subpaths = Object.keys(pkg.exports);
