@@ -38,6 +38,8 @@ describe('npm pack', () => {
       const [report] = JSON.parse(stdout.slice(stdout.search(/^\[$/m)));
       expect(report.name).toBe('three-separable-sss');
       expect(report.version).toBe(pkg.version);
+      // The README's install steps name this tarball.
+      expect(readFileSync(join(root, 'README.md'), 'utf8')).toContain(`npm install three /path/to/${report.filename}`);
       const packed = report.files.map((f) => f.path).sort();
       expect(packed).toEqual(expectedFiles());
       for (const path of packed) expect(path).not.toMatch(/^(test|bench|docs|demo|dev|scripts|public|dist\/demo|dist-demo|node_modules)\//);
