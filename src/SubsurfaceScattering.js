@@ -25,6 +25,8 @@ import { getProfile } from './profiles/presets.js';
 import { ProfileLookup } from './profiles/ProfileLookup.js';
 import { checkBoolean, checkNumber, checkOptions } from './support/parameterChecks.js';
 import { describe } from './support/rendererSupport.js';
+import { checkThreeRevision } from './support/threeVersion.js';
+import { stopWatching, warnWhenDisabledFreezes, watchRendered } from './support/frozenFrameWatch.js';
 import { PASS_BOOLEANS, booleanFields } from './support/booleanFields.js';
 import { FrameChecks, checkTargetSize, checkTargetLimits } from './support/frameChecks.js';
 import { warnDeprecated } from './support/deprecation.js';
@@ -82,10 +84,13 @@ export { MIN_KERNEL_PIXELS } from './3-blur/samplingModel.js';
 export class SubsurfaceScattering extends Pass {
   /** @param {SubsurfaceScatteringOptions} options */
   constructor(options) {
+    checkThreeRevision('SubsurfaceScattering'); // first: older releases fail inside the stages
     super();
     const o = checkPipelineOptions(options); // every option checked here, once, against the schema
 
     this.needsSwap = false; // like RenderPass: it draws into the read buffer
+    /** As RenderPass: first in renderer.setEffects([...]) (three r182+), the renderer leaves the scene's draw to it. */
+    this.isRenderPass = true;
     /** As RenderPass: true clears the target first; false draws over it (see render's step 5). */
     this.clear = true;
     /** As RenderPass: with clear false, true ignores the target's earlier depth. */
@@ -338,6 +343,7 @@ export class SubsurfaceScattering extends Pass {
   render(renderer, writeBuffer, readBuffer) {
     const { scene, camera } = this;
     const target = this.renderToScreen ? null : readBuffer;
+    watchRendered(this, renderer); // for the warning when disabled with nothing else drawing the scene
     // 0. Checks: the size against the GPU's limits (a RangeError), the camera, the light and the
     //    scene (a warning, once each; the frame is drawn as three would draw it).
     this._limits = checkTargetLimits(renderer, this._size, 'SubsurfaceScattering');
@@ -494,6 +500,7 @@ export class SubsurfaceScattering extends Pass {
 
   /** Frees every target, material, texture and quad the pipeline created, and unbinds its materials. */
   dispose() {
+    stopWatching(this);
     this.subsurfaceMaterials.dispose();
     this.scenePass.dispose();
     this.blur.dispose();
@@ -580,6 +587,11 @@ export class SubsurfaceScattering extends Pass {
 
 // enabled, needsSwap, clear and renderToScreen (three's Pass fields), and clearDepth: booleans only.
 booleanFields(SubsurfaceScattering.prototype, [...PASS_BOOLEANS, 'clearDepth']);
+// 0.1's `enabled = false` turned the blur off; now it skips the pass. Said once where it freezes the frame.
+warnWhenDisabledFreezes(SubsurfaceScattering.prototype, 'SubsurfaceScattering: enabled is false and nothing else draws its ' +
+  'scene, so the composer shows the last frame it drew, frozen (enabled = false skips the pass, as for any pass). To turn ' +
+  'the blur off, set scattering = false (in version 0.1 that was enabled = false); to draw the scene without the ' +
+  'pipeline, enable a RenderPass in its place.');
 
 /** What setKernel accepts. */
 const KERNEL_OPTIONS = Object.freeze(['profile', 'method', 'samples', 'strength', 'falloff']);

@@ -19,11 +19,18 @@ import { assertFloatRenderTargets, describe } from '../support/rendererSupport.j
 import { checkOptions } from '../support/parameterChecks.js';
 import { PASS_BOOLEANS, booleanFields } from '../support/booleanFields.js';
 import { preservingRendererState } from '../support/rendererState.js';
+import { checkThreeRevision } from '../support/threeVersion.js';
 
 const ZERO = new Float32Array(4);
 const _clearColor = new Color();
 /** Transparent subsurface materials already warned about (once each). */
 const warnedTransparent = new WeakSet();
+
+/** A material as a message names it: by the name the user gave it, else by its type and its mesh's name. */
+function materialLabel(material, mesh) {
+  if (material.name) return `material "${material.name}"`;
+  return mesh.name ? `the ${material.type} of mesh "${mesh.name}"` : `an unnamed ${material.type} of an unnamed ${mesh.type}`;
+}
 
 /** The category each visible material is drawn in. */
 const CATEGORIES = Object.freeze({ SUBSURFACE: 'subsurface', OPAQUE: 'opaque', TRANSPARENT: 'transparent' });
@@ -45,6 +52,7 @@ export class SubsurfaceScenePass extends Pass {
    *   (SubsurfaceScattering passes itself; default: this pass)
    */
   constructor(scene, camera, options = {}) {
+    checkThreeRevision('SubsurfaceScenePass');
     super();
     const { type = HalfFloatType, lightDepth = null, owner = this } = checkOptions('SubsurfaceScenePass options', options, ['type', 'lightDepth', 'owner']);
     if (!scene || scene.isScene !== true) throw new TypeError(`SubsurfaceScenePass: scene must be a THREE.Scene, got ${describe(scene)}`);
@@ -119,7 +127,7 @@ export class SubsurfaceScenePass extends Pass {
         const category = m.transparent ? CATEGORIES.TRANSPARENT : getSubsurface(m) ? CATEGORIES.SUBSURFACE : CATEGORIES.OPAQUE;
         if (m.transparent && getSubsurface(m) && !warnedTransparent.has(m)) {
           warnedTransparent.add(m);
-          console.warn(`SubsurfaceScattering: material "${m.name || m.uuid}" is transparent, so it is blended over the scattered image without scattering (as three blends transparent objects). Set transparent = false to make it scatter; alphaTest or alphaHash keep its cut-outs.`);
+          console.warn(`SubsurfaceScattering: ${materialLabel(m, object)} is transparent, so it is blended over the scattered image without scattering (as three blends transparent objects). Set transparent = false to make it scatter; alphaTest or alphaHash keep its cut-outs.`);
         }
         categories.set(m, category);
         if (category === CATEGORIES.TRANSPARENT) transparent++;

@@ -2,13 +2,16 @@
 // onBeforeCompile so that, drawn into the multi-target (src/2-scene-split/subsurfaceTarget.js) in
 // the SPLIT phase, it writes its diffuse light (direct + indirect, plus transmittance) to the
 // diffuse attachment, linear view depth and scattering width to the surface attachment, and keeps
-// specular + emissive in the colour attachment. Drawn anywhere else it renders exactly as before,
-// plus transmittance when enabled.
+// specular + emissive in the colour attachment. Drawn by no pipeline (a plain RenderPass, a
+// minimap, a cube camera) it renders exactly as three's own material: no transmittance either,
+// which belongs to a pipeline's light (with the latest pipeline's, 3.38 % of a back-lit scene's
+// pixels differed from three's).
 //
 // One material can serve several pipelines: each binds its own settings (width, light, profile,
-// debug output) to it, and every draw takes the settings of the pipeline drawing (draws outside
-// any pipeline take the latest binding's). One program serves them all: transmittance is a uniform
-// switch, not a define. Disposing one pipeline unbinds it; the last unbind restores the material.
+// debug output) to it, and every draw takes the settings of the pipeline drawing (a pipeline
+// without settings of its own, such as a SubsurfaceScenePass used alone, takes the latest
+// binding's). One program serves them all: transmittance is a uniform switch, not a define.
+// Disposing one pipeline unbinds it; the last unbind restores the material.
 //
 // Our GLSL goes in at fixed points of three's MeshStandard/MeshPhysical fragment shader (`inject`,
 // which fails loudly when three's shader no longer has the point); the declarations are assembled
@@ -24,7 +27,7 @@ import finiteGlsl from '../../shaders/common/finite.glsl?raw';
 import { assembleGlsl, enumDefines } from '../support/glsl.js';
 import { checkOneOf, checkOptions } from '../support/parameterChecks.js';
 import { describe } from '../support/rendererSupport.js';
-import { SUPPORTED_THREE, SUPPORTED_THREE_RANGE, threeRelease } from '../support/threeVersion.js';
+import { checkThreeRevision, supportedThreeNote, threeRelease } from '../support/threeVersion.js';
 import { MATERIAL_DEFAULTS, MATERIAL_SCHEMA, PIPELINE_SCHEMA, checkOption } from '../options.js';
 import { ATTACHMENT_DEFINES, DRAW_PHASES, currentDraw } from './subsurfaceTarget.js';
 import {
@@ -66,8 +69,7 @@ function latest(bindings) {
 /** Replaces `needle` in `source`, failing loudly (naming three's release and ours) if three's shader no longer has it. */
 function inject(source, needle, replacement) {
   if (!source.includes(needle)) {
-    throw new Error(`makeSubsurface: "${needle}" not found in the material's shader: ${threeRelease()} is not supported ` +
-      `(supported: three ${SUPPORTED_THREE_RANGE}, r${SUPPORTED_THREE.oldest} to r${SUPPORTED_THREE.newest})`);
+    throw new Error(`makeSubsurface: "${needle}" not found in the material's shader: ${threeRelease()} is not supported ${supportedThreeNote()}`);
   }
   return source.replace(needle, replacement);
 }
@@ -111,14 +113,16 @@ function patch(material) {
   };
 
   // Per draw: what to write (the phase) and whose settings (the pipeline drawing, else the latest
-  // binding). Three uploads uniforms once per material per render call, which is all these change at.
+  // binding; none outside any pipeline: three's own output). Three uploads uniforms once per
+  // material per render call, which is all these change at.
   material.onBeforeRender = function (renderer, scene, camera, geometry, object, group) {
     previous.onBeforeRender.call(this, renderer, scene, camera, geometry, object, group);
     const draw = currentDraw(renderer.getRenderTarget());
     uniforms.sssSplit.value = draw.phase === DRAW_PHASES.SPLIT;
     uniforms.sssDepthOnly.value = draw.phase === DRAW_PHASES.DEPTH;
-    const binding = bindings.get(draw.owner) ?? latest(bindings);
+    const binding = draw.owner === null ? undefined : bindings.get(draw.owner) ?? latest(bindings);
     if (binding) applyBinding(uniforms, binding, scene, camera);
+    else uniforms.sssTransmits.value = false;
   };
 
   const state = {
@@ -176,8 +180,8 @@ function withWidthScale(options) {
 
 /**
  * Makes a MeshStandardMaterial or MeshPhysicalMaterial subsurface-scattering (idempotent: a second
- * call with the same owner updates the options). The material keeps rendering normally outside
- * SubsurfaceScattering.
+ * call with the same owner updates the options). Drawn by no pipeline, the material renders
+ * exactly as three's own (without transmittance).
  * @param {import('three').MeshStandardMaterial} material
  * @param {object} [options]
  * @param {number} [options.widthMm=1] scattering width: millimetres of material per profile
@@ -188,10 +192,11 @@ function withWidthScale(options) {
  * @param {object|null} [options.transmittance=null] light through thin parts:
  *   `{ lightDepth: LightDepthTarget, lookup: ProfileLookup, translucency?, shrinkMm? }`
  * @param {object} [owner] the pipeline these settings are for (SubsurfaceScattering passes itself);
- *   omitted: settings of their own, used wherever no pipeline with settings of its own draws
+ *   omitted: settings of their own, used wherever a pipeline without settings of its own draws
  * @returns {SubsurfaceBinding}
  */
 export function makeSubsurface(material, options = {}, owner = STANDALONE) {
+  checkThreeRevision('makeSubsurface');
   if (!material || material.isMeshStandardMaterial !== true) {
     throw new TypeError(`makeSubsurface: material must be a THREE.MeshStandardMaterial or MeshPhysicalMaterial, got ${describe(material)}`);
   }
@@ -249,8 +254,8 @@ export function makeSubsurface(material, options = {}, owner = STANDALONE) {
 }
 
 /**
- * The settings a material made subsurface draws with outside any pipeline (its latest binding),
- * or undefined for a material that is not subsurface.
+ * The latest settings bound to a material made subsurface (those a pipeline without settings of its
+ * own draws it with), or undefined for a material that is not subsurface.
  * @param {import('three').Material} material
  * @returns {SubsurfaceBinding|undefined}
  */

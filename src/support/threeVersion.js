@@ -1,7 +1,9 @@
 // The three.js releases this library supports: the oldest and the newest the version matrix runs
 // the browser tests against (scripts/threeMatrix.js, in CI), and package.json's peer range, which
 // a unit test holds equal to SUPPORTED_THREE_RANGE. The material hook injects into three's shader
-// chunks at fixed points, so outside the range it may fail; its error names both.
+// chunks at fixed points, so outside the range it may fail; its error names both. The constructors
+// check REVISION first (checkThreeRevision): on r160 the multi-target's `textures` (r163+) is
+// missing and the page died with "Cannot read properties of undefined (reading '0')".
 import { REVISION } from 'three';
 
 /** The oldest and newest supported three releases, as REVISION numbers (0.168.0 is 168). */
@@ -19,4 +21,29 @@ export function threeRelease() {
 export function isSupportedThree(revision = REVISION) {
   const r = Number.parseInt(revision, 10);
   return r >= SUPPORTED_THREE.oldest && r <= SUPPORTED_THREE.newest;
+}
+
+/** "(supported: three >=0.168.0 <0.188.0, r168 to r187)", the end of every version message. */
+export function supportedThreeNote() {
+  return `(supported: three ${SUPPORTED_THREE_RANGE}, r${SUPPORTED_THREE.oldest} to r${SUPPORTED_THREE.newest})`;
+}
+
+let warnedNewer = false;
+
+/**
+ * Checks the loaded three release before anything is built: older than the oldest supported one
+ * is an Error naming it and the range (such releases lack what the stages use); newer than the
+ * newest is one console warning (untested, it may work: the material hook still fails loudly if
+ * three's shader chunks changed).
+ * @param {string} who what is being built, e.g. 'SubsurfaceScattering'
+ * @param {string} [revision] three's REVISION (a parameter for the tests)
+ */
+export function checkThreeRevision(who, revision = REVISION) {
+  const r = Number.parseInt(revision, 10);
+  if (r > SUPPORTED_THREE.newest) {
+    if (!warnedNewer) console.warn(`${who}: three r${revision} is newer than the releases this version was tested with ${supportedThreeNote()}`);
+    warnedNewer = true;
+    return;
+  }
+  if (!(r >= SUPPORTED_THREE.oldest)) throw new Error(`${who}: three r${revision} is not supported ${supportedThreeNote()}`);
 }

@@ -2,18 +2,12 @@
 // as the oracle: transparent objects, passes before and after it, depth, MSAA, camera switches,
 // two pipelines on one material, lights outside the scene, insertPass/removePass, clear colour.
 import { describe, it, expect, beforeAll, afterAll } from 'vitest';
-import { openPage, evaluateFloats } from '../harness/page.js';
+import { openLabPage, closeCheckedPage, evaluateFloats } from '../harness/page.js';
 
 let page;
 const warnings = [];
-beforeAll(async () => {
-  page = await openPage('/test/pages/lab.html');
-  page.on('console', (msg) => { if (msg.type() === 'warn') warnings.push(msg.text()); });
-});
-afterAll(async () => {
-  expect(page.problems).toEqual([]);
-  await page.close();
-});
+beforeAll(async () => { page = await openLabPage(warnings); });
+afterAll(() => closeCheckedPage(page));
 
 /** Largest |a − b| over RGB of the pixels `where(i)` picks (all by default), and how many it looked at. */
 function maxDifference(a, b, where = () => true) {

@@ -1,6 +1,6 @@
 // Helpers for browser tests: connect to the run's shared Chromium, open a page served by the run's
 // Vite server, collect console errors, and read float pixel data back from the page.
-import { inject, afterAll } from 'vitest';
+import { inject, afterAll, expect } from 'vitest';
 import puppeteer from 'puppeteer-core';
 import { openReadyPage } from '../../dev/browser.js';
 
@@ -29,6 +29,23 @@ export async function browser() {
  */
 export async function openPage(path, { width = 320, height = 180, ...options } = {}) {
   return openReadyPage(await browser(), new URL(path, inject('baseUrl')).href, { width, height, ...options });
+}
+
+/**
+ * Opens the lab page (test/pages/lab.html), pushing the text of each console warning it logs
+ * into `warnings`.
+ * @param {string[]} warnings
+ */
+export async function openLabPage(warnings) {
+  const page = await openPage('/test/pages/lab.html');
+  page.on('console', (msg) => { if (msg.type() === 'warn') warnings.push(msg.text()); });
+  return page;
+}
+
+/** Closes `page` after checking it logged no error, threw nothing and failed no request. */
+export async function closeCheckedPage(page) {
+  expect(page.problems).toEqual([]);
+  await page.close();
 }
 
 /**
