@@ -102,6 +102,7 @@ export class SubsurfaceScattering extends Pass {
     this._worldUnitInMm = o.worldUnitInMm;
     this._depthThresholdMm = o.depthThresholdMm;
     this._stageTimer = null;
+    /** @internal The profile's GPU tables. */
     this.profileLookup = new ProfileLookup(getProfile(o.profile));
     this.lightDepth = o.light ? new LightDepthTarget(o.light, { size: o.lightDepthSize }) : null;
     this._transmittance = o.light !== null;
@@ -114,7 +115,9 @@ export class SubsurfaceScattering extends Pass {
     this._checks = new FrameChecks('SubsurfaceScattering');
 
     // Stages 2, 3 and 4.
+    /** @internal */
     this.scenePass = new SubsurfaceScenePass(o.scene, o.camera, { type: o.type, owner: this });
+    /** @internal */
     this.blur = new BlurStage({
       type: o.type, profileLookup: this.profileLookup, method: o.method, samples: o.samples, strength: o.strength, falloff: o.falloff,
       surface: {
@@ -122,6 +125,7 @@ export class SubsurfaceScattering extends Pass {
         followSurface: o.followSurface, depthThresholdWorld: o.depthThresholdMm / o.worldUnitInMm, foreshortening: o.foreshortening,
       },
     });
+    /** @internal */
     this.composePass = new SubsurfaceComposePass({
       colorTexture: this.scenePass.colorTexture,
       surfaceTexture: this.scenePass.surfaceTexture,
@@ -130,7 +134,7 @@ export class SubsurfaceScattering extends Pass {
       depthTexture: this.scenePass.depthTexture,
     });
     this._debug = { view: 'final', depthRange: 100, thicknessRangeMm: 10 };
-    /** The materials made subsurface through this pipeline (see makeSubsurface). */
+    /** @internal The materials made subsurface through this pipeline (see makeSubsurface; `materials` is the public view). */
     this.subsurfaceMaterials = new PipelineMaterials(this, () => ({
       worldUnitInMm: this.worldUnitInMm,
       lightDepth: this.transmittance ? this.lightDepth : null,
