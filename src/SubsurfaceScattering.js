@@ -136,6 +136,11 @@ export class SubsurfaceScattering extends Pass {
     this.clear = true;
     /** As RenderPass: with clear false, true ignores the target's earlier depth. */
     this.clearDepth = false;
+    /**
+     * Documented-internal switch (the bench turns it off for one measure: what the skip saves):
+     * the light depth pass is skipped while the light reaches no subsurface mesh from behind.
+     */
+    this.skipsUnreadLightDepth = true;
     this._clearColor = null;
     this._clearAlpha = null;
     this._scene = scene;
@@ -319,7 +324,7 @@ export class SubsurfaceScattering extends Pass {
     checks.end();
     // 1. Light depth: linear depth seen from the light, for transmittance (not for a light that is
     //    off, nor one that reaches no subsurface mesh from behind: its map would go unread).
-    if (lightWorks && isShining(this.lightDepth.light, scene, camera) && this._transmits(scene, camera)) {
+    if (lightWorks && isShining(this.lightDepth.light, scene, camera) && (!this.skipsUnreadLightDepth || this._transmits(scene, camera))) {
       this._stage('lightDepth', () => this.lightDepth.render(renderer, scene));
     } else {
       this.lightDepth?.invalidate();
@@ -355,7 +360,7 @@ export class SubsurfaceScattering extends Pass {
    * @param {import('three').WebGLRenderer} renderer
    */
   renderScattering(renderer) {
-    this.blur.render(renderer, this.camera, (stage, draw) => this._stage(stage, draw));
+    this.blur.render(renderer, this.camera, (stage, draw) => this._stage(stage, draw), this.scenePass.subsurfaceBox);
   }
 
   /** @private @param {StageName} name @param {() => void} draw */
@@ -573,8 +578,8 @@ export class SubsurfaceScattering extends Pass {
   }
 }
 
-// enabled, needsSwap, clear and renderToScreen (three's Pass fields), and clearDepth: booleans only.
-booleanFields(SubsurfaceScattering.prototype, [...PASS_BOOLEANS, 'clearDepth']);
+// enabled, needsSwap, clear and renderToScreen (three's Pass fields), clearDepth and skipsUnreadLightDepth: booleans only.
+booleanFields(SubsurfaceScattering.prototype, [...PASS_BOOLEANS, 'clearDepth', 'skipsUnreadLightDepth']);
 
 /** What setKernel accepts. */
 const KERNEL_OPTIONS = Object.freeze(['profile', 'method', 'samples', 'strength', 'falloff']);

@@ -16,6 +16,7 @@
 import { LessEqualDepth } from 'three';
 import parsGlsl from '../../shaders/2-scene-split/material/pars.glsl?raw';
 import depthOnlyGlsl from '../../shaders/2-scene-split/material/depthOnly.glsl?raw';
+import hiddenGlsl from '../../shaders/2-scene-split/material/hidden.vert.glsl?raw';
 import transmittedLightGlsl from '../../shaders/2-scene-split/material/transmittedLight.glsl?raw';
 import splitGlsl from '../../shaders/2-scene-split/material/split.glsl?raw';
 import clearcoatGlsl from '../../shaders/2-scene-split/material/clearcoat.glsl?raw';
@@ -77,6 +78,7 @@ function patch(material) {
   const uniforms = {
     sssSplit: { value: false },
     sssDepthOnly: { value: false },
+    sssHidden: { value: false },
     sssWidthWorld: { value: 0 },
     sssWidthScale: { value: 1 },
     sssDebugOutput: { value: 0 },
@@ -104,6 +106,10 @@ function patch(material) {
     fs = inject(fs, '#include <opaque_fragment>', `${clearcoatGlsl}\n#include <opaque_fragment>`);
     fs = inject(fs, '#include <dithering_fragment>', `#include <dithering_fragment>\n${outputGlsl}`);
     shader.fragmentShader = fs;
+    let vs = shader.vertexShader;
+    vs = inject(vs, 'void main() {', 'uniform bool sssHidden; // true in the scene split\'s first call without the depth prepass\nvoid main() {');
+    vs = inject(vs, '#include <fog_vertex>', `#include <fog_vertex>\n${hiddenGlsl}`);
+    shader.vertexShader = vs;
   };
 
   material.customProgramCacheKey = function () {
@@ -117,6 +123,7 @@ function patch(material) {
     const draw = currentDraw(renderer.getRenderTarget());
     uniforms.sssSplit.value = draw.phase === DRAW_PHASES.SPLIT;
     uniforms.sssDepthOnly.value = draw.phase === DRAW_PHASES.DEPTH;
+    uniforms.sssHidden.value = draw.phase === DRAW_PHASES.HIDDEN;
     const binding = bindings.get(draw.owner) ?? latest(bindings);
     if (binding) applyBinding(uniforms, binding, scene, camera);
   };
