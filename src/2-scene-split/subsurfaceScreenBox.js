@@ -5,8 +5,11 @@
 // scattered light on subsurface pixels only. The head at 1280×720 covers about a third of the frame.
 //
 // Where the bounds cannot be trusted the box is the whole frame: a mesh drawn without frustum
-// culling (three does not trust its bounds either), a displacement map (it moves vertices beyond
-// the geometry's box), an array camera (several views), a corner on or behind the camera's plane.
+// culling (three does not trust its bounds either), a skinned mesh (its box is computed once, in
+// whatever pose it had then; recomputing it costs a pass over its vertices per frame), a
+// displacement map (it moves vertices beyond the geometry's box), an array camera (several
+// views), a corner on or behind the camera's plane. Morph targets are inside the geometry's box
+// (three's computeBoundingBox takes them in).
 import { Box2, Vector2, Vector3, Vector4 } from 'three';
 
 /** Pixels added on every side: rasterisation covers a pixel whose centre is inside, a box edge may round across it. */
@@ -18,7 +21,7 @@ const _ndc = new Vector2();
 
 /** The bounding box three keeps for `object` (its own for skinned and instanced meshes, else its geometry's), or null. */
 function boundsOf(object) {
-  if (object.boundingBox !== undefined) { // SkinnedMesh, InstancedMesh, BatchedMesh
+  if (object.boundingBox !== undefined) { // InstancedMesh, BatchedMesh (SkinnedMesh: not trusted)
     if (object.boundingBox === null) object.computeBoundingBox();
     return object.boundingBox;
   }
@@ -28,7 +31,7 @@ function boundsOf(object) {
   return geometry.boundingBox;
 }
 
-const trusted = (object) => object.frustumCulled !== false
+const trusted = (object) => object.frustumCulled !== false && object.isSkinnedMesh !== true
   && !(Array.isArray(object.material) ? object.material : [object.material]).some((m) => m?.displacementMap);
 
 /**
@@ -60,8 +63,9 @@ export function subsurfaceScreenBox(meshes, camera, width, height) {
   if (camera.isArrayCamera) return null;
   _bounds.makeEmpty();
   for (const object of meshes) {
+    if (!trusted(object)) return null;
     const box = boundsOf(object);
-    if (!box || !trusted(object)) return null;
+    if (!box) return null;
     if (box.isEmpty()) continue;
     if (!addProjected(_bounds, box, object, camera)) return null;
   }

@@ -120,11 +120,12 @@ export class BlurStage {
    */
   render(renderer, camera, timed, box = null) {
     for (const pass of this.surfacePasses) pass.camera = camera;
-    this._scissor(renderer, this.confineToSubsurface ? box : null);
+    // The scissor's clears (when the box moved) are timed with the first pass.
+    const scissored = () => this._scissor(renderer, this.confineToSubsurface ? box : null);
     if (METHOD_TABLE[this.method].blur === 'dense') {
-      timed('dense', () => this.densePass.render(renderer, this.scatteredTarget, null));
+      timed('dense', () => { scissored(); this.densePass.render(renderer, this.scatteredTarget, null); });
     } else {
-      timed('blurH', () => this.horizontalPass.render(renderer, this._blurTarget, null));
+      timed('blurH', () => { scissored(); this.horizontalPass.render(renderer, this._blurTarget, null); });
       timed('blurV', () => this.verticalPass.render(renderer, this.scatteredTarget, null));
     }
   }

@@ -4,7 +4,7 @@
 // its margin where the meshes' vertices are their bounding boxes' corners.
 import { describe, it, expect } from 'vitest';
 import {
-  ArrayCamera, BoxGeometry, Mesh, MeshStandardMaterial, OrthographicCamera, PerspectiveCamera, Texture, Vector3,
+  ArrayCamera, BoxGeometry, Mesh, MeshStandardMaterial, OrthographicCamera, PerspectiveCamera, SkinnedMesh, Texture, Vector3,
 } from 'three';
 import { subsurfaceScreenBox } from '../../src/2-scene-split/subsurfaceScreenBox.js';
 
@@ -83,6 +83,9 @@ describe('subsurfaceScreenBox', () => {
     const displaced = mesh([0, 0, 0]);
     displaced.material.displacementMap = new Texture();
     expect(subsurfaceScreenBox([displaced], cam, WIDTH, HEIGHT)).toBeNull();
+    const skinned = new SkinnedMesh(new BoxGeometry(), new MeshStandardMaterial());
+    skinned.updateMatrixWorld();
+    expect(subsurfaceScreenBox([skinned], cam, WIDTH, HEIGHT)).toBeNull();
     expect(subsurfaceScreenBox([mesh([0, 0, 6])], cam, WIDTH, HEIGHT)).toBeNull(); // around the camera
     expect(subsurfaceScreenBox([mesh([0, 0, 0], 0, [20, 20, 1])], cam, WIDTH, HEIGHT)).toBeNull(); // fills the frame
     expect(subsurfaceScreenBox([mesh([0, 0, 0])], new ArrayCamera([cam]), WIDTH, HEIGHT)).toBeNull();
