@@ -46,18 +46,32 @@ export function targetMemory(width, height, { samples = 0 } = {}) {
 export const BEFORE = Object.freeze({ depthPrepass: true, confineToSubsurface: false, fetchesEverywhere: false });
 export const AFTER = Object.freeze({ depthPrepass: false, confineToSubsurface: true, fetchesEverywhere: false });
 
+/**
+ * Directions the issue names that are not built, modelled on top of AFTER (what they would save,
+ * not a measurement): surfaceFromDepth, no surface attachment (the blur reads the depth texture,
+ * 4 B, and the width from the diffuse alpha); composeInBlur, the compose folded into the vertical
+ * pass (no scattered target; that pass then covers the whole frame and writes the output).
+ */
+export const NOT_BUILT = Object.freeze({
+  surfaceFromDepth: Object.freeze({ ...AFTER, surfaceFromDepth: true }),
+  composeInBlur: Object.freeze({ ...AFTER, composeInBlur: true }),
+  both: Object.freeze({ ...AFTER, surfaceFromDepth: true, composeInBlur: true }),
+});
+
 const { rgba16f: RGBA16F, rg32f: RG32F, depth24: DEPTH } = TEXEL_BYTES;
-const MULTI_TARGET = 2 * RGBA16F + RG32F + DEPTH; // colour, diffuse, surface, depth
 
 /** One stage's traffic per screen pixel: bytes written, read from memory, and fetched by the texture units. */
 const stage = (written, read, fetched = read) => ({ written, read, fetched });
 
-/** A blur pass over `area` of the frame, `subsurface` of it on the mask, `taps` per direction. */
-function blurPass(area, subsurface, taps) {
+/**
+ * A blur pass over `area` of the frame, `subsurface` of it on the mask, `taps` per direction,
+ * reading `surface` bytes per texel for the surface (the attachment, or the depth texture).
+ */
+function blurPass(area, subsurface, taps, surface) {
   // Every pixel reads its centre (diffuse, surface) and writes its result; a mask pixel also reads
   // its two neighbours' surface (the slope) and, per tap, two texels of diffuse and surface.
-  const centre = RGBA16F + RG32F;
-  const perMaskPixel = 2 * RG32F + taps * 2 * (RGBA16F + RG32F);
+  const centre = RGBA16F + surface;
+  const perMaskPixel = 2 * surface + taps * 2 * (RGBA16F + surface);
   return stage(area * RGBA16F, area * centre, area * centre + subsurface * perMaskPixel);
 }
 
@@ -78,16 +92,26 @@ export function frameTraffic(switches, { subsurface, box, ordinary = 0, taps }) 
   // Scene split: the four attachments cleared; the first call's ordinary fragments (depth test and
   // write, colour); the prepass's depth; the split's fragments (depth, three attachments).
   const prepass = switches.depthPrepass ? s : 0;
-  const scene = stage(MULTI_TARGET + ordinary * (DEPTH + RGBA16F) + prepass * DEPTH + s * (DEPTH + 2 * RGBA16F + RG32F),
+  const surfaceAttachment = switches.surfaceFromDepth ? 0 : RG32F;
+  const attachments = 2 * RGBA16F + surfaceAttachment + DEPTH; // colour, diffuse, surface, depth
+  const scene = stage(attachments + ordinary * (DEPTH + RGBA16F) + prepass * DEPTH + s * (DEPTH + 2 * RGBA16F + surfaceAttachment),
     ordinary * DEPTH + prepass * DEPTH + s * DEPTH);
   const area = switches.confineToSubsurface ? box : 1;
-  const blurH = blurPass(area, s, taps);
-  const blurV = blurPass(area, s, taps);
+  const surface = switches.surfaceFromDepth ? DEPTH : RG32F;
+  const blurH = blurPass(area, s, taps, surface);
   // Compose: depth, colour and diffuse (its mask) at every pixel, the scattered light on the mask
   // (or everywhere, with the surface, as before issue 10); out: the composer's colour and depth.
   const everywhere = switches.fetchesEverywhere ? 1 : 0;
   const composeRead = DEPTH + 2 * RGBA16F + (everywhere ? RGBA16F + RG32F : s * RGBA16F);
-  const compose = stage(RGBA16F + DEPTH, composeRead);
+  let blurV = blurPass(area, s, taps, surface);
+  let compose = stage(RGBA16F + DEPTH, composeRead);
+  if (switches.composeInBlur) {
+    // The vertical pass over the whole frame: its taps as before, plus colour and depth read and
+    // the output (colour, depth) written at every pixel instead of the scattered light.
+    const v = blurPass(1, s, taps, surface);
+    blurV = stage(RGBA16F + DEPTH, v.read + RGBA16F + DEPTH, v.fetched + RGBA16F + DEPTH);
+    compose = stage(0, 0);
+  }
   const stages = { scene, blurH, blurV, compose };
   const total = stage(...['written', 'read', 'fetched'].map((k) => Object.values(stages).reduce((sum, x) => sum + x[k], 0)));
   // A plain frame: colour and depth cleared, then each covered pixel's fragment (depth, colour).

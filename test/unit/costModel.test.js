@@ -2,7 +2,7 @@
 // (RGBA16F 8 B, RG32F 8 B, 24-bit depth 4 B) and the passes, and the issue's ratios
 // (bench/costReport.js) against rounds made up for the test.
 import { describe, it, expect } from 'vitest';
-import { AFTER, BEFORE, TEXEL_BYTES, frameTraffic, targetMemory } from '../../bench/costModel.js';
+import { AFTER, BEFORE, NOT_BUILT, TEXEL_BYTES, frameTraffic, targetMemory } from '../../bench/costModel.js';
 import { issueRatios, msaaRatio } from '../../bench/costReport.js';
 
 describe('cost model', () => {
@@ -38,6 +38,17 @@ describe('cost model', () => {
     expect(after.blurH.written).toBeCloseTo(0.5 * 8, 12); // the box only
     expect(after.blurH.fetched).toBeCloseTo(0.5 * 16 + s * (16 + 9 * 2 * 16), 12);
     expect(after.total.written + after.total.read).toBeLessThan(t.total.written + t.total.read);
+  });
+
+  it('the directions not built: no surface attachment saves its 8 B clear; the compose in the blur its pass', () => {
+    const scene = { subsurface: 0, box: 0.5, taps: 9 };
+    const after = frameTraffic(AFTER, scene);
+    expect(after.scene.written - frameTraffic(NOT_BUILT.surfaceFromDepth, scene).scene.written).toBe(8);
+    expect(frameTraffic(NOT_BUILT.surfaceFromDepth, scene).blurH.read).toBeCloseTo(0.5 * (8 + 4), 12); // depth: 4 B
+    const folded = frameTraffic(NOT_BUILT.composeInBlur, scene);
+    expect(folded.compose).toEqual({ written: 0, read: 0, fetched: 0 });
+    // The vertical pass over the whole frame: centre 16 + colour 8 + depth 4 read, colour + depth out.
+    expect(folded.blurV).toEqual({ written: 12, read: 28, fetched: 28 });
   });
 });
 
