@@ -8,7 +8,7 @@ const stageSum = (st) => Object.values(st).reduce((sum, v) => sum + (Number.isFi
 const text = (x, digits = 2) => (x && Number.isFinite(x.median) ? `${x.median.toFixed(digits)} (${x.min.toFixed(digits)}–${x.max.toFixed(digits)})` : '—');
 // A round below 0 (ours cheaper than the plain frame it adds to) is the machine's noise, not a
 // measurement: such a median is not held against the goal.
-const verdict = (x, goal) => (x && Number.isFinite(x.median) ? (x.min <= 0 ? 'unresolved (a round ≤ 0)' : x.median <= goal ? 'met' : '**not met**') : '');
+export const verdict = (x, goal) => (x && Number.isFinite(x.median) ? (x.min <= 0 ? 'unresolved (a round ≤ 0)' : x.median <= goal ? 'met' : '**not met**') : '');
 
 /**
  * What MSAA 4 adds to ours over what it adds to a plain three.js frame, per round of a features
