@@ -203,8 +203,8 @@ export function makeSubsurface(material, options = {}, owner = STANDALONE) {
   if (!material || material.isMeshStandardMaterial !== true) {
     throw new TypeError(`makeSubsurface: material must be a THREE.MeshStandardMaterial or MeshPhysicalMaterial, got ${describe(material)}`);
   }
-  // The scene pass draws subsurface materials twice (depth, then everything) and relies on the
-  // second draw passing the depth test at equal depth.
+  // With its depth prepass (scenePass.depthPrepass) the scene pass draws subsurface materials
+  // twice (depth, then everything) and relies on the second draw passing the depth test at equal depth.
   if (material.depthFunc !== LessEqualDepth) {
     throw new RangeError('makeSubsurface: material.depthFunc must be THREE.LessEqualDepth (the default) for the split draw');
   }
