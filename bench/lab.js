@@ -345,5 +345,21 @@ async function peerMeasure(options) {
   return measurePeer(await peersOf(), session, options);
 }
 
-window.bench = { info, open, close, reference, measure, readDense, timeSss, peerImages, peerFloorImages, peerMeasure, drawChart };
+/**
+ * What the cost model (bench/costModel.js) needs of the frame of ours the side-by-side times: its
+ * subsurface pixels (the diffuse alpha), the pixels of their screen box (the blur's scissor) and
+ * the taps 'auto' allocates there.
+ * @returns {Promise<{ pixels: number, subsurfacePixels: number, boxPixels: number, box: object|null, taps: object }>}
+ */
+async function peerCoverage() {
+  const { renderer, sss, width, height } = session;
+  (await peersOf()).draw.ours();
+  const diffuse = await readRenderTargetFloats(renderer, sss.scenePass.renderTarget, 1);
+  let subsurfacePixels = 0;
+  for (let i = 3; i < diffuse.length; i += 4) if (diffuse[i] > 0) subsurfacePixels++;
+  const box = sss.scenePass.subsurfaceBox;
+  return { pixels: width * height, subsurfacePixels, boxPixels: box ? box.width * box.height : width * height, box, taps: await autoTaps() };
+}
+
+window.bench = { info, open, close, reference, measure, readDense, timeSss, peerImages, peerFloorImages, peerMeasure, peerCoverage, drawChart };
 window.testReady = true;

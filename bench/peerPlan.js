@@ -23,13 +23,16 @@ export const PEER_MEASURES = Object.freeze([...VARIANTS, 'stages', 'blur', 'floo
 export const ADDITIONS = Object.freeze(['msaa4', 'transparent', 'noDepthWrite']);
 
 /**
- * Issue 10's optimizations, each undone for the measure (so the frame without them is timed next
- * to the frame with them, in the same rounds): lightDepthEveryFrame draws the light depth pass
- * every frame, as before it was skipped while the light reaches no subsurface mesh from behind;
- * composeAsBefore runs the compose shader as it was before it fetched less (the scattered light
- * at every pixel, the surface attachment always).
+ * Issue 10's and issue 19's optimizations, each undone for the measure by a switch of the passes
+ * (bench/peers.js's UNDO_SWITCHES), so the frame without them is timed next to the frame with
+ * them, in the same rounds: lightDepthEveryFrame draws the light depth pass every frame, as before
+ * it was skipped while the light reaches no subsurface mesh from behind; composeAsBefore runs the
+ * compose shader as it was before it fetched less (the scattered light at every pixel, the
+ * surface attachment always); depthPrepass draws the subsurface materials' depth in the scene
+ * split's first call, as before each was drawn once; fullFrameBlur runs both blur passes over the
+ * whole frame, as before they were scissored to the subsurface pixels' screen box.
  */
-export const UNDONE_OPTIMIZATIONS = Object.freeze(['lightDepthEveryFrame', 'composeAsBefore']);
+export const UNDONE_OPTIMIZATIONS = Object.freeze(['lightDepthEveryFrame', 'composeAsBefore', 'depthPrepass', 'fullFrameBlur']);
 
 /** Everything the features block switches, one at a time. */
 export const FEATURES = Object.freeze([...ADDITIONS, ...UNDONE_OPTIMIZATIONS]);

@@ -67,11 +67,22 @@ export async function openPeers(session) {
 }
 
 /**
+ * The switch each undone optimization (bench/peerPlan.js's UNDONE_OPTIMIZATIONS) flips, as
+ * [object of the pipeline, field, value that undoes it]: documented-internal flags of the passes.
+ */
+const UNDO_SWITCHES = Object.freeze({
+  lightDepthEveryFrame: (sss) => [sss, 'skipsUnreadLightDepth', false],
+  composeAsBefore: (sss) => [sss.composePass, 'fetchesEverywhere', true],
+  depthPrepass: (sss) => [sss.scenePass, 'depthPrepass', true],
+  fullFrameBlur: (sss) => [sss.blur, 'confineToSubsurface', false],
+});
+
+/**
  * Turns `feature` on for the session's head (FEATURES) and returns what turns it off again.
  * msaa4: the scene split multisampled 4 times (the plain frame draws into a 4-sample buffer too);
  * transparent: a half see-through pane in front of the chin; noDepthWrite: the compose writes
- * colour only (version 0.1's compose handed no depth on); lightDepthEveryFrame and
- * composeAsBefore: issue 10's optimizations undone (bench/peerPlan.js's UNDONE_OPTIMIZATIONS).
+ * colour only (version 0.1's compose handed no depth on, `composePass.writesDepth`); the
+ * optimizations undone flip their switch (UNDO_SWITCHES).
  */
 function applyFeature(peers, session, feature) {
   const { sss, built } = session;
@@ -87,39 +98,10 @@ function applyFeature(peers, session, feature) {
     built.scene.add(peers.pane);
     return () => { built.scene.remove(peers.pane); off(); };
   }
-  if (feature === 'lightDepthEveryFrame') {
-    sss._transmits = () => true; // the test that lets the pass be skipped, always passed
-    return () => { delete sss._transmits; off(); };
-  }
-  if (feature === 'composeAsBefore') return composeAsBefore(sss.composePass.material, off);
-  // noDepthWrite: the orchestrator sets the compose's clear (and with it depthWrite) every frame.
-  const pass = sss.composePass;
-  const setClear = pass.setClear;
-  pass.setClear = (...args) => {
-    setClear.apply(pass, args);
-    pass.material.depthWrite = false;
-  };
-  return () => { pass.setClear = setClear; off(); };
-}
-
-/**
- * The compose shader as it was before it fetched less (commit c03434c's parent): the scattered
- * light read at every pixel and the surface attachment read in every view. Returns what puts the
- * shader back.
- */
-function composeAsBefore(material, off) {
-  const shader = material.fragmentShader;
-  const now = 'vec3 diffuse = ! subsurface ? vec3( 0.0 ) : gl_FragCoord.x < splitX ? unscattered.rgb : texelFetch( tScattered, pixel, 0 ).rgb;';
-  const before = 'vec2 surface = texelFetch( tSurface, pixel, 0 ).rg;\n\tvec3 diffuse = gl_FragCoord.x < splitX ? unscattered.rgb : texelFetch( tScattered, pixel, 0 ).rgb;';
-  if (!shader.includes(now)) throw new Error('composeAsBefore: the compose shader no longer has the line it undoes');
-  // As the shader read then (the compiler may drop the surface fetch outside the depth view, as it could then).
-  material.fragmentShader = shader.replace(now, before);
-  material.needsUpdate = true;
-  return () => {
-    material.fragmentShader = shader;
-    material.needsUpdate = true;
-    off();
-  };
+  const [object, field, value] = feature === 'noDepthWrite' ? [sss.composePass, 'writesDepth', false] : UNDO_SWITCHES[feature](sss);
+  const before = object[field];
+  object[field] = value;
+  return () => { object[field] = before; off(); };
 }
 
 /** Renders `variant` once with one timer query around the whole frame. */

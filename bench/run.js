@@ -22,6 +22,10 @@ const args = process.argv.slice(2);
 const quick = args.includes('--quick');
 const gpu = args.includes('--gpu');
 const reportOnly = args.includes('--report');
+// --peers: only the side-by-side (both resolutions, every feature and switch at each), merged into
+// the results file in place of its `peers`; the first replaced keeps its numbers as
+// `peersVersion02` (version 0.2's, the issue 19 table's "before" column).
+const peersOnly = args.includes('--peers');
 
 const TAPS = [5, 7, 9, 11, 13, 17, 25];
 const separable = (method, samples) => ({ kind: 'separable', method, samples });
@@ -75,6 +79,12 @@ const FULL_PLAN = [
 const FULL_PEERS = [
   { width: 1280, height: 720, rounds: 5, frames: 3, features: { rounds: 3, frames: 2 } },
   { width: 640, height: 360, rounds: 7, frames: 3, image: true },
+];
+
+// --peers: the four ratios of issue 19 at both resolutions, every switch undone once per round.
+const PEERS_ONLY = [
+  { width: 1280, height: 720, rounds: 3, frames: 2, features: { rounds: 3, frames: 1 } },
+  { width: 640, height: 360, rounds: 5, frames: 3, image: true, features: { rounds: 3, frames: 2 } },
 ];
 
 const QUICK_TIMING = { rounds: 1, frames: 1, sssFrames: 4 };
@@ -177,6 +187,7 @@ async function runPeers(page, plan, imagePaths, clock) {
       log(`  ${resolution} plain frames: silhouette IoU ${images.plain.silhouetteIoU.toFixed(3)}, luma ratio ${images.plain.lumaRatio.toFixed(3)}; `
         + `SSS moves the luma by ${images.sssChange.three.toFixed(2)} (ours), ${images.sssChange.babylon.toFixed(2)} (Babylon); wrote ${Object.values(imagePaths).map((p) => relative(root, p)).join(', ')}`);
     }
+    entry.coverage = await page.evaluate(() => window.bench.peerCoverage()); // the cost model's inputs
     entry.perRound = await peerRounds(page, clock, block);
     entry.summary = peerSummary(entry.perRound);
     const { overhead, blurOverFloor, nonBlurShare } = entry.summary;
@@ -210,7 +221,10 @@ async function runFeatures(page, clock, { rounds, frames }) {
       const cpuMs = clock ? (clock.nowMs() - before) / frames : null;
       const key = feature ?? 'none';
       entry[key] ??= {};
-      if (measure === 'stages') entry[key].stages = Object.fromEntries(Object.entries(times).map(([stage, ms]) => [stage, median(ms)]));
+      if (measure === 'stages') {
+        entry[key].stages = Object.fromEntries(Object.entries(times).map(([stage, ms]) => [stage, median(ms)]));
+        entry[key].cpuMs = cpuMs; // the GPU process's CPU time per frame of ours (less swollen by other load)
+      }
       else entry[key].threePlain = { timerMs: median(times.threePlain), cpuMs };
     }
     perRound.push(entry);
@@ -257,6 +271,23 @@ async function measure(page, plan, { name, info, peersPlan, imagePaths }) {
   };
 }
 
+/**
+ * --peers: the side-by-side measured again (PEERS_ONLY) into `previous` (the results file), the
+ * rest of it kept; the first side-by-side replaced stays as `peersVersion02`.
+ */
+async function remeasurePeers(page, previous, imagePaths) {
+  const info = await page.evaluate(() => window.bench.info());
+  log(`${info.renderer}: the side-by-side only, into the results of ${previous.createdAt.slice(0, 10)}`);
+  const clock = gpuProcessClock(page.browser());
+  const peers = await runPeers(page, PEERS_ONLY, imagePaths, clock);
+  return {
+    ...previous,
+    peersVersion02: previous.peersVersion02 ?? { createdAt: previous.createdAt, peers: previous.peers },
+    peers,
+    peersRun: { command: 'npm run bench -- --peers', createdAt: new Date().toISOString(), durationS: Math.round((Date.now() - started) / 1000) },
+  };
+}
+
 async function main() {
   const name = quick ? 'quick' : gpu ? 'gpu' : 'swiftshader';
   const outDir = quick ? join(root, 'bench/results/tmp') : join(root, 'bench/results');
@@ -271,6 +302,9 @@ async function main() {
     let out;
     if (reportOnly) {
       out = JSON.parse(await readFile(jsonPath, 'utf8'));
+    } else if (peersOnly) {
+      out = await remeasurePeers(page, JSON.parse(await readFile(jsonPath, 'utf8')), imagePaths);
+      await writeFile(jsonPath, `${JSON.stringify(out, null, 2)}\n`);
     } else {
       const info = await page.evaluate(() => window.bench.info());
       log(`${info.renderer} (timer query: ${info.timerQuery})`);

@@ -95,6 +95,11 @@ export class SubsurfaceScattering extends Pass {
     this.clear = true;
     /** As RenderPass: with clear false, true ignores the target's earlier depth. */
     this.clearDepth = false;
+    /**
+     * Documented-internal switch (the bench turns it off for one measure: what the skip saves):
+     * the light depth pass is skipped while the light reaches no subsurface mesh from behind.
+     */
+    this.skipsUnreadLightDepth = true;
     this._clearColor = null;
     this._clearAlpha = null;
     this._scene = o.scene;
@@ -358,7 +363,7 @@ export class SubsurfaceScattering extends Pass {
     checks.end();
     // 1. Light depth: linear depth seen from the light, for transmittance (not for a light that is
     //    off, nor one that reaches no subsurface mesh from behind: its map would go unread).
-    if (lightWorks && isShining(this.lightDepth.light, scene, camera) && this._transmits(scene, camera)) {
+    if (lightWorks && isShining(this.lightDepth.light, scene, camera) && (!this.skipsUnreadLightDepth || this._transmits(scene, camera))) {
       this._stage('lightDepth', () => this.lightDepth.render(renderer, scene));
     } else {
       this.lightDepth?.invalidate();
@@ -397,7 +402,7 @@ export class SubsurfaceScattering extends Pass {
    * @param {import('three').WebGLRenderer} renderer
    */
   renderScattering(renderer) {
-    this.blur.render(renderer, this.camera, (stage, draw) => this._stage(stage, draw), this.plan);
+    this.blur.render(renderer, this.camera, (stage, draw) => this._stage(stage, draw), this.plan, this.scenePass.subsurfaceBox);
   }
 
   /** @private @param {StageName} name @param {() => void} draw */
@@ -589,8 +594,8 @@ export class SubsurfaceScattering extends Pass {
   }
 }
 
-// enabled, needsSwap, clear and renderToScreen (three's Pass fields), and clearDepth: booleans only.
-booleanFields(SubsurfaceScattering.prototype, [...PASS_BOOLEANS, 'clearDepth']);
+// enabled, needsSwap, clear and renderToScreen (three's Pass fields), clearDepth and skipsUnreadLightDepth: booleans only.
+booleanFields(SubsurfaceScattering.prototype, [...PASS_BOOLEANS, 'clearDepth', 'skipsUnreadLightDepth']);
 // 0.1's `enabled = false` turned the blur off; now it skips the pass. Said once where it freezes the frame.
 warnWhenDisabledFreezes(SubsurfaceScattering.prototype, 'SubsurfaceScattering: enabled is false and nothing else draws its ' +
   'scene, so the composer shows the last frame it drew, frozen (enabled = false skips the pass, as for any pass). To turn ' +

@@ -31,8 +31,15 @@ void main() {
 	vec4 light = texelFetch( tColor, pixel, 0 );
 	vec4 unscattered = texelFetch( tDiffuse, pixel, 0 );
 	bool subsurface = unscattered.a > 0.0;
-	// Only subsurface pixels read the scattered light (most of a frame is not skin).
-	vec3 diffuse = ! subsurface ? vec3( 0.0 ) : gl_FragCoord.x < splitX ? unscattered.rgb : texelFetch( tScattered, pixel, 0 ).rgb;
+	#if FETCH_EVERYWHERE == 1
+		// As before issue 10 (SubsurfaceComposePass.fetchesEverywhere, for the bench): every pixel
+		// reads the scattered light, and the surface (which the compiler may drop, as it could then).
+		vec2 surface = texelFetch( tSurface, pixel, 0 ).rg;
+		vec3 diffuse = gl_FragCoord.x < splitX ? unscattered.rgb : texelFetch( tScattered, pixel, 0 ).rgb;
+	#else
+		// Only subsurface pixels read the scattered light (most of a frame is not skin).
+		vec3 diffuse = ! subsurface ? vec3( 0.0 ) : gl_FragCoord.x < splitX ? unscattered.rgb : texelFetch( tScattered, pixel, 0 ).rgb;
+	#endif
 	vec3 colour;
 	#if DEBUG_VIEW == DEBUG_VIEW_FINAL
 		colour = light.rgb + ( subsurface ? diffuse : vec3( 0.0 ) );

@@ -3,17 +3,23 @@
 // draws whose shader lacks an output for an active draw buffer, and three's ordinary materials
 // write location 0 only. So the opaque scene is drawn in two calls, each with its own draw buffers
 // and the materials of one category shown:
-//   1. DEPTH: opaque ordinary materials into the colour attachment only; subsurface materials
-//      write depth only (shadow maps are rendered here, with every caster present: transparent
-//      materials are drawn with colour and depth writes off, only so that they still cast shadows);
+//   1. opaque ordinary materials into the colour attachment only; subsurface materials are HIDDEN
+//      (their triangles clipped in the vertex shader, no fragment rasterised) or, with the depth
+//      prepass (`depthPrepass`), write DEPTH only. Shadow maps are rendered here, with every caster
+//      present: transparent materials are drawn with colour and depth writes off, only so that
+//      they still cast shadows;
 //   2. SPLIT: subsurface materials alone into all attachments, depth-tested against call 1, so
 //      occluded subsurface fragments never reach the diffuse and surface attachments, which stay 0
-//      there: the mask is exact by construction.
+//      there: the mask is exact by construction (subsurface against subsurface: the depth test
+//      within the call, as in any opaque draw).
+// Without the prepass each subsurface object is rasterised once (issue 19); the prepass pays only
+// where subsurface objects hide much of each other (it shades each pixel's split once).
 // Transparent materials come after the compose (renderTransparent): blended over the scattered
 // image, depth-tested against the scene, exactly as three blends them over its opaque pass.
 import { Color, FloatType, HalfFloatType } from 'three';
 import { Pass } from 'three/addons/postprocessing/Pass.js';
 import { getSubsurface } from './subsurfaceMaterial.js';
+import { subsurfaceScreenBox } from './subsurfaceScreenBox.js';
 import { ATTACHMENTS, DRAW_BUFFERS, DRAW_PHASES, createSubsurfaceTarget, drawingInto } from './subsurfaceTarget.js';
 import { assertFloatRenderTargets, describe } from '../support/rendererSupport.js';
 import { checkOptions } from '../support/parameterChecks.js';
@@ -70,6 +76,17 @@ export class SubsurfaceScenePass extends Pass {
     this.needsSwap = false; // writes its own targets, not the composer's
     /** Meshes with a subsurface material seen in the last render (for the on-screen width estimate). */
     this.subsurfaceMeshes = [];
+    /**
+     * The last render's subsurface pixels lie in this box (device pixels; null: anywhere), from
+     * the meshes' bounds (subsurfaceScreenBox.js): the blur is scissored to it.
+     */
+    this.subsurfaceBox = null;
+    /**
+     * Documented-internal switch (issue 19; the bench undoes it for one measure): true draws the
+     * subsurface materials' depth in the first call (the header's DEPTH), false (default) hides
+     * them there, so each is rasterised once. The image is the same.
+     */
+    this.depthPrepass = false;
     /** The multi-target (see subsurfaceTarget.js for what each attachment holds). */
     this.renderTarget = createSubsurfaceTarget(type);
 
@@ -151,12 +168,13 @@ export class SubsurfaceScenePass extends Pass {
     return 0;
   }
 
-  /** Shows the materials one call draws: `phase` DEPTH shows every category, the others their own. */
+  /** Shows the materials one call draws: the first call (DEPTH or HIDDEN) every category, the others their own. */
   _show(phase, category) {
+    const first = phase === DRAW_PHASES.DEPTH || phase === DRAW_PHASES.HIDDEN;
     for (const [material, c] of this._categories) {
-      material.visible = phase === DRAW_PHASES.DEPTH || c === category;
-      // In the depth call transparent materials only cast shadows: they draw nothing.
-      const silent = phase === DRAW_PHASES.DEPTH && c === CATEGORIES.TRANSPARENT;
+      material.visible = first || c === category;
+      // In the first call transparent materials only cast shadows: they draw nothing.
+      const silent = first && c === CATEGORIES.TRANSPARENT;
       const writes = this._writes.get(material);
       material.colorWrite = silent ? false : writes.colorWrite;
       material.depthWrite = silent ? false : writes.depthWrite;
@@ -206,12 +224,14 @@ export class SubsurfaceScenePass extends Pass {
         renderer.clear(true, true, true);
         gl.clearBufferfv(gl.COLOR, ATTACHMENTS.DIFFUSE, ZERO);
         gl.clearBufferfv(gl.COLOR, ATTACHMENTS.SURFACE, ZERO);
-        // 1. opaque ordinary materials + subsurface depth; background and shadow maps.
-        this._draw(renderer, DRAW_PHASES.DEPTH, DRAW_BUFFERS.COLOR_ONLY);
+        // 1. opaque ordinary materials (+ subsurface depth with the prepass); background and shadow maps.
+        this._draw(renderer, this.depthPrepass ? DRAW_PHASES.DEPTH : DRAW_PHASES.HIDDEN, DRAW_BUFFERS.COLOR_ONLY);
         // 2. subsurface materials into every attachment (no background: a Color one would clear).
         scene.background = null;
         renderer.shadowMap.autoUpdate = false;
         if (this.subsurfaceMeshes.length > 0) this._draw(renderer, DRAW_PHASES.SPLIT, DRAW_BUFFERS.ALL, CATEGORIES.SUBSURFACE);
+        // With the matrices as the draws left them.
+        this.subsurfaceBox = subsurfaceScreenBox(this.subsurfaceMeshes, this.camera, target.width, target.height);
       } finally {
         // three caches draw buffers per target: leave them as it set them.
         if (renderer.getRenderTarget() === target) gl.drawBuffers(DRAW_BUFFERS.ALL);
@@ -250,4 +270,4 @@ export class SubsurfaceScenePass extends Pass {
   }
 }
 
-booleanFields(SubsurfaceScenePass.prototype, PASS_BOOLEANS);
+booleanFields(SubsurfaceScenePass.prototype, [...PASS_BOOLEANS, 'depthPrepass']);

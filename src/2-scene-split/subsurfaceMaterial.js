@@ -19,6 +19,7 @@
 import { LessEqualDepth } from 'three';
 import parsGlsl from '../../shaders/2-scene-split/material/pars.glsl?raw';
 import depthOnlyGlsl from '../../shaders/2-scene-split/material/depthOnly.glsl?raw';
+import hiddenGlsl from '../../shaders/2-scene-split/material/hidden.vert.glsl?raw';
 import transmittedLightGlsl from '../../shaders/2-scene-split/material/transmittedLight.glsl?raw';
 import splitGlsl from '../../shaders/2-scene-split/material/split.glsl?raw';
 import clearcoatGlsl from '../../shaders/2-scene-split/material/clearcoat.glsl?raw';
@@ -79,6 +80,7 @@ function patch(material) {
   const uniforms = {
     sssSplit: { value: false },
     sssDepthOnly: { value: false },
+    sssHidden: { value: false },
     sssWidthWorld: { value: 0 },
     sssWidthScale: { value: 1 },
     sssDebugOutput: { value: 0 },
@@ -106,6 +108,10 @@ function patch(material) {
     fs = inject(fs, '#include <opaque_fragment>', `${clearcoatGlsl}\n#include <opaque_fragment>`);
     fs = inject(fs, '#include <dithering_fragment>', `#include <dithering_fragment>\n${outputGlsl}`);
     shader.fragmentShader = fs;
+    let vs = shader.vertexShader;
+    vs = inject(vs, 'void main() {', 'uniform bool sssHidden; // true in the scene split\'s first call without the depth prepass\nvoid main() {');
+    vs = inject(vs, '#include <fog_vertex>', `#include <fog_vertex>\n${hiddenGlsl}`);
+    shader.vertexShader = vs;
   };
 
   material.customProgramCacheKey = function () {
@@ -120,6 +126,7 @@ function patch(material) {
     const draw = currentDraw(renderer.getRenderTarget());
     uniforms.sssSplit.value = draw.phase === DRAW_PHASES.SPLIT;
     uniforms.sssDepthOnly.value = draw.phase === DRAW_PHASES.DEPTH;
+    uniforms.sssHidden.value = draw.phase === DRAW_PHASES.HIDDEN;
     const binding = draw.owner === null ? undefined : bindings.get(draw.owner) ?? latest(bindings);
     if (binding) applyBinding(uniforms, binding, scene, camera);
     else uniforms.sssTransmits.value = false;
@@ -200,8 +207,8 @@ export function makeSubsurface(material, options = {}, owner = STANDALONE) {
   if (!material || material.isMeshStandardMaterial !== true) {
     throw new TypeError(`makeSubsurface: material must be a THREE.MeshStandardMaterial or MeshPhysicalMaterial, got ${describe(material)}`);
   }
-  // The scene pass draws subsurface materials twice (depth, then everything) and relies on the
-  // second draw passing the depth test at equal depth.
+  // With its depth prepass (scenePass.depthPrepass) the scene pass draws subsurface materials
+  // twice (depth, then everything) and relies on the second draw passing the depth test at equal depth.
   if (material.depthFunc !== LessEqualDepth) {
     throw new RangeError('makeSubsurface: material.depthFunc must be THREE.LessEqualDepth (the default) for the split draw');
   }

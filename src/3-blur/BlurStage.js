@@ -9,8 +9,11 @@ import { computeKernel, kernelRadiusMm } from '../profiles/kernel.js';
 import { getProfile } from '../profiles/presets.js';
 import { AUTO_SAMPLES, METHOD_TABLE, PIPELINE_SCHEMA, checkOption } from '../options.js';
 import { blurModeOf, planBlur } from './blurPlan.js';
+import { booleanFields } from '../support/booleanFields.js';
 import { SubsurfaceBlurPass } from './SubsurfaceBlurPass.js';
 import { DenseSubsurfacePass } from './DenseSubsurfacePass.js';
+
+const TRANSPARENT_BLACK = new Float32Array(4);
 
 /** The dense reference's loop bound, pixels of radius (method 'dense' is for validation). */
 const DENSE_MAX_RADIUS_PX = 256;
@@ -53,6 +56,12 @@ export class BlurStage {
     this._densePass = null; // built when first asked for
     this._size = { width: 1, height: 1 };
     this._multisampled = false;
+    /**
+     * Documented-internal switch (issue 19; the bench undoes it for one measure): the passes are
+     * scissored to the subsurface pixels' screen box (render's `box`). false: the whole frame.
+     */
+    this.confineToSubsurface = true;
+    this._scissorKey = null; // the box the targets were last scissored to ('full' or x,y,w,h)
     /** The kernel the separable passes hold (computeKernel's layout). */
     this.kernel = firstKernel;
     this._applySettings();
@@ -147,15 +156,43 @@ export class BlurStage {
    * @param {import('three').Camera} camera the camera of the scene split
    * @param {(stage: string, draw: () => void) => void} timed runs each pass, timed as `stage`
    * @param {import('./blurPlan.js').BlurPlan} [plan] the frame's plan (default: the last one)
+   * @param {{ x: number, y: number, width: number, height: number }|null} [box=null] the subsurface
+   *   pixels' screen box (src/2-scene-split/subsurfaceScreenBox.js); null: the whole frame
    */
-  render(renderer, camera, timed, plan = this.lastPlan) {
+  render(renderer, camera, timed, plan = this.lastPlan, box = null) {
     for (const pass of this.surfacePasses) pass.camera = camera;
+    // The scissor's clears (when the box moved) are timed with the first pass.
+    const scissored = () => this._scissor(renderer, this.confineToSubsurface ? box : null);
     if (plan.passes === 'dense') {
-      timed('dense', () => this.densePass.render(renderer, this.scatteredTarget, null));
+      timed('dense', () => { scissored(); this.densePass.render(renderer, this.scatteredTarget, null); });
     } else {
-      timed('blurH', () => this.horizontalPass.render(renderer, this._blurTarget, null));
+      timed('blurH', () => { scissored(); this.horizontalPass.render(renderer, this._blurTarget, null); });
       timed('blurV', () => this.verticalPass.render(renderer, this.scatteredTarget, null));
     }
+  }
+
+  /**
+   * Scissors both targets to `box` (null: none). Outside it the passes would write 0 (the diffuse
+   * attachment is 0 off subsurface pixels), so a target is cleared to 0 whenever the box moves:
+   * the vertical pass's taps and any reader of scatteredTarget then find what an unscissored
+   * frame leaves there.
+   */
+  _scissor(renderer, box) {
+    const key = box ? `${box.x},${box.y},${box.width},${box.height}` : 'full';
+    if (key === this._scissorKey) return;
+    const previous = renderer.getRenderTarget();
+    const gl = renderer.getContext();
+    for (const target of [this._blurTarget, this.scatteredTarget]) {
+      target.scissorTest = false;
+      if (box) {
+        renderer.setRenderTarget(target);
+        gl.clearBufferfv(gl.COLOR, 0, TRANSPARENT_BLACK); // not renderer.clear: its colour is the scene's
+        target.scissor.set(box.x, box.y, box.width, box.height);
+        target.scissorTest = true;
+      }
+    }
+    if (box) renderer.setRenderTarget(previous);
+    this._scissorKey = key;
   }
 
   /**
@@ -243,6 +280,7 @@ export class BlurStage {
   /** @param {number} width device pixels @param {number} height device pixels */
   setSize(width, height) {
     this._size = { width, height };
+    this._scissorKey = null; // setSize resets the targets' scissors
     for (const pass of this.surfacePasses) pass.setSize(width, height);
     this._blurTarget.setSize(width, height);
     this.scatteredTarget.setSize(width, height);
@@ -254,3 +292,5 @@ export class BlurStage {
     this.scatteredTarget.dispose();
   }
 }
+
+booleanFields(BlurStage.prototype, ['confineToSubsurface']);

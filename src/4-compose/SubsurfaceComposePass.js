@@ -48,7 +48,7 @@ export class SubsurfaceComposePass extends ShaderPass {
     }
     super({
       name: 'SubsurfaceComposePass',
-      defines: { ...enumDefines('DEBUG_VIEW', DEBUG_VIEWS, DEBUG_VIEW.FINAL), KEEP_BACKGROUND: 0 },
+      defines: { ...enumDefines('DEBUG_VIEW', DEBUG_VIEWS, DEBUG_VIEW.FINAL), KEEP_BACKGROUND: 0, FETCH_EVERYWHERE: 0 },
       uniforms: {
         tColor: { value: null }, tScattered: { value: null }, tDiffuse: { value: null }, tSurface: { value: null },
         tDepth: { value: null }, farDepth: { value: 1 },
@@ -62,6 +62,8 @@ export class SubsurfaceComposePass extends ShaderPass {
     this.uniforms.tDiffuse.value = inputs.diffuseTexture;
     this.uniforms.tDepth.value = inputs.depthTexture;
     this.scatteredTexture = scatteredTexture;
+    this._writesDepth = true;
+    this._fetchesEverywhere = false;
     this.setClear(true);
     this.debugView = DEBUG_VIEW.FINAL;
     this.split = 0;
@@ -99,8 +101,33 @@ export class SubsurfaceComposePass extends ShaderPass {
     checkBoolean('clearDepth', clearDepth);
     setDefines(this.material, { KEEP_BACKGROUND: clear ? 0 : 1 });
     this.material.depthTest = true; // depth is written only while the depth test is on
-    this.material.depthWrite = true;
+    this.material.depthWrite = this._writesDepth;
     this.material.depthFunc = clear || clearDepth ? AlwaysDepth : LessEqualDepth;
+  }
+
+  /**
+   * Documented-internal switch (the bench turns it off for one measure: what the depth write
+   * costs): false writes colour only, as version 0.1's compose did, and later passes find no depth.
+   * @type {boolean}
+   */
+  get writesDepth() { return this._writesDepth; }
+
+  set writesDepth(enabled) {
+    this._writesDepth = checkBoolean('writesDepth', enabled);
+    this.material.depthWrite = enabled;
+  }
+
+  /**
+   * Documented-internal switch (the bench turns it on for one measure: what fetching less saves):
+   * true reads the scattered light at every pixel and the surface always, as before issue 10.
+   * The image is the same.
+   * @type {boolean}
+   */
+  get fetchesEverywhere() { return this._fetchesEverywhere; }
+
+  set fetchesEverywhere(enabled) {
+    this._fetchesEverywhere = checkBoolean('fetchesEverywhere', enabled);
+    setDefines(this.material, { FETCH_EVERYWHERE: enabled ? 1 : 0 });
   }
 
   render(renderer, writeBuffer, readBuffer, deltaTime, maskActive) {

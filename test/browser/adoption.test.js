@@ -50,10 +50,10 @@ describe('a subsurface material outside the pipeline', () => {
       composer.addPass(sss);
       composer.render();
       const pipeline = await read(renderer, composer.readBuffer);
-      sss.setDebugView('transmittance');
+      sss.debugView = 'transmittance';
       composer.render();
       const transmitted = await read(renderer, composer.readBuffer);
-      sss.setDebugView('final');
+      sss.debugView = 'final';
       composer.render(); // the pipeline's settings are the material's last ones, light included
       const outside = await drawPlain();
       const hooked = material.customProgramCacheKey().includes('subsurface');

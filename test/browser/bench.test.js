@@ -86,6 +86,9 @@ describe('the bench side-by-side', () => {
       out.msaa = await window.bench.peerMeasure({ measure: 'stages', frames: 1, feature: 'msaa4' });
       out.lightDepthEveryFrame = await window.bench.peerMeasure({ measure: 'stages', frames: 1, feature: 'lightDepthEveryFrame' });
       out.composeAsBefore = await window.bench.peerMeasure({ measure: 'stages', frames: 1, warmUp: 1, feature: 'composeAsBefore' });
+      out.depthPrepass = await window.bench.peerMeasure({ measure: 'stages', frames: 1, feature: 'depthPrepass' });
+      out.fullFrameBlur = await window.bench.peerMeasure({ measure: 'stages', frames: 1, feature: 'fullFrameBlur' });
+      out.coverage = await window.bench.peerCoverage();
       out.after = await window.bench.peerMeasure({ measure: 'stages', frames: 1 });
       return out;
     });
@@ -101,5 +104,13 @@ describe('the bench side-by-side', () => {
     expect(r.lightDepthEveryFrame.lightDepth[0]).toBeGreaterThan(0);
     expect(r.composeAsBefore.compose[0]).toBeGreaterThan(0);
     expect(r.after.lightDepth).toEqual([]); // both put back
+    expect(r.depthPrepass.scene[0]).toBeGreaterThan(0);
+    expect(r.fullFrameBlur.blurH[0]).toBeGreaterThan(0);
+    // The cost model's inputs: the head covers part of the frame, its screen box more, not all of it.
+    const { pixels, subsurfacePixels, boxPixels, taps } = r.coverage;
+    expect(subsurfacePixels).toBeGreaterThan(0.05 * pixels);
+    expect(boxPixels).toBeGreaterThan(subsurfacePixels);
+    expect(boxPixels).toBeLessThan(pixels);
+    expect(taps.mean).toBeGreaterThan(1);
   }, 240_000);
 });

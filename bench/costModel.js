@@ -1,0 +1,120 @@
+// The bench's cost model (issue 19): what each stage of a frame writes and reads per screen pixel,
+// and the memory of the pipeline's targets, from the attachment formats
+// (src/2-scene-split/subsurfaceTarget.js, src/3-blur/BlurStage.js), the passes and their taps
+// (shaders/3-blur/subsurfaceBlur.frag.glsl). SwiftShader times are CPU times; a GPU is mostly
+// bound by memory traffic, which this counts instead.
+//
+// Cache assumption ("compulsory traffic"): every texel a pass reads comes from memory once per pass
+// and stays in cache for the neighbouring pixels' taps (a vertical pass at 1920×1080 with a reach of
+// 30 rows keeps 30 × 1920 × 16 B ≈ 0.9 MB of diffuse + surface live: an L2 holds it); the small
+// tables (footprints, profile: a few KB) cost nothing; every write goes to memory; clears are
+// counted as writes (a GPU's fast clear may make them nearly free). The texel fetches (what the
+// texture units do, the L1 traffic) are counted apart, with no reuse. Material textures are not
+// counted: a plain frame reads the same.
+// No imports: it loads in Node (the runner, the unit test) and in the page alike.
+
+/** Bytes per texel of the formats the pipeline's targets use. */
+export const TEXEL_BYTES = Object.freeze({ rgba16f: 8, rgba32f: 16, rg32f: 8, depth24: 4 });
+
+/** The pipeline's targets (the composer's own buffers are the application's, as with a RenderPass). */
+export const TARGETS = Object.freeze([
+  { name: 'colour (multi-target 0)', format: 'rgba16f', multisampled: true },
+  { name: 'diffuse (multi-target 1)', format: 'rgba16f', multisampled: true },
+  { name: 'surface (multi-target 2)', format: 'rg32f', multisampled: true },
+  { name: 'depth (multi-target)', format: 'depth24', multisampled: true },
+  { name: 'horizontal blur', format: 'rgba16f', multisampled: false },
+  { name: 'scattered light', format: 'rgba16f', multisampled: false },
+]);
+
+/**
+ * The memory of the pipeline's targets at `width` × `height`: with MSAA (`samples` > 0) three keeps
+ * a multisampled renderbuffer per multi-target attachment besides the resolved texture.
+ * @returns {{ targets: Array<{ name: string, bytes: number }>, bytes: number }}
+ */
+export function targetMemory(width, height, { samples = 0 } = {}) {
+  const pixels = width * height;
+  const targets = TARGETS.map((t) => ({ name: t.name, bytes: pixels * TEXEL_BYTES[t.format] * (1 + (t.multisampled && samples > 0 ? samples : 0)) }));
+  return { targets, bytes: targets.reduce((sum, t) => sum + t.bytes, 0) };
+}
+
+/**
+ * The switches the traffic depends on: version 0.2's frame (`BEFORE`) and this one's (`AFTER`).
+ * depthPrepass: the scene split's first call draws the subsurface materials' depth;
+ * confineToSubsurface: the blur passes are scissored to the subsurface pixels' screen box;
+ * fetchesEverywhere: the compose reads the scattered light and the surface at every pixel.
+ */
+export const BEFORE = Object.freeze({ depthPrepass: true, confineToSubsurface: false, fetchesEverywhere: false });
+export const AFTER = Object.freeze({ depthPrepass: false, confineToSubsurface: true, fetchesEverywhere: false });
+
+/**
+ * Directions the issue names that are not built, modelled on top of AFTER (what they would save,
+ * not a measurement): surfaceFromDepth, no surface attachment (the blur reads the depth texture,
+ * 4 B, and the width from the diffuse alpha); composeInBlur, the compose folded into the vertical
+ * pass (no scattered target; that pass then covers the whole frame and writes the output).
+ */
+export const NOT_BUILT = Object.freeze({
+  surfaceFromDepth: Object.freeze({ ...AFTER, surfaceFromDepth: true }),
+  composeInBlur: Object.freeze({ ...AFTER, composeInBlur: true }),
+  both: Object.freeze({ ...AFTER, surfaceFromDepth: true, composeInBlur: true }),
+});
+
+const { rgba16f: RGBA16F, rg32f: RG32F, depth24: DEPTH } = TEXEL_BYTES;
+
+/** One stage's traffic per screen pixel: bytes written, read from memory, and fetched by the texture units. */
+const stage = (written, read, fetched = read) => ({ written, read, fetched });
+
+/**
+ * A blur pass over `area` of the frame, `subsurface` of it on the mask, `taps` per direction,
+ * reading `surface` bytes per texel for the surface (the attachment, or the depth texture).
+ */
+function blurPass(area, subsurface, taps, surface) {
+  // Every pixel reads its centre (diffuse, surface) and writes its result; a mask pixel also reads
+  // its two neighbours' surface (the slope) and, per tap, two texels of diffuse and surface.
+  const centre = RGBA16F + surface;
+  const perMaskPixel = 2 * surface + taps * 2 * (RGBA16F + surface);
+  return stage(area * RGBA16F, area * centre, area * centre + subsurface * perMaskPixel);
+}
+
+/**
+ * Bytes per screen pixel of each stage (and of a plain three.js frame of the same scene).
+ * @param {{ depthPrepass: boolean, confineToSubsurface: boolean, fetchesEverywhere: boolean }} switches BEFORE, AFTER or between
+ * @param {object} scene what the frame covers, as fractions of its pixels
+ * @param {number} scene.subsurface pixels on subsurface objects (the mask)
+ * @param {number} scene.box pixels in the subsurface pixels' screen box
+ * @param {number} [scene.ordinary=0] pixels on ordinary opaque objects
+ * @param {number} scene.taps taps per pixel and direction on the mask (samples 'auto': the mean)
+ * @returns {{ scene: object, blurH: object, blurV: object, compose: object, total: object, plain: object }}
+ *   each { written, read, fetched } bytes per pixel
+ */
+export function frameTraffic(switches, { subsurface, box, ordinary = 0, taps }) {
+  const s = subsurface;
+  const covered = s + ordinary;
+  // Scene split: the four attachments cleared; the first call's ordinary fragments (depth test and
+  // write, colour); the prepass's depth; the split's fragments (depth, three attachments).
+  const prepass = switches.depthPrepass ? s : 0;
+  const surfaceAttachment = switches.surfaceFromDepth ? 0 : RG32F;
+  const attachments = 2 * RGBA16F + surfaceAttachment + DEPTH; // colour, diffuse, surface, depth
+  const scene = stage(attachments + ordinary * (DEPTH + RGBA16F) + prepass * DEPTH + s * (DEPTH + 2 * RGBA16F + surfaceAttachment),
+    ordinary * DEPTH + prepass * DEPTH + s * DEPTH);
+  const area = switches.confineToSubsurface ? box : 1;
+  const surface = switches.surfaceFromDepth ? DEPTH : RG32F;
+  const blurH = blurPass(area, s, taps, surface);
+  // Compose: depth, colour and diffuse (its mask) at every pixel, the scattered light on the mask
+  // (or everywhere, with the surface, as before issue 10); out: the composer's colour and depth.
+  const everywhere = switches.fetchesEverywhere ? 1 : 0;
+  const composeRead = DEPTH + 2 * RGBA16F + (everywhere ? RGBA16F + RG32F : s * RGBA16F);
+  let blurV = blurPass(area, s, taps, surface);
+  let compose = stage(RGBA16F + DEPTH, composeRead);
+  if (switches.composeInBlur) {
+    // The vertical pass over the whole frame: its taps as before, plus colour and depth read and
+    // the output (colour, depth) written at every pixel instead of the scattered light.
+    const v = blurPass(1, s, taps, surface);
+    blurV = stage(RGBA16F + DEPTH, v.read + RGBA16F + DEPTH, v.fetched + RGBA16F + DEPTH);
+    compose = stage(0, 0);
+  }
+  const stages = { scene, blurH, blurV, compose };
+  const total = stage(...['written', 'read', 'fetched'].map((k) => Object.values(stages).reduce((sum, x) => sum + x[k], 0)));
+  // A plain frame: colour and depth cleared, then each covered pixel's fragment (depth, colour).
+  const plain = stage(RGBA16F + DEPTH + covered * (DEPTH + RGBA16F), covered * DEPTH);
+  return { ...stages, total, plain };
+}

@@ -1,0 +1,155 @@
+// Issue 19's savings and their switches (the bench undoes each for one measure): the scene split
+// without the depth prepass (each subsurface object rasterised once), the blur scissored to the
+// subsurface pixels' screen box, the compose fetching less, the light depth pass skipped while
+// unread. Each switch must leave the image as it is: every variant is held against the frame with
+// every saving on, float read-backs, and the ordinary pixels against a plain three.js frame (the
+// shadows cast by and onto subsurface objects kept).
+import { describe, it, expect, beforeAll, afterAll } from 'vitest';
+import { openPage, evaluateFloats } from '../harness/page.js';
+
+let page;
+beforeAll(async () => { page = await openPage('/test/pages/lab.html'); });
+afterAll(async () => {
+  expect(page.problems).toEqual([]);
+  await page.close();
+});
+
+/**
+ * In the page: a subsurface sphere (noise albedo) over an ordinary floor, a second subsurface
+ * sphere half hidden behind it, an ordinary box in front of both; a directional light casting
+ * shadows. Renders it through the pipeline once per variant (switches set on a fresh pipeline;
+ * `moved`: one frame with the spheres elsewhere first, so the box moves between frames) and once
+ * with a plain RenderPass; reads the outputs, the scattered light and the diffuse attachment.
+ */
+function renderVariants(variants) {
+  const { THREE, SSS, RenderPass, createRenderer, createComposer, read, dataTexture } = window.lab;
+  const width = 192, height = 108;
+  const renderer = createRenderer(width, height);
+  renderer.shadowMap.enabled = true;
+  const scene = new THREE.Scene();
+  const camera = new THREE.PerspectiveCamera(30, width / height, 0.5, 50);
+  camera.position.set(0, 0.6, 8);
+  camera.lookAt(0, 0, 0);
+  let seed = 7;
+  const noise = () => ((seed = (seed * 16807) % 2147483647) / 2147483647);
+  const map = dataTexture(32, 32, () => { const v = 0.1 + 0.9 * noise(); return [v, 0.8 * v, 0.6 * v]; });
+  const skin = new THREE.MeshStandardMaterial({ color: 0xffffff, roughness: 0.6, map });
+  const skinBehind = new THREE.MeshStandardMaterial({ color: 0xffccaa, roughness: 0.8 });
+  const front = new THREE.Mesh(new THREE.SphereGeometry(0.9, 48, 32), skin);
+  const behind = new THREE.Mesh(new THREE.SphereGeometry(0.7, 32, 24), skinBehind);
+  behind.position.set(0.9, 0.3, -1.2);
+  const box = new THREE.Mesh(new THREE.BoxGeometry(0.5, 0.5, 0.5), new THREE.MeshStandardMaterial({ color: 0x3366cc }));
+  box.position.set(-0.7, -0.3, 1.2);
+  const floor = new THREE.Mesh(new THREE.PlaneGeometry(12, 12), new THREE.MeshStandardMaterial({ color: 0x999999 }));
+  floor.rotation.x = -Math.PI / 2;
+  floor.position.y = -1;
+  for (const m of [front, behind, box]) m.castShadow = m.receiveShadow = true;
+  floor.receiveShadow = true;
+  const light = new THREE.DirectionalLight(0xffffff, 3);
+  light.position.set(-3, 5, 4);
+  light.castShadow = true;
+  Object.assign(light.shadow.camera, { left: -4, right: 4, top: 4, bottom: -4, near: 0.5, far: 20 });
+  scene.add(front, behind, box, floor, light, light.target, new THREE.AmbientLight(0xffffff, 0.2));
+  const subsurface = [front, behind];
+  const home = subsurface.map((m) => m.position.clone());
+
+  const frame = async ({ switches = {}, moved = false }) => {
+    const composer = createComposer(renderer, { type: THREE.FloatType });
+    const sss = new SSS.SubsurfaceScattering({ scene, camera, worldUnitInMm: 100, type: THREE.FloatType, light });
+    for (const m of [skin, skinBehind]) sss.makeSubsurface(m);
+    sss.addTo(composer);
+    const targets = { scene: sss.scenePass, blur: sss.blur, compose: sss.composePass, pipeline: sss };
+    for (const [key, value] of Object.entries(switches)) {
+      const [owner, field] = key.split('.');
+      targets[owner][field] = value;
+    }
+    if (moved) {
+      subsurface.forEach((m) => m.position.x += 1.5);
+      composer.render();
+      subsurface.forEach((m, i) => m.position.copy(home[i]));
+    }
+    composer.render();
+    const out = {
+      output: await read(renderer, composer.readBuffer),
+      scattered: await read(renderer, sss.scatteredTarget),
+      diffuse: await read(renderer, sss.scenePass.renderTarget, 1),
+      box: sss.scenePass.subsurfaceBox,
+      blur: sss.plan.blur,
+    };
+    sss.dispose();
+    composer.dispose();
+    return out;
+  };
+  const plainFrame = async () => {
+    const composer = createComposer(renderer, { type: THREE.FloatType });
+    composer.addPass(new RenderPass(scene, camera));
+    composer.render();
+    const output = await read(renderer, composer.readBuffer);
+    composer.dispose();
+    return output;
+  };
+  return (async () => {
+    const results = {};
+    for (const [name, variant] of Object.entries(variants)) results[name] = await frame(variant);
+    results.plain = await plainFrame();
+    results.glError = renderer.getContext().getError();
+    renderer.dispose();
+    renderer.forceContextLoss();
+    return { width, height, ...results };
+  })();
+}
+
+const VARIANTS = {
+  saving: {},
+  depthPrepass: { switches: { 'scene.depthPrepass': true } },
+  fullFrameBlur: { switches: { 'blur.confineToSubsurface': false } },
+  composeAsBefore: { switches: { 'compose.fetchesEverywhere': true } },
+  lightDepthEveryFrame: { switches: { 'pipeline.skipsUnreadLightDepth': false } },
+  moved: { moved: true },
+};
+
+const maxDifference = (a, b) => {
+  let worst = 0;
+  for (let i = 0; i < a.length; i++) worst = Math.max(worst, Math.abs(a[i] - b[i]));
+  return worst;
+};
+
+describe('issue 19: each saving leaves the image as it is', () => {
+  let r;
+  beforeAll(async () => { r = await evaluateFloats(page, renderVariants, VARIANTS); });
+
+  it('the scene has what the savings are about: a box smaller than the frame, blur on, no GL error', () => {
+    expect(r.glError).toBe(0);
+    expect(r.saving.blur).toBe(true);
+    const { box } = r.saving;
+    expect(box).not.toBeNull(); // null would mean the whole frame: the scissor would not be tested
+    expect(box.width * box.height).toBeLessThan(0.6 * r.width * r.height);
+    expect(box.width * box.height).toBeGreaterThan(0.05 * r.width * r.height);
+    // Every subsurface pixel (diffuse alpha > 0) lies inside the box.
+    for (let y = 0; y < r.height; y++) for (let x = 0; x < r.width; x++) {
+      if (!(r.saving.diffuse[(y * r.width + x) * 4 + 3] > 0)) continue;
+      expect(x >= box.x && x < box.x + box.width && y >= box.y && y < box.y + box.height).toBe(true);
+    }
+  });
+
+  it.each(Object.keys(VARIANTS).filter((k) => k !== 'saving'))('%s: the output and the scattered light as with every saving', (name) => {
+    // The same shaders on the same inputs: the same floats (a scissor or a depth prepass changes
+    // which fragments run, not what they compute).
+    expect(maxDifference(r[name].output, r.saving.output)).toBe(0);
+    expect(maxDifference(r[name].scattered, r.saving.scattered)).toBe(0);
+  });
+
+  it('without the depth prepass, ordinary pixels are the plain three.js frame (shadows cast by the subsurface spheres kept)', () => {
+    const { output, diffuse } = r.saving;
+    let ordinary = 0, worst = 0, shadowed = 0;
+    for (let i = 0; i < output.length; i += 4) {
+      if (diffuse[i + 3] > 0) continue;
+      ordinary++;
+      for (let c = 0; c < 3; c++) worst = Math.max(worst, Math.abs(output[i + c] - r.plain[i + c]) / Math.max(r.plain[i + c], 1e-3));
+      if (r.plain[i] > 0 && r.plain[i] < 0.5 * r.plain[(5 * r.width + 5) * 4]) shadowed++; // floor darker than near the corner (lit)
+    }
+    expect(ordinary).toBeGreaterThan(1000);
+    expect(shadowed).toBeGreaterThan(50); // the spheres' shadow is on the floor
+    expect(worst).toBeLessThan(1e-5); // float targets: the same shading
+  });
+});
