@@ -21,7 +21,7 @@ import { estimatePixelsPerMm, planFrame } from '../framePlan.js';
 import { isPerspective } from '../support/screenScale.js';
 import { checkBoolean, checkNumber, checkOneOf, checkOptions, checkRgb } from '../support/parameterChecks.js';
 import { describe } from '../support/rendererSupport.js';
-import { FOLLOW_SURFACE_MODES, MAX_SCALE_MM, MIN_SCALE_MM, PIPELINE_DEFAULTS } from '../options.js';
+import { FOLLOW_SURFACE_MODES, MAX_SCALE_MM, METHODS, MIN_SCALE_MM, PIPELINE_DEFAULTS } from '../options.js';
 import { ATTACHMENT_NAMES } from './2-scene-split/attachments.js';
 import { subsurfaceBlurNode } from './3-blur/subsurfaceBlurTsl.js';
 import { composeNode } from './4-compose/composeTsl.js';
@@ -40,6 +40,18 @@ export const NODE_DEFAULTS = Object.freeze({
   depthThresholdMm: PIPELINE_DEFAULTS.depthThresholdMm,
   foreshortening: PIPELINE_DEFAULTS.foreshortening,
 });
+
+/** What setKernel({ ... }) accepts. */
+const KERNEL_OPTIONS = Object.freeze(['profile', 'method', 'samples', 'strength']);
+
+/** The WebGL pipeline's methods are accepted by name; the node has 'footprint' only (the others validate the WebGL path). */
+function checkMethod(method) {
+  checkOneOf('method', method, METHODS);
+  if (!NODE_METHODS.includes(method)) {
+    throw new RangeError(`subsurfaceScattering: method '${method}' is not available on the node (only ${NODE_METHODS.map((m) => `'${m}'`).join(', ')}; the WebGL pipeline has the others, for validation)`);
+  }
+  return method;
+}
 
 const checkWorldUnit = (mm) => checkNumber('worldUnitInMm', mm, { min: MIN_SCALE_MM, max: MAX_SCALE_MM, unit: 'mm' });
 const checkDepthThreshold = (mm) => checkNumber('depthThresholdMm', mm, { min: 0, minExclusive: true, max: MAX_SCALE_MM, unit: 'mm' });
@@ -61,9 +73,8 @@ export class SubsurfaceScatteringNode extends Node {
     super('vec4');
     if (!scenePass || scenePass.isPassNode !== true) throw new TypeError(`subsurfaceScattering: scenePass must be a PassNode (pass(scene, camera)), got ${describe(scenePass)}`);
     const o = { ...NODE_DEFAULTS, ...checkOptions('subsurfaceScattering options', options, Object.keys(NODE_DEFAULTS)) };
-    checkOneOf('method', o.method, NODE_METHODS);
+    this.method = checkMethod(o.method);
     this.scenePass = scenePass;
-    /** Whether the blur runs (false: the output equals the scene without scattering). */
     this.scattering = true;
     this.profileLookup = new ProfileLookup(getProfile(o.profile));
     this.footprintTable = new FootprintTable(this.profileLookup);
@@ -75,8 +86,7 @@ export class SubsurfaceScatteringNode extends Node {
     this.worldUnitInMm = o.worldUnitInMm;
     this.setKernel({ samples: o.samples, strength: o.strength });
     this.setFollowSurface(o.followSurface, o.depthThresholdMm);
-    this.foreshortening = o.foreshortening;
-    this.method = o.method;
+    this.setForeshortening(o.foreshortening);
     /** What the last frame ran: { samples, kernelPixels, blur } (see planFrame). */
     this.plan = { samples: 0, kernelPixels: 0, blur: false };
 
@@ -107,31 +117,41 @@ export class SubsurfaceScatteringNode extends Node {
     if (this.depthThresholdMm !== undefined) this.setFollowSurface(this.followSurface, this.depthThresholdMm);
   }
 
-  /** @param {boolean} enabled the grazing-angle correction */
-  set foreshortening(enabled) {
-    this._foreshortening = checkBoolean('foreshortening', enabled);
+  /** Whether the blur runs (false: the output equals the scene without scattering). */
+  get scattering() {
+    return this._scattering;
   }
 
-  get foreshortening() {
-    return this._foreshortening;
+  set scattering(enabled) {
+    this._scattering = checkBoolean('SubsurfaceScatteringNode.scattering', enabled);
   }
 
-  /** The diffusion profile (a name or a profile object); its tables are refilled on a change. */
-  set profile(profile) {
-    const p = getProfile(profile);
-    if (p !== this.profileLookup.profile) this.profileLookup.setProfile(p);
+  /** @param {boolean} enabled the grazing-angle correction (shrink the step by cos(tilt), compare depths with the local plane) */
+  setForeshortening(enabled) {
+    this.foreshortening = checkBoolean('foreshortening', enabled);
   }
 
+  /** The diffusion profile object (set it with setKernel({ profile })). */
   get profile() {
     return this.profileLookup.profile;
   }
 
   /**
-   * The taps and the strength, checked as the WebGL path checks them (computeKernel's marginal kernel).
-   * @param {{ samples?: number|'auto', strength?: number[] }} options
+   * The profile, the taps and the strength, checked as the WebGL pipeline checks them (the profile
+   * by getProfile, the taps and the strength by computeKernel's marginal kernel, which 'footprint'
+   * builds on); the profile tables are refilled only when the profile changes.
+   * @param {{ profile?: string|object, method?: 'footprint', samples?: number|'auto', strength?: number[] }} options
    */
-  setKernel({ samples = this.samples, strength = this.strength } = {}) {
-    computeKernel({ profile: this.profileLookup.profile, method: 'marginal', samples: samples === 'auto' ? AUTO_MAX_SAMPLES : samples, strength });
+  setKernel(options) {
+    if (options === null || typeof options !== 'object' || Array.isArray(options)) {
+      throw new TypeError(`setKernel: options must be an object { profile, method, samples, strength, falloff }, got ${describe(options)}`);
+    }
+    checkOptions('setKernel options', options, KERNEL_OPTIONS);
+    const { profile, method = this.method, samples = this.samples, strength = this.strength } = options;
+    checkMethod(method);
+    const p = profile === undefined ? this.profileLookup.profile : getProfile(profile);
+    computeKernel({ profile: p, method: 'marginal', samples: samples === 'auto' ? AUTO_MAX_SAMPLES : samples, strength });
+    if (p !== this.profileLookup.profile) this.profileLookup.setProfile(p); // tens of ms: only on a change
     this.samples = samples;
     this.strength = checkRgb('strength', strength, { min: 0, max: 1 });
     this._uniforms.strength.value.fromArray(this.strength);

@@ -22,7 +22,7 @@ const MATERIAL_OPTIONS = Object.freeze(['widthMm']);
 /** The largest width accepted, profile mm per mm: a profile a metre wide is a mistake. */
 const MAX_WIDTH_MM = 1000;
 
-const checkWidth = (widthMm) => checkNumber('widthMm', widthMm, { min: 0, max: MAX_WIDTH_MM, unit: 'mm' });
+const checkWidth = (widthMm) => checkNumber('widthMm', widthMm, { min: 0, minExclusive: true, max: MAX_WIDTH_MM, unit: 'mm' });
 
 /**
  * The split, mixed into a node material class: setupLighting returns the light without its diffuse
