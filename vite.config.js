@@ -61,7 +61,9 @@ export default defineConfig(({ mode }) => {
       ],
     },
     // Not pre-bundled with another three: the pre-bundled dependencies import the aliased one.
-    optimizeDeps: threeDir ? { exclude: ['three'] } : {},
+    // three/webgpu and three/tsl (the WebGPU pages) pre-bundled from the start: found later, they
+    // made Vite re-optimize and answer the page's other imports 504 (Outdated Optimize Dep).
+    optimizeDeps: threeDir ? { exclude: ['three'] } : { include: ['three/webgpu', 'three/tsl'] },
     build: {
       outDir: 'dist/demo',
       emptyOutDir: true,

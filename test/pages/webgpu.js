@@ -30,14 +30,23 @@ async function sharedRenderer(backend, width, height) {
   return renderer;
 }
 
-/** Any texture of a render target as RGBA 32-bit floats, rows as the backend stores them. */
+/**
+ * Any texture of a render target as RGBA 32-bit floats, rows bottom-up as the WebGL lab reads them
+ * (the WebGPU backend's textures hold them top-down).
+ */
 async function readFloats(renderer, target, index = 0) {
   const { width, height } = target;
   if (typeof index === 'string') index = target.textures.findIndex((t) => t.name === index);
   const data = await renderer.readRenderTargetPixelsAsync(target, 0, 0, width, height, index);
-  if (data instanceof Float32Array) return data;
-  if (data instanceof Uint16Array) return Float32Array.from(data, THREE.DataUtils.fromHalfFloat);
-  throw new TypeError(`readFloats: unexpected ${data.constructor.name}`);
+  let floats;
+  if (data instanceof Float32Array) floats = data;
+  else if (data instanceof Uint16Array) floats = Float32Array.from(data, THREE.DataUtils.fromHalfFloat);
+  else throw new TypeError(`readFloats: unexpected ${data.constructor.name}`);
+  if (!renderer.backend.isWebGPUBackend) return floats;
+  const rows = new Float32Array(floats.length);
+  const row = width * 4;
+  for (let y = 0; y < height; y++) rows.set(floats.subarray((height - 1 - y) * row, (height - y) * row), y * row);
+  return rows;
 }
 
 /** The subsurface pass and node over `scene` seen by `camera`, in a RenderPipeline. */
@@ -74,38 +83,33 @@ async function flat({ width = 256, height = 256, backend = 'webgpu', sss = {}, .
 let headPromise = null;
 
 /** A fresh head scene framing the face (a clone of the mesh and its material: each renderer converts its own). */
-async function headRig(aspect) {
+async function headRig(aspect, fovDeg) {
   headPromise ??= loadHead({ base: '/' });
   const loaded = await headPromise;
   const mesh = loaded.mesh.clone();
   mesh.material = loaded.mesh.material.clone();
   const rig = createHeadScene(mesh);
   rig.camera.aspect = aspect;
+  rig.camera.fov = fovDeg ?? rig.camera.fov;
   rig.camera.updateProjectionMatrix();
   rig.camera.lookAt(FACE_CENTRE);
   rig.camera.updateMatrixWorld();
   return { ...rig, isStandIn: loaded.isStandIn };
 }
 
-/** 8-bit RGBA of a float read-back, as a canvas stores it (rounded, clamped), rows flipped when asked. */
-function toBytes(floats, width, height, flipRows) {
-  const bytes = new Uint8Array(width * height * 4);
-  for (let y = 0; y < height; y++) {
-    const from = (flipRows ? height - 1 - y : y) * width * 4;
-    for (let i = 0; i < width * 4; i++) bytes[y * width * 4 + i] = Math.round(Math.min(Math.max(floats[from + i], 0), 1) * 255);
-  }
-  return bytes;
-}
+/** 8-bit RGBA of a float read-back, as a canvas stores it (rounded, clamped). */
+const toBytes = (floats) => Uint8Array.from(floats, (v) => Math.round(Math.min(Math.max(v, 0), 1) * 255));
 
 /**
  * The demo's head through both renderers, tone mapped (ACES) and sRGB-encoded, as 8-bit RGBA rows
  * bottom-up: the WebGL pipeline in an EffectComposer with OutputPass, and the node in a
  * RenderPipeline on `backend`; with `sss: false` each renderer's plain frame instead (the baseline
  * difference between the two renderers). Shadows off: the renderers filter shadow maps differently.
+ * `fovDeg` narrows the demo's 25° view onto the face (more pixels per mm: more visible scattering).
  */
-async function head({ width = 320, height = 180, backend = 'webgpu', sss = true }) {
+async function head({ width = 320, height = 180, backend = 'webgpu', sss = true, fovDeg }) {
   const L = window.lab;
-  const glRig = await headRig(width / height);
+  const glRig = await headRig(width / height, fovDeg);
   const gl = L.createRenderer(width, height);
   gl.toneMapping = L.THREE.ACESFilmicToneMapping;
   const composer = L.createComposer(gl);
@@ -118,12 +122,12 @@ async function head({ width = 320, height = 180, backend = 'webgpu', sss = true 
   }
   composer.addPass(new L.OutputPass());
   composer.render();
-  const webgl = toBytes(await L.read(gl, composer.readBuffer), width, height, false);
+  const webgl = toBytes(await L.read(gl, composer.readBuffer));
   composer.dispose();
   gl.dispose();
   gl.forceContextLoss();
 
-  const rig = await headRig(width / height);
+  const rig = await headRig(width / height, fovDeg);
   const renderer = await createRenderer(width, height, { backend });
   renderer.toneMapping = THREE.ACESFilmicToneMapping;
   const target = new THREE.RenderTarget(width, height, { type: THREE.HalfFloatType });
@@ -143,12 +147,83 @@ async function head({ width = 320, height = 180, backend = 'webgpu', sss = true 
     disposeAll = () => pipeline.dispose();
   }
   renderer.setRenderTarget(null);
-  const node = toBytes(await readFloats(renderer, target), width, height, backend === 'webgpu');
+  const node = toBytes(await readFloats(renderer, target));
   disposeAll();
   target.dispose();
   renderer.dispose();
   return { width, height, webgl, node, isStandIn: rig.isStandIn };
 }
 
-window.wgpu = { THREE, NODE, pass, createRenderer, readFloats, subsurfacePipeline, flat, head };
+/** A small lit scene: a box of `material` over a grey background, a directional and an ambient light. */
+function boxScene(material) {
+  const scene = new THREE.Scene();
+  scene.background = new THREE.Color(0.25, 0.25, 0.25);
+  const camera = new THREE.PerspectiveCamera(30, 16 / 9, 0.1, 50);
+  camera.position.set(0, 0, 5);
+  const mesh = new THREE.Mesh(new THREE.BoxGeometry(1.6, 1, 0.5), material);
+  mesh.rotation.set(0.3, 0.5, 0);
+  const light = new THREE.DirectionalLight(0xffffff, 3);
+  light.position.set(1, 2, 3);
+  scene.add(mesh, light, light.target, new THREE.AmbientLight(0xffffff, 0.4));
+  return { scene, camera, mesh };
+}
+
+const memoryOf = (renderer) => ({ ...renderer.info.memory });
+
+/**
+ * renderer.info.memory before the node (the scene drawn plainly), while it runs (three frames, one
+ * with the blur off) and after its dispose (with the pipeline, the scene pass and the subsurface
+ * material, and the scene drawn plainly again).
+ */
+async function disposal({ backend = 'webgpu', width = 96, height = 54 }) {
+  const renderer = await createRenderer(width, height, { backend });
+  const material = new THREE.MeshStandardMaterial({ color: 0xffccaa, roughness: 0.6 });
+  const { scene, camera, mesh } = boxScene(material);
+  renderer.render(scene, camera);
+  const before = memoryOf(renderer);
+  const skin = NODE.subsurfaceMaterial(material, { widthMm: 5 });
+  mesh.material = skin;
+  const { scenePass, node, pipeline } = subsurfacePipeline(renderer, scene, camera, { sss: { worldUnitInMm: 100 } });
+  pipeline.render();
+  node.scattering = false;
+  pipeline.render();
+  node.scattering = true;
+  pipeline.render();
+  const during = memoryOf(renderer);
+  const blurred = node.plan.blur;
+  node.dispose();
+  pipeline.dispose();
+  scenePass.dispose();
+  skin.dispose();
+  mesh.material = material;
+  renderer.render(scene, camera);
+  const after = memoryOf(renderer);
+  renderer.dispose();
+  return { before, during, after, blurred };
+}
+
+/**
+ * The same box drawn plainly (renderer.render, no subsurface pass) with three's material and with
+ * its subsurface version: 8-bit RGBA of each.
+ */
+async function plainDraw({ backend = 'webgpu', width = 96, height = 54 }) {
+  const renderer = await createRenderer(width, height, { backend });
+  const target = new THREE.RenderTarget(width, height, { type: THREE.HalfFloatType });
+  const material = new THREE.MeshPhysicalMaterial({ color: 0xffccaa, roughness: 0.6, clearcoat: 0.5 });
+  const { scene, camera, mesh } = boxScene(material);
+  const draw = async () => {
+    renderer.setRenderTarget(target);
+    renderer.render(scene, camera);
+    renderer.setRenderTarget(null);
+    return toBytes(await readFloats(renderer, target));
+  };
+  const three = await draw();
+  mesh.material = NODE.subsurfaceMaterial(material, { widthMm: 5 });
+  const subsurface = await draw();
+  target.dispose();
+  renderer.dispose();
+  return { three, subsurface };
+}
+
+window.wgpu = { THREE, NODE, pass, createRenderer, readFloats, subsurfacePipeline, flat, head, disposal, plainDraw };
 window.testReady = true;
