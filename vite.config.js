@@ -2,6 +2,7 @@
 //   `vite build --mode lib`  → dist/three-separable-sss.js, the ES module users import (GLSL inlined,
 //                              three and gl-matrix left as imports), and the subpath exports
 //                              dist/postprocessing.js and dist/react.js (pmndrs, R3F left as imports)
+//                              and dist/webgpu.js (three/webgpu, three/tsl left as imports)
 //   `vite build`             → dist/demo/, the static demo page
 //   `vite` (npm start)       → the demo and the test pages on a dev server
 import { defineConfig } from 'vite';
@@ -34,6 +35,7 @@ export default defineConfig(({ mode }) => {
             'three-separable-sss': 'src/index.js',
             postprocessing: 'src/integrations/postprocessing.js',
             react: 'src/integrations/react.js',
+            webgpu: 'src/webgpu/index.js',
           },
           formats: ['es'],
           fileName: (format, entryName) => `${entryName}.js`,
@@ -58,6 +60,7 @@ export default defineConfig(({ mode }) => {
         { find: /^three-separable-sss$/, replacement: `${root}src/index.js` },
         { find: /^three-separable-sss\/postprocessing$/, replacement: `${root}src/integrations/postprocessing.js` },
         { find: /^three-separable-sss\/react$/, replacement: `${root}src/integrations/react.js` },
+        { find: /^three-separable-sss\/webgpu$/, replacement: `${root}src/webgpu/index.js` },
       ],
     },
     // Not pre-bundled with another three: the pre-bundled dependencies import the aliased one.

@@ -24,6 +24,7 @@ import { describe } from '../support/rendererSupport.js';
 import { FOLLOW_SURFACE_MODES, MAX_SCALE_MM, METHODS, MIN_SCALE_MM, PIPELINE_DEFAULTS } from '../options.js';
 import { ATTACHMENT_NAMES } from './2-scene-split/attachments.js';
 import { subsurfaceBlurNode } from './3-blur/subsurfaceBlurTsl.js';
+import { checkWebgpuThree } from './threeVersion.js';
 import { composeNode } from './4-compose/composeTsl.js';
 
 /** The methods the node has: the WebGL path's default ('footprint'; the others are for validation there). */
@@ -71,6 +72,7 @@ export class SubsurfaceScatteringNode extends Node {
    */
   constructor(scenePass, options) {
     super('vec4');
+    checkWebgpuThree();
     if (!scenePass || scenePass.isPassNode !== true) throw new TypeError(`subsurfaceScattering: scenePass must be a PassNode (pass(scene, camera)), got ${describe(scenePass)}`);
     const o = { ...NODE_DEFAULTS, ...checkOptions('subsurfaceScattering options', options, Object.keys(NODE_DEFAULTS)) };
     this.method = checkMethod(o.method);
@@ -97,7 +99,8 @@ export class SubsurfaceScatteringNode extends Node {
     this._horizontalTarget.texture.name = 'subsurface.horizontal';
     this._scatteredTarget = new RenderTarget(1, 1, { type: HalfFloatType, depthBuffer: false });
     this._scatteredTarget.texture.name = 'subsurface.scattered';
-    this._scatteredNode = passTexture(this, this._scatteredTarget.texture);
+    /** @type {import('three/webgpu').TextureNode} what the compose adds: the scattered light (or the unblurred light when the plan skips the blur) */
+    this._scatteredNode = /** @type {any} */ (passTexture(this, this._scatteredTarget.texture));
     this._materials = null; // the two blur passes' materials, built for _blurKey
     this._blurKey = '';
     this._profileNode = texture(this.profileLookup.texture);
@@ -169,6 +172,7 @@ export class SubsurfaceScatteringNode extends Node {
     this._uniforms.depthFalloff.value = this.worldUnitInMm / depthThresholdMm; // 1 / threshold in world units
   }
 
+  /** @returns {import('three/webgpu').TextureNode} the scattered diffuse light, premultiplied by its coverage */
   getTextureNode() {
     return this._scatteredNode;
   }
