@@ -102,6 +102,9 @@ export async function startBrowser({ gpu = false, webgpu = false, protocolTimeou
   const server = await createServer({
     root,
     configFile: join(root, 'vite.config.js'),
+    // The checkout's own dependency cache (git-ignored), not node_modules/.vite: worktrees sharing
+    // one node_modules re-optimised it under each other's servers (504 "Outdated Optimize Dep").
+    cacheDir: join(root, '.vite'),
     logLevel: 'error',
     clearScreen: false,
     server: { host: '127.0.0.1', port: 0, strictPort: false, hmr: false, watch: null },

@@ -6,8 +6,8 @@ import * as THREE from 'three/webgpu';
 import { pass } from 'three/tsl';
 import * as NODE from '/src/webgpu/index.js';
 import { flatScene } from './flatScene.js';
-import { loadHead } from '/demo/headModel.js';
-import { createHeadScene, FACE_CENTRE, HEAD_WORLD_UNIT_IN_MM } from '/demo/headScene.js';
+import { HEAD_WORLD_UNIT_IN_MM } from '/demo/headScene.js';
+import { headRig } from './headRig.js';
 import './lab.js'; // window.lab: the WebGL pipeline's side of the comparisons
 
 /** A WebGPURenderer on an offscreen canvas of `width` × `height` device pixels, initialised. */
@@ -78,23 +78,6 @@ async function flat({ width = 256, height = 256, backend = 'webgpu', sss = {}, .
   material.dispose();
   map.dispose();
   return result;
-}
-
-let headPromise = null;
-
-/** A fresh head scene framing the face (a clone of the mesh and its material: each renderer converts its own). */
-async function headRig(aspect, fovDeg) {
-  headPromise ??= loadHead({ base: '/' });
-  const loaded = await headPromise;
-  const mesh = loaded.mesh.clone();
-  mesh.material = loaded.mesh.material.clone();
-  const rig = createHeadScene(mesh);
-  rig.camera.aspect = aspect;
-  rig.camera.fov = fovDeg ?? rig.camera.fov;
-  rig.camera.updateProjectionMatrix();
-  rig.camera.lookAt(FACE_CENTRE);
-  rig.camera.updateMatrixWorld();
-  return { ...rig, isStandIn: loaded.isStandIn };
 }
 
 /** 8-bit RGBA of a float read-back, as a canvas stores it (rounded, clamped). */

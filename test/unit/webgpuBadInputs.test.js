@@ -10,6 +10,7 @@ import * as SSS from '../../src/index.js';
 import * as NODE from '../../src/webgpu/index.js';
 import { CALL_CASES } from '../reliability/badInputs.js';
 import { createFixture } from '../reliability/fixture.js';
+import { expectOutcome } from '../reliability/expectError.js';
 
 /** The table's lines about what the node has too: construction options, kernel, depth rule, width. */
 const NODE_LINES = [
@@ -50,11 +51,7 @@ function nodeFixture() {
 function expectError(run, expected, fragment) {
   const t = nodeFixture();
   try {
-    let error = null;
-    try { run(t); } catch (e) { error = e; }
-    expect(error, 'no error was thrown').not.toBe(null);
-    expect(error.constructor.name).toBe(expected);
-    expect(error.message).toMatch(fragment);
+    expectOutcome(run, t, expected, fragment);
   } finally {
     t.dispose();
   }
