@@ -25,7 +25,8 @@ import { FOLLOW_SURFACE_MODES, MAX_SCALE_MM, METHODS, MIN_SCALE_MM, PIPELINE_DEF
 import { ATTACHMENT_NAMES } from './2-scene-split/attachments.js';
 import { subsurfaceBlurNode } from './3-blur/subsurfaceBlurTsl.js';
 import { checkWebgpuThree } from './threeVersion.js';
-import { composeNode } from './4-compose/composeTsl.js';
+import { NODE_DEBUG_VIEWS, composeNode, debugViewUniform } from './4-compose/composeTsl.js';
+import { DEBUG_VIEWS } from '../4-compose/debugViews.js';
 
 /** The methods the node has: the WebGL path's default ('footprint'; the others are for validation there). */
 export const NODE_METHODS = Object.freeze(['footprint']);
@@ -83,8 +84,10 @@ export class SubsurfaceScatteringNode extends Node {
     this._uniforms = {
       kernelRadiusMm: uniform(0), strength: uniform(new Vector3(1, 1, 1)), projectionScale: uniform(new Vector2(1, 1)),
       resolution: uniform(new Vector2(1, 1)), depthFalloff: uniform(1), perspective: uniform(1), mmToWorld: uniform(1e-3),
-      marginalRangeMm: uniform(1),
+      marginalRangeMm: uniform(1), debugView: debugViewUniform(), debugDepthRange: uniform(1),
     };
+    /** What the output shows: 'final' or one ingredient (see setDebugView). */
+    this.debugView = 'final';
     this.worldUnitInMm = o.worldUnitInMm;
     this.setKernel({ samples: o.samples, strength: o.strength });
     this.setFollowSurface(o.followSurface, o.depthThresholdMm);
@@ -170,6 +173,26 @@ export class SubsurfaceScatteringNode extends Node {
     this.followSurface = mode;
     this.depthThresholdMm = depthThresholdMm;
     this._uniforms.depthFalloff.value = this.worldUnitInMm / depthThresholdMm; // 1 / threshold in world units
+  }
+
+  /**
+   * Shows one ingredient instead of the final image, as the WebGL pipeline's setDebugView does:
+   * 'final', 'diffuse' (the scattered diffuse light), 'specular' (the rest of subsurface pixels),
+   * 'mask', 'depth' (linear view depth, white at 0, black at `depthRange` world units).
+   * A uniform: switching rebuilds nothing.
+   * @param {'final'|'diffuse'|'specular'|'mask'|'depth'} view
+   * @param {{ depthRange?: number }} [options]
+   */
+  setDebugView(view, options) {
+    const { depthRange = 1 } = checkOptions('setDebugView options', options, ['depthRange']);
+    checkOneOf('view', view, DEBUG_VIEWS);
+    if (!NODE_DEBUG_VIEWS.includes(view)) {
+      throw new RangeError(`setDebugView: view '${view}' needs transmittance, which the node does not have yet (it has ${NODE_DEBUG_VIEWS.map((v) => `'${v}'`).join(', ')})`);
+    }
+    checkNumber('depthRange', depthRange, { min: 0, minExclusive: true, unit: 'world units' });
+    this._uniforms.debugView.value = DEBUG_VIEWS.indexOf(view);
+    this._uniforms.debugDepthRange.value = depthRange;
+    this.debugView = view;
   }
 
   /** @returns {import('three/webgpu').TextureNode} the scattered diffuse light, premultiplied by its coverage */
@@ -265,6 +288,9 @@ export class SubsurfaceScatteringNode extends Node {
       colour: this.scenePass.getTextureNode(ATTACHMENT_NAMES.COLOR),
       unscattered: this.scenePass.getTextureNode(ATTACHMENT_NAMES.DIFFUSE),
       scattered: this._scatteredNode,
+      surface: this.scenePass.getTextureNode(ATTACHMENT_NAMES.SURFACE),
+      view: this._uniforms.debugView,
+      depthRange: this._uniforms.debugDepthRange,
     });
   }
 

@@ -5,10 +5,12 @@
 //   (measured 2026-12-01, 320 × 180: mean 0.03-0.05, p99 1 on WebGPU, as the renderers' plain
 //   frames differ; the scattering itself changes the close-up by p99 8);
 // - a subsurface material drawn outside a subsurface pass renders exactly as three's own material;
+// - the debug views add up (diffuse + specular = final on subsurface pixels);
 // - dispose returns the renderer to its baseline (renderer.info.memory: geometries, textures,
 //   render targets, programs; one attribute stays, the full-screen quad's geometry that the node,
 //   like three's own display nodes, shares between all instances).
 import { describe, it, expect, beforeAll, afterAll } from 'vitest';
+import { evaluateFloats } from '../harness/page.js';
 import { BACKENDS, openWebgpuPage } from '../harness/webgpuBrowser.js';
 
 let page;
@@ -54,6 +56,26 @@ for (const backend of BACKENDS) {
       const r = await run('plainDraw', { backend });
       expect(difference(r.subsurface, r.three).max).toBe(0);
       expect(r.three.some((v, i) => i % 4 === 0 && v > 100)).toBe(true); // the box is lit
+    });
+
+    it("shows the debug views it has: diffuse + specular = final on the mask, the mask 0 or 1, depth in (0, 1)", async () => {
+      const v = await evaluateFloats(page, (b) => window.wgpu.debugViews({ backend: b }), backend);
+      let on = 0;
+      for (let i = 0; i < v.mask.length; i += 4) {
+        const mask = v.mask[i];
+        expect([0, 1]).toContain(mask);
+        for (let c = 0; c < 3; c++) {
+          if (mask === 1) expect(Math.abs(v.diffuse[i + c] + v.specular[i + c] - v.final[i + c])).toBeLessThan(1e-3);
+          else expect(v.diffuse[i + c] + v.specular[i + c]).toBe(0);
+        }
+        if (mask === 1) {
+          on++;
+          expect(v.depth[i]).toBeGreaterThan(0);
+          expect(v.depth[i]).toBeLessThan(1);
+        }
+      }
+      expect(on).toBeGreaterThan(v.mask.length / 4 / 20); // the box covers part of the frame
+      expect(on).toBeLessThan(v.mask.length / 4);
     });
 
     it("dispose returns the renderer to its baseline (renderer.info.memory)", async () => {

@@ -208,5 +208,29 @@ async function plainDraw({ backend = 'webgpu', width = 96, height = 54 }) {
   return { three, subsurface };
 }
 
-window.wgpu = { THREE, NODE, pass, createRenderer, readFloats, subsurfacePipeline, flat, head, disposal, plainDraw };
+/** The box through the node in each debug view it has, linear (no output transform), float RGBA. */
+async function debugViews({ backend = 'webgpu', width = 96, height = 54 }) {
+  const renderer = await createRenderer(width, height, { backend });
+  const material = new THREE.MeshStandardMaterial({ color: 0xffccaa, roughness: 0.6 });
+  const { scene, camera, mesh } = boxScene(material);
+  mesh.material = NODE.subsurfaceMaterial(material, { widthMm: 5 });
+  const { scenePass, node, pipeline } = subsurfacePipeline(renderer, scene, camera, { sss: { worldUnitInMm: 100 } });
+  const target = new THREE.RenderTarget(width, height, { type: THREE.FloatType });
+  const views = {};
+  for (const view of ['final', 'diffuse', 'specular', 'mask', 'depth']) {
+    node.setDebugView(view, { depthRange: 10 });
+    renderer.setRenderTarget(target);
+    pipeline.render();
+    renderer.setRenderTarget(null);
+    views[view] = await readFloats(renderer, target);
+  }
+  node.dispose();
+  pipeline.dispose();
+  scenePass.dispose();
+  target.dispose();
+  renderer.dispose();
+  return views;
+}
+
+window.wgpu = { THREE, NODE, pass, createRenderer, readFloats, subsurfacePipeline, flat, head, disposal, plainDraw, debugViews };
 window.testReady = true;

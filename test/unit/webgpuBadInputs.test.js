@@ -15,7 +15,7 @@ import { expectOutcome } from '../reliability/expectError.js';
 /** The table's lines about what the node has too: construction options, kernel, depth rule, width. */
 const NODE_LINES = [
   /^worldUnitInMm: /, /^profile/, /^method: /, /^samples: /, /^strength: /, /^followSurface: /, /^depthThresholdMm: /,
-  /^foreshortening: /, /^sss\.worldUnitInMm = /, /^setKernel/, /^setFollowSurface/, /^setForeshortening/, /^widthMm: /,
+  /^foreshortening: /, /^sss\.worldUnitInMm = /, /^setKernel/, /^setFollowSurface/, /^setForeshortening/, /^setDebugView/, /^widthMm: /,
 ];
 const NODE_OPTIONS = Object.keys(NODE.NODE_DEFAULTS);
 
@@ -79,6 +79,7 @@ const NODE_CASES = [
   ["a WebGL pipeline's option", (t) => t.NODE.subsurfaceScattering(pass(t.scene, t.camera), { lightDepthSize: 1024 }), 'TypeError', /unknown option "lightDepthSize"/],
   ["method: 'marginal' (WebGL only)", (t) => t.make({ method: 'marginal' }), 'RangeError', /method 'marginal' is not available on the node \(only 'footprint'/],
   ["setKernel({ method: 'dense' })", (t) => t.sss.setKernel({ method: 'dense' }), 'RangeError', /method 'dense' is not available on the node/],
+  ["setDebugView('thickness') (needs transmittance)", (t) => t.sss.setDebugView('thickness'), 'RangeError', /view 'thickness' needs transmittance, which the node does not have yet/],
   ["scattering = 'no'", (t) => { t.sss.scattering = 'no'; }, 'TypeError', /SubsurfaceScatteringNode\.scattering must be a boolean \(true or false\), got "no"/],
   ['subsurfaceMaterial(null)', (t) => t.NODE.subsurfaceMaterial(null), 'TypeError', /subsurfaceMaterial: material must be a THREE\.MeshStandardMaterial or MeshPhysicalMaterial \(or its node version\), got null/],
   ['subsurfaceMaterial(a MeshBasicMaterial)', (t) => t.NODE.subsurfaceMaterial(new t.THREE.MeshBasicMaterial()), 'TypeError', /material must be .*got MeshBasicMaterial/],
