@@ -21,42 +21,15 @@ import { estimatePixelsPerMm, planFrame } from '../framePlan.js';
 import { isPerspective } from '../support/screenScale.js';
 import { checkBoolean, checkNumber, checkOneOf, checkOptions, checkRgb } from '../support/parameterChecks.js';
 import { describe } from '../support/rendererSupport.js';
-import { FOLLOW_SURFACE_MODES, MAX_SCALE_MM, METHODS, MIN_SCALE_MM, PIPELINE_DEFAULTS } from '../options.js';
+import { FOLLOW_SURFACE_MODES } from '../options.js';
+import {
+  KERNEL_OPTIONS, NODE_DEFAULTS, checkDepthThreshold, checkMethod, checkWorldUnit,
+} from './nodeOptions.js';
 import { ATTACHMENT_NAMES } from './2-scene-split/attachments.js';
 import { subsurfaceBlurNode } from './3-blur/subsurfaceBlurTsl.js';
 import { checkWebgpuThree } from './threeVersion.js';
 import { NODE_DEBUG_VIEWS, composeNode, debugViewUniform } from './4-compose/composeTsl.js';
 import { DEBUG_VIEWS } from '../4-compose/debugViews.js';
-
-/** The methods the node has: the WebGL path's default ('footprint'; the others are for validation there). */
-export const NODE_METHODS = Object.freeze(['footprint']);
-
-/** What subsurfaceScattering(scenePass, { ... }) accepts, with its defaults (the WebGL pipeline's). */
-export const NODE_DEFAULTS = Object.freeze({
-  worldUnitInMm: PIPELINE_DEFAULTS.worldUnitInMm,
-  profile: PIPELINE_DEFAULTS.profile,
-  method: PIPELINE_DEFAULTS.method,
-  samples: PIPELINE_DEFAULTS.samples,
-  strength: /** @type {number[]} */ ([1, 1, 1]),
-  followSurface: PIPELINE_DEFAULTS.followSurface,
-  depthThresholdMm: PIPELINE_DEFAULTS.depthThresholdMm,
-  foreshortening: PIPELINE_DEFAULTS.foreshortening,
-});
-
-/** What setKernel({ ... }) accepts. */
-const KERNEL_OPTIONS = Object.freeze(['profile', 'method', 'samples', 'strength']);
-
-/** The WebGL pipeline's methods are accepted by name; the node has 'footprint' only (the others validate the WebGL path). */
-function checkMethod(method) {
-  checkOneOf('method', method, METHODS);
-  if (!NODE_METHODS.includes(method)) {
-    throw new RangeError(`subsurfaceScattering: method '${method}' is not available on the node (only ${NODE_METHODS.map((m) => `'${m}'`).join(', ')}; the WebGL pipeline has the others, for validation)`);
-  }
-  return method;
-}
-
-const checkWorldUnit = (mm) => checkNumber('worldUnitInMm', mm, { min: MIN_SCALE_MM, max: MAX_SCALE_MM, unit: 'mm' });
-const checkDepthThreshold = (mm) => checkNumber('depthThresholdMm', mm, { min: 0, minExclusive: true, max: MAX_SCALE_MM, unit: 'mm' });
 
 const _quadMesh = /*@__PURE__*/ new QuadMesh();
 const _size = /*@__PURE__*/ new Vector2();
@@ -245,6 +218,10 @@ export class SubsurfaceScatteringNode extends Node {
     const { scenePass } = this;
     const camera = scenePass.camera;
     const { scene } = scenePass;
+    if (scene.fog && !this._warnedFog) {
+      this._warnedFog = true; // said once, not silently wrong
+      console.warn('SubsurfaceScatteringNode: scene.fog fogs the colour output only; the diffuse light of subsurface materials is not fogged on this renderer yet (the WebGL pipeline fades it)');
+    }
     if (scene.matrixWorldAutoUpdate === true) scene.updateMatrixWorld();
     if (camera.parent === null && camera.matrixWorldAutoUpdate === true) camera.updateMatrixWorld();
     // The pass's size as the pass sets it (PassNode.updateBefore), known before it renders.

@@ -15,7 +15,8 @@ export {
 export { ATTACHMENT_NAMES } from './2-scene-split/attachments.js';
 
 // Stages 3 and 4: the separable blur and the compose, as one node.
-export { SubsurfaceScatteringNode, subsurfaceScattering, NODE_DEFAULTS, NODE_METHODS } from './SubsurfaceScatteringNode.js';
+export { SubsurfaceScatteringNode, subsurfaceScattering } from './SubsurfaceScatteringNode.js';
+export { NODE_DEFAULTS, NODE_METHODS } from './nodeOptions.js';
 
 // The three releases this entry supports (its own floor: r187).
 export { WEBGPU_THREE, WEBGPU_THREE_RANGE } from './threeVersion.js';
