@@ -19,7 +19,7 @@ it('the README WebGPURenderer snippet renders a subsurface object', async () => 
   const scene = usage.slice(usage.indexOf('const scene'), usage.indexOf('scene.add(disc);') + 'scene.add(disc);'.length);
   expect(scene).toContain('const skin');
   // A few animation frames: the snippet's loop has rendered (WebGPURenderer initialises first).
-  const path = writeSnippetPage('webgpu-readme', `${snippet}\n${scene}\n`, 10); // imports are hoisted
+  const path = writeSnippetPage('webgpu-readme', `${scene}\n${snippet}\n`, 10); // the scene first: imports are hoisted, statements are not
 
   const page = await openWebgpuPage(path, { width: 320, height: 180 });
   const { data } = await screenshotPixels(page);

@@ -4,7 +4,7 @@
 // material wrote; the result is never NaN or Inf. The debug views (src/4-compose/debugViews.js's,
 // by name) are a uniform here, so switching one rebuilds nothing; the thickness and transmittance
 // views need transmittance, which the node does not have yet.
-import { Fn, If, float, select, uniform, vec3, vec4 } from 'three/tsl';
+import { Fn, If, float, ivec2, screenCoordinate, select, textureLoad, uniform, vec3, vec4 } from 'three/tsl';
 import { DEBUG_VIEW, DEBUG_VIEWS } from '../../4-compose/debugViews.js';
 import { finite3 } from '../3-blur/surfaceTsl.js';
 
@@ -16,7 +16,9 @@ export const debugViewUniform = () => uniform(DEBUG_VIEWS.indexOf(DEBUG_VIEW.FIN
 const is = (u, view) => u.equal(DEBUG_VIEWS.indexOf(view));
 
 /**
- * @param {object} o texture nodes sampled at the output's pixel, and the view's uniforms
+ * @param {object} o texture nodes read at the output's pixel (texelFetch in the GLSL: a filtered
+ *   sample a hair off the texel centre gave background pixels a sliver of a neighbour's mask on
+ *   WebGPU), and the view's uniforms
  * @param {object} o.colour the pass's colour (specular + emissive of subsurface pixels, full colour elsewhere)
  * @param {object} o.unscattered the diffuse light before the blur; a: the mask
  * @param {object} o.scattered the blurred diffuse light (premultiplied by its coverage, like the colour)
@@ -26,15 +28,16 @@ const is = (u, view) => u.equal(DEBUG_VIEWS.indexOf(view));
  */
 export function composeNode({ colour, unscattered, scattered, surface, view, depthRange }) {
   return Fn(() => {
-    const light = vec4(colour).toVar();
-    const subsurface = unscattered.a.greaterThan(0).toVar();
-    const diffuse = select(subsurface, vec3(scattered.rgb), vec3(0)).toVar();
+    const pixel = ivec2(screenCoordinate.xy).toVar();
+    const light = textureLoad(colour, pixel).toVar();
+    const subsurface = textureLoad(unscattered, pixel).a.greaterThan(0).toVar();
+    const diffuse = select(subsurface, textureLoad(scattered, pixel).rgb, vec3(0)).toVar();
     const result = light.rgb.add(diffuse).toVar();
     If(is(view, DEBUG_VIEW.DIFFUSE), () => { result.assign(diffuse); });
     If(is(view, DEBUG_VIEW.SPECULAR), () => { result.assign(select(subsurface, light.rgb, vec3(0))); });
     If(is(view, DEBUG_VIEW.MASK), () => { result.assign(vec3(select(subsurface, float(1), float(0)))); });
     If(is(view, DEBUG_VIEW.DEPTH), () => {
-      const viewDepth = surface.r;
+      const viewDepth = textureLoad(surface, pixel).r;
       result.assign(vec3(select(viewDepth.greaterThan(0), viewDepth.div(depthRange).oneMinus(), float(0))));
     });
     // Never hand NaN or Inf to tone mapping.
