@@ -32,7 +32,7 @@ async function composerRow(width, height) {
   return {
     async frame() {
       composer.render();
-      renderer.readRenderTargetPixels(composer.readBuffer, 0, 0, 1, 1, pixel);
+      await renderer.readRenderTargetPixelsAsync(composer.readBuffer, 0, 0, 1, 1, pixel); // as the other rows: an asynchronous read-back
     },
     dispose() { sss.dispose(); composer.dispose(); renderer.dispose(); renderer.forceContextLoss(); },
   };
