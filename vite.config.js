@@ -2,6 +2,7 @@
 //   `vite build --mode lib`  → dist/three-separable-sss.js, the ES module users import (GLSL inlined,
 //                              three and gl-matrix left as imports), and the subpath exports
 //                              dist/postprocessing.js and dist/react.js (pmndrs, R3F left as imports)
+//                              and dist/webgpu.js (three/webgpu, three/tsl left as imports)
 //   `vite build`             → dist/demo/, the static demo page
 //   `vite` (npm start)       → the demo and the test pages on a dev server
 import { defineConfig } from 'vite';
@@ -35,6 +36,7 @@ export default defineConfig(({ mode }) => {
             internals: 'src/internals.js',
             postprocessing: 'src/integrations/postprocessing.js',
             react: 'src/integrations/react.js',
+            webgpu: 'src/webgpu/index.js',
           },
           formats: ['es'],
           fileName: (format, entryName) => `${entryName}.js`,
@@ -60,10 +62,13 @@ export default defineConfig(({ mode }) => {
         { find: /^three-separable-sss\/internals$/, replacement: `${root}src/internals.js` },
         { find: /^three-separable-sss\/postprocessing$/, replacement: `${root}src/integrations/postprocessing.js` },
         { find: /^three-separable-sss\/react$/, replacement: `${root}src/integrations/react.js` },
+        { find: /^three-separable-sss\/webgpu$/, replacement: `${root}src/webgpu/index.js` },
       ],
     },
     // Not pre-bundled with another three: the pre-bundled dependencies import the aliased one.
-    optimizeDeps: threeDir ? { exclude: ['three'] } : {},
+    // three/webgpu and three/tsl (the WebGPU pages) pre-bundled from the start: found later, they
+    // made Vite re-optimize and answer the page's other imports 504 (Outdated Optimize Dep).
+    optimizeDeps: threeDir ? { exclude: ['three'] } : { include: ['three/webgpu', 'three/tsl'] },
     build: {
       outDir: 'dist/demo',
       emptyOutDir: true,

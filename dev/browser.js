@@ -28,9 +28,24 @@ export const CHROMIUM_FLAGS = Object.freeze([
   '--no-first-run',
 ]);
 
-/** The flags for SwiftShader, or for a GPU the same without SwiftShader and with the GPU allowed. */
-export function chromiumFlags({ gpu = false } = {}) {
-  if (!gpu) return [...CHROMIUM_FLAGS];
+/**
+ * WebGPU on SwiftShader (the WebGPURenderer tests, test/browser/webgpu*): without the two Vulkan
+ * flags the adapter is found but configuring a canvas loses the device ("A valid external Instance
+ * reference no longer exists"). WebGPU needs a secure context: pages served from http://127.0.0.1.
+ */
+export const WEBGPU_FLAGS = Object.freeze([
+  '--enable-unsafe-webgpu',
+  '--use-webgpu-adapter=swiftshader',
+  '--use-vulkan=swiftshader',
+  '--enable-features=Vulkan',
+]);
+
+/**
+ * The flags for SwiftShader, or for a GPU the same without SwiftShader and with the GPU allowed;
+ * `webgpu` adds WEBGPU_FLAGS (SwiftShader only).
+ */
+export function chromiumFlags({ gpu = false, webgpu = false } = {}) {
+  if (!gpu) return [...CHROMIUM_FLAGS, ...(webgpu ? WEBGPU_FLAGS : [])];
   return [
     ...CHROMIUM_FLAGS.filter((flag) => !flag.includes('swiftshader')),
     '--ignore-gpu-blocklist', '--enable-gpu', '--use-angle=vulkan', '--enable-features=Vulkan',
@@ -77,16 +92,19 @@ export async function findBrowser({ log = console.log } = {}) {
 
 /**
  * Starts Vite serving the repository and headless Chromium.
- * @param {{ gpu?: boolean, protocolTimeout?: number }} [options]
+ * @param {{ gpu?: boolean, webgpu?: boolean, protocolTimeout?: number }} [options]
  * @returns {Promise<{ browser: import('puppeteer-core').Browser, baseUrl: string, flags: string[], close(): Promise<void> }>}
  */
-export async function startBrowser({ gpu = false, protocolTimeout = 600_000 } = {}) {
+export async function startBrowser({ gpu = false, webgpu = false, protocolTimeout = 600_000 } = {}) {
   const executablePath = await findBrowser();
   const { createServer } = await import('vite');
   const { default: puppeteer } = await import('puppeteer-core');
   const server = await createServer({
     root,
     configFile: join(root, 'vite.config.js'),
+    // The checkout's own dependency cache (git-ignored), not node_modules/.vite: worktrees sharing
+    // one node_modules re-optimised it under each other's servers (504 "Outdated Optimize Dep").
+    cacheDir: join(root, '.vite'),
     logLevel: 'error',
     clearScreen: false,
     server: { host: '127.0.0.1', port: 0, strictPort: false, hmr: false, watch: null },
@@ -94,7 +112,7 @@ export async function startBrowser({ gpu = false, protocolTimeout = 600_000 } = 
   await server.listen();
   const { port } = server.httpServer.address();
   const userDataDir = await mkdtemp(join(tmpdir(), 'sss-chromium-'));
-  const flags = chromiumFlags({ gpu });
+  const flags = chromiumFlags({ gpu, webgpu });
   let browser;
   try {
     browser = await puppeteer.launch({ executablePath, headless: true, userDataDir, args: flags, protocolTimeout });

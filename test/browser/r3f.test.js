@@ -4,6 +4,7 @@
 // without leaving anything in three's memory.
 import { describe, it, expect, beforeAll, afterAll } from 'vitest';
 import { openPage, evaluateFloats } from '../harness/page.js';
+import { litAndTint } from '../harness/snippetPage.js';
 
 let page;
 beforeAll(async () => {
@@ -41,15 +42,8 @@ describe('<SubsurfaceComposer> and <Subsurface>', () => {
     const { image, byHand, unscattered, info } = mounted;
     expect(info.passId).not.toBeNull();
     expect(info.subsurface).toBe(true);
-    let lit = 0;
-    let red = 0;
-    let blue = 0;
-    for (let i = 0; i < image.length; i += 4) {
-      if (image[i] + image[i + 1] + image[i + 2] > 0.3) lit++;
-      red += image[i];
-      blue += image[i + 2];
-    }
-    expect(lit / (image.length / 4)).toBeGreaterThan(0.05); // the knot is there and lit
+    const { lit, red, blue } = litAndTint(image, 0.3);
+    expect(lit).toBeGreaterThan(0.05); // the knot is there and lit
     expect(red).toBeGreaterThan(blue);
     expect(worstDifference(image, byHand)).toBeLessThanOrEqual(ONE_LEVEL);
     expect(worstDifference(byHand, unscattered)).toBeGreaterThan(0.05); // scattering shows

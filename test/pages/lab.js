@@ -10,6 +10,7 @@ import * as SSS from '/src/index.js';
 import * as INTERNALS from '/src/internals.js';
 import { readRenderTargetFloats } from '/dev/readback.js';
 import { mulberry32 as random } from '/demo/seededRandom.js';
+import { dataTexture, flatScene } from './flatScene.js';
 
 /** A renderer drawing into an offscreen canvas of `width` × `height` device pixels. */
 function createRenderer(width, height, parameters = {}) {
@@ -32,18 +33,6 @@ async function read(renderer, target, index = 0) {
   return readRenderTargetFloats(renderer, target, index);
 }
 
-
-/** A float DataTexture from f(x, y) → [r, g, b]; nearest filtering so edges stay hard. */
-function dataTexture(width, height, f) {
-  const data = new Float32Array(width * height * 4);
-  for (let y = 0; y < height; y++) {
-    for (let x = 0; x < width; x++) data.set([...f(x, y), 1], (y * width + x) * 4);
-  }
-  const texture = new THREE.DataTexture(data, width, height, THREE.RGBAFormat, THREE.FloatType);
-  texture.minFilter = texture.magFilter = THREE.NearestFilter;
-  texture.needsUpdate = true;
-  return texture;
-}
 
 /** Albedo patterns for the slab (texture over the whole slab). */
 const PATTERNS = {
@@ -196,44 +185,13 @@ async function run(options) {
 }
 
 /**
- * The analytic accuracy scene: a flat subsurface plane seen straight on by an orthographic camera
- * at exactly `pxPerMm` pixels per profile millimetre (1 world unit = 1 mm, widthMm 1), lit evenly
- * from the camera (a white Lambert surface: diffuse light = albedo). Its albedo varies along the
- * plane's x axis, turned by `angleDeg` on screen: 'cosines' is 0.5 + 0.1 Σ cos(2π f_k x + φ_k)
- * (f in cycles per mm), 'step' is 1 for x ≥ 0 and `low` below (the edge on a pixel boundary through
- * the view's centre). Returns the diffuse light before the blur and the scattered light after it,
- * float, and the camera's pixel scales.
+ * The analytic accuracy scene (flatScene.js) through the pipeline: returns the diffuse light before
+ * the blur and the scattered light after it, float.
  */
-async function flat({
-  width = 256, height = 256, pxPerMm, pattern, frequencies = [], phases = [], angleDeg = 0, low = 0.05, sss = {},
-}) {
+async function flat({ width = 256, height = 256, sss = {}, ...scene }) {
   const renderer = createRenderer(width, height);
-  const scene = new THREE.Scene();
-  const halfW = width / (2 * pxPerMm);
-  const halfH = height / (2 * pxPerMm);
-  const camera = new THREE.OrthographicCamera(-halfW, halfW, halfH, -halfH, 1, 1000);
-  camera.position.set(0, 0, 100);
-  camera.updateMatrixWorld();
-  const size = 2.5 * Math.max(halfW, halfH); // covers the view at any angle
-  let map;
-  if (pattern === 'step') {
-    map = dataTexture(2, 1, (x) => (x === 0 ? [low, low, low] : [1, 1, 1]));
-  } else {
-    const texels = 8192;
-    map = dataTexture(texels, 1, (i) => {
-      const x = ((i + 0.5) / texels - 0.5) * 2 * size;
-      const v = 0.5 + frequencies.reduce((sum, f, k) => sum + 0.1 * Math.cos(2 * Math.PI * f * x + (phases[k] ?? 0)), 0);
-      return [v, v, v];
-    });
-    map.minFilter = map.magFilter = THREE.LinearFilter;
-  }
-  const material = new THREE.MeshStandardMaterial({ color: 0xffffff, roughness: 1, metalness: 0, map });
-  const plane = new THREE.Mesh(new THREE.PlaneGeometry(2 * size, 2 * size), material);
-  plane.rotation.z = (angleDeg * Math.PI) / 180;
-  const light = new THREE.DirectionalLight(0xffffff, Math.PI);
-  light.position.set(0, 0, 10);
-  scene.add(plane, light, light.target);
-  const pipeline = new SSS.SubsurfaceScattering({ scene, camera, worldUnitInMm: 1, type: THREE.FloatType, ...sss });
+  const { scene: world, camera, material, map } = flatScene({ width, height, ...scene });
+  const pipeline = new SSS.SubsurfaceScattering({ scene: world, camera, worldUnitInMm: 1, type: THREE.FloatType, ...sss });
   pipeline.makeSubsurface(material, { widthMm: 1 });
   const composer = createComposer(renderer, { type: THREE.FloatType });
   composer.addPass(pipeline);

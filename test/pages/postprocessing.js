@@ -5,25 +5,9 @@ import * as POSTPROCESSING from 'postprocessing';
 import { TexturePass } from 'three/addons/postprocessing/TexturePass.js';
 import { NoBlending } from 'three';
 import { SubsurfaceScatteringPass } from 'three-separable-sss/postprocessing';
-import { loadHead } from '/demo/headModel.js';
-import { createHeadScene, FACE_CENTRE, HEAD_WORLD_UNIT_IN_MM } from '/demo/headScene.js';
+import { HEAD_WORLD_UNIT_IN_MM } from '/demo/headScene.js';
+import { headRig } from './headRig.js';
 import '/test/pages/lab.js';
-
-let headPromise = null;
-
-/** A fresh head scene (a clone of the mesh and its material: each pipeline hooks its own) framing the face. */
-async function headRig(aspect) {
-  headPromise ??= loadHead({ base: '/' });
-  const loaded = await headPromise;
-  const mesh = loaded.mesh.clone();
-  mesh.material = loaded.mesh.material.clone();
-  const rig = createHeadScene(mesh);
-  rig.camera.aspect = aspect;
-  rig.camera.updateProjectionMatrix();
-  rig.camera.lookAt(FACE_CENTRE);
-  rig.camera.updateMatrixWorld();
-  return { ...rig, isStandIn: loaded.isStandIn };
-}
 
 /** Copies `texture` into `target` exactly (three's TexturePass, unblended). */
 function copyTexture(renderer, texture, target) {

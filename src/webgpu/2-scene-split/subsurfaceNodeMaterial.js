@@ -1,0 +1,146 @@
+// Stage 2 for WebGPURenderer: the diffuse/specular split as node materials. TSL has no
+// diffuse-only output, so these subclasses of three's MeshStandardNodeMaterial and
+// MeshPhysicalNodeMaterial write it: drawn by a pass whose MRT has the subsurface outputs
+// (subsurfaceMRT), the colour output keeps the specular and emissive light, `diffuse` receives the
+// diffuse light (direct + indirect; a = 1: the mask) and `surface` the linear view depth and the
+// material's width. Drawn anywhere else they render exactly as three's own materials do.
+// The WebGL path does the same by patching three's GLSL (src/2-scene-split/subsurfaceMaterial.js,
+// shaders/2-scene-split/material/split.glsl, clearcoat.glsl, output.glsl).
+import { MeshPhysicalNodeMaterial, MeshStandardNodeMaterial } from 'three/webgpu';
+import {
+  F_Schlick, clearcoat, clearcoatNormalView, float, mrt, output, positionView, positionViewDirection, select, uniform, vec3, vec4,
+} from 'three/tsl';
+import { checkNumber, checkOptions } from '../../support/parameterChecks.js';
+import { describe } from '../../support/rendererSupport.js';
+import { MATERIAL_DEFAULTS } from '../../options.js';
+import { ATTACHMENT_NAMES } from './attachments.js';
+import { finite3 } from '../3-blur/surfaceTsl.js';
+
+/** What subsurfaceMaterial(material, { ... }) accepts. */
+const MATERIAL_OPTIONS = Object.freeze(['widthMm']);
+
+/** The largest width accepted, profile mm per mm: a profile a metre wide is a mistake. */
+const MAX_WIDTH_MM = 1000;
+
+const checkWidth = (widthMm) => checkNumber('widthMm', widthMm, { min: 0, minExclusive: true, max: MAX_WIDTH_MM, unit: 'mm' });
+
+/**
+ * The split, mixed into a node material class: setupLighting returns the light without its diffuse
+ * part and the material's mrtNode writes that part to the subsurface outputs.
+ * @template {new (...args: any[]) => import('three/webgpu').NodeMaterial} Base
+ * @param {Base} Base
+ */
+function withSubsurface(Base) {
+  return class extends Base {
+    constructor(parameters) {
+      super(parameters);
+      /** Scales the profile: 1 is its physical size (the width uniform the surface output writes). */
+      this.subsurfaceWidth = uniform(MATERIAL_DEFAULTS.widthMm);
+      this.isSubsurfaceNodeMaterial = true;
+    }
+
+    /** The profile's scale on this material: 1 is its physical size (profile mm per mm). */
+    get widthMm() {
+      return this.subsurfaceWidth.value;
+    }
+
+    set widthMm(widthMm) {
+      this.subsurfaceWidth.value = checkWidth(widthMm);
+    }
+
+    setupLightingModel(builder) {
+      this._subsurfaceLit = true; // three lights this material in this build (see setupLighting)
+      return super.setupLightingModel(builder);
+    }
+
+    setupLighting(builder) {
+      this._subsurfaceLit = false;
+      const outgoing = super.setupLighting(builder);
+      const mrtNode = builder.renderTarget !== null ? builder.renderer.getMRT() : null;
+      if (!mrtNode?.has(ATTACHMENT_NAMES.DIFFUSE)) {
+        this.mrtNode = null;
+        return outgoing; // not drawn into a subsurface pass: three's own result
+      }
+      // three's totalDiffuse (LightsNode), assigned by the lighting built just above; 0 unlit.
+      const lightsNode = this.lightsNode || builder.lightsNode;
+      let diffuse = this._subsurfaceLit ? lightsNode.totalDiffuseNode : vec3(0);
+      // The clear coat dims everything under it, the diffuse light included (PhysicalLightingModel.finish).
+      if (this.useClearcoat) {
+        const Fcc = F_Schlick({ dotVH: clearcoatNormalView.dot(positionViewDirection).clamp(), f0: vec3(0.04), f90: float(1) });
+        diffuse = diffuse.mul(clearcoat.mul(Fcc).oneMinus());
+      }
+      // No toVar: a variable would be assigned where TSL first builds it, before the lighting code;
+      // the property is read where each output needs it, after the lighting has assigned it.
+      const kept = vec3(diffuse);
+      // A non-finite value would spread through the blur: keep it out (shaders/common/finite.glsl).
+      const written = select(finite3(kept), kept.max(0), vec3(0));
+      this.mrtNode = mrt({
+        [ATTACHMENT_NAMES.DIFFUSE]: vec4(written, 1),
+        [ATTACHMENT_NAMES.SURFACE]: vec4(positionView.z.negate(), this.subsurfaceWidth, 0, 1),
+      });
+      return outgoing.sub(kept);
+    }
+
+    copy(source) {
+      super.copy(source);
+      if (source.isSubsurfaceNodeMaterial) this.widthMm = source.widthMm;
+      return this;
+    }
+  };
+}
+
+/** MeshStandardNodeMaterial with the subsurface split (see the file's header). */
+export class SubsurfaceStandardNodeMaterial extends withSubsurface(MeshStandardNodeMaterial) {
+  static get type() {
+    return 'SubsurfaceStandardNodeMaterial';
+  }
+}
+
+/** MeshPhysicalNodeMaterial with the subsurface split; the clear coat dims the diffuse light too. */
+export class SubsurfacePhysicalNodeMaterial extends withSubsurface(MeshPhysicalNodeMaterial) {
+  static get type() {
+    return 'SubsurfacePhysicalNodeMaterial';
+  }
+}
+
+/** Own properties not carried over from the material converted (three's NodeLibrary copies the rest too). */
+const NOT_COPIED = new Set(['uuid', 'type', 'isSubsurfaceNodeMaterial', 'subsurfaceWidth']);
+
+/**
+ * A subsurface node material made from `material`: a MeshStandardMaterial or MeshPhysicalMaterial
+ * (or their node versions), its settings carried over as WebGPURenderer itself converts a classic
+ * material (NodeLibrary.fromMaterial). The material given is left as it is.
+ * @param {import('three').MeshStandardMaterial | import('three/webgpu').MeshStandardNodeMaterial} material
+ * @param {{ widthMm?: number }} [options] widthMm: the profile's scale, 1 its physical size
+ * @returns {SubsurfaceStandardNodeMaterial | SubsurfacePhysicalNodeMaterial}
+ */
+export function subsurfaceMaterial(material, options) {
+  const { widthMm = MATERIAL_DEFAULTS.widthMm } = checkOptions('subsurfaceMaterial options', options, MATERIAL_OPTIONS);
+  if (!material || !(material.isMeshStandardMaterial || material.isMeshStandardNodeMaterial)) {
+    throw new TypeError(`subsurfaceMaterial: material must be a THREE.MeshStandardMaterial or MeshPhysicalMaterial (or its node version), got ${describe(material)}`);
+  }
+  checkWidth(widthMm);
+  const physical = material.isMeshPhysicalMaterial || material.isMeshPhysicalNodeMaterial;
+  const result = physical ? new SubsurfacePhysicalNodeMaterial() : new SubsurfaceStandardNodeMaterial();
+  for (const key in material) {
+    if (!NOT_COPIED.has(key) && typeof material[key] !== 'function') result[key] = material[key];
+  }
+  result.name = material.name;
+  result.widthMm = widthMm;
+  result.needsUpdate = true;
+  return result;
+}
+
+/**
+ * The MRT a subsurface pass needs: three's `output` (the colour), `diffuse` and `surface`, the last
+ * two written 0 by every other material and cleared to 0 (alpha 0: off the mask, where nothing was
+ * drawn; three clears extra attachments to alpha 1 otherwise). Merge your own outputs into it with
+ * `subsurfaceMRT().merge(mrt({ ... }))`.
+ * @returns {import('three/webgpu').MRTNode}
+ */
+export function subsurfaceMRT() {
+  const node = mrt({ output, [ATTACHMENT_NAMES.DIFFUSE]: vec4(0), [ATTACHMENT_NAMES.SURFACE]: vec4(0) });
+  node.setClearColor(ATTACHMENT_NAMES.DIFFUSE, 0x000000, 0);
+  node.setClearColor(ATTACHMENT_NAMES.SURFACE, 0x000000, 0);
+  return node;
+}

@@ -1,0 +1,138 @@
+// The chunks the surface passes share, in TSL: ports of shaders/common/finite.glsl,
+// screenScale.glsl, surfaceSample.glsl, surfaceSlope.glsl, surfaceTap.glsl and
+// profileLookup.glsl, function by function under the same names (sssFinite → finite3, ...), so a
+// change to one GLSL chunk has one place to follow here. The numbers are samplingModel.js's.
+// Each builder takes the pass's inputs ({ diffuse, surface }: texture nodes read with
+// textureLoad), its uniforms and its compile-time switches (axis, followSurface, coverage).
+import {
+  abs, all, bitAnd, clamp, float, floatBitsToUint, int, ivec2, max, min, mix, notEqual, select, sqrt, textureLoad, uvec3, vec2, vec3, vec4,
+} from 'three/tsl';
+import { MAX_PLANE_SLOPE, MAX_SLOPE, PLANE_SLOPE_AGREEMENT } from '../../3-blur/samplingModel.js';
+
+const EXPONENT = 0x7f800000;
+
+/**
+ * finite.glsl's sssFinite: no component NaN or Inf. WGSL has no isnan and compilers may fold
+ * x != x away, so the exponent bits are read instead (all ones: Inf or NaN).
+ * @param {import('three/tsl').ShaderNodeObject} c vec3
+ */
+export const finite3 = (c) => all(notEqual(bitAnd(floatBitsToUint(vec3(c)), uvec3(EXPONENT)), uvec3(EXPONENT)));
+
+/** The same for one float (the footprint table marks its last footprint with +Inf). */
+export const finite1 = (x) => bitAnd(floatBitsToUint(float(x)), EXPONENT >>> 0).notEqual(EXPONENT >>> 0);
+
+/** One component of a vec2/ivec2 along the pass's axis (0: x, 1: y). */
+export const along = (v, axis) => (axis === 0 ? v.x : v.y);
+
+/** `pixel` with its component along `axis` replaced by `value` (an int node). */
+export const withAlong = (pixel, axis, value) => (axis === 0 ? ivec2(value, pixel.y) : ivec2(pixel.x, value));
+
+/**
+ * screenScale.glsl: how large a profile millimetre is on screen. `surface.y` is the material's
+ * widthMm here (see ../2-scene-split/attachments.js), times `mmToWorld` (1 / worldUnitInMm) the
+ * world units per profile mm of the GLSL.
+ * @param {{ perspective, projectionScale, resolution, mmToWorld }} u uniforms
+ */
+export function screenScale(u) {
+  // `perspective`: 1 for a perspective camera, 0 for an orthographic one (a float: WGSL uniforms hold no bool).
+  const viewDepth = (surface) => select(u.perspective.greaterThan(0.5), surface.x, float(1));
+  return {
+    viewDepth,
+    /** Pixels one profile millimetre spans along x and y. */
+    pixelsPerMm: (surface) => vec2(surface.y.mul(u.mmToWorld)).mul(u.projectionScale).div(viewDepth(surface).mul(2)).mul(u.resolution),
+    /** World units one pixel spans across the view at this depth, along x and y. */
+    pixelWorld: (surface) => vec2(viewDepth(surface).mul(2)).div(u.projectionScale.mul(u.resolution)),
+  };
+}
+
+/**
+ * surfaceSample.glsl: reading the surface and the diffuse light at a texel, coverage divided out
+ * when the inputs were resolved from MSAA (`coverage`).
+ */
+export function surfaceSample({ diffuse, surface, coverage }) {
+  const uncovered = (value, c) => (coverage ? select(c.greaterThan(0), value.div(c), vec2(0)) : value);
+  const surfaceAt = (texel) => {
+    const s = textureLoad(surface, texel).xy;
+    return coverage ? uncovered(s, textureLoad(diffuse, texel).a) : s;
+  };
+  /** The pixel a surface pass shades: { colour, coverage, surface } (see SssCentre). */
+  const centreAt = (pixel) => {
+    const light = textureLoad(diffuse, pixel).toVar();
+    const cover = select(light.a.greaterThan(0), light.a, float(0)).toVar();
+    let colour = select(finite3(light.rgb), light.rgb, vec3(0));
+    if (coverage) colour = select(cover.greaterThan(0), colour.div(cover), colour);
+    return { colour: colour.toVar(), coverage: cover, surface: uncovered(textureLoad(surface, pixel).xy, cover).toVar() };
+  };
+  /** A surface pass's output: premultiplied by the centre's coverage, as its input was. */
+  const covered = (colour, c) => vec4(vec3(colour).mul(c), c);
+  return { uncovered, surfaceAt, centreAt, covered };
+}
+
+/**
+ * surfaceSlope.glsl: the surface's depth slope at a pixel along the axis, world units per pixel.
+ * @param {ReturnType<typeof surfaceSample>} sample
+ * @param {{ resolution }} u
+ * @param {0|1} axis
+ */
+export function surfaceSlope(sample, u, axis) {
+  return (pixel, surface, pixelWorld) => {
+    const at = along(pixel, axis);
+    const beforeAt = max(at.sub(1), 0);
+    const afterAt = min(at.add(1), int(along(u.resolution, axis)).sub(1));
+    const surfaceBefore = sample.surfaceAt(withAlong(pixel, axis, beforeAt));
+    const surfaceAfter = sample.surfaceAt(withAlong(pixel, axis, afterAt));
+    const slopeBefore = surface.x.sub(surfaceBefore.x).toVar();
+    const slopeAfter = surfaceAfter.x.sub(surface.x).toVar();
+    const onBefore = surfaceBefore.y.greaterThan(0).and(beforeAt.notEqual(at));
+    const onAfter = surfaceAfter.y.greaterThan(0).and(afterAt.notEqual(at));
+    const steeper = max(abs(slopeBefore), abs(slopeAfter));
+    const plane = onBefore.and(onAfter)
+      .and(abs(slopeAfter.sub(slopeBefore)).lessThanEqual(steeper.mul(PLANE_SLOPE_AGREEMENT)))
+      .and(steeper.lessThanEqual(pixelWorld.mul(MAX_PLANE_SLOPE)));
+    const useBefore = onBefore.and(abs(slopeBefore).lessThanEqual(pixelWorld.mul(MAX_SLOPE)));
+    const useAfter = onAfter.and(abs(slopeAfter).lessThanEqual(pixelWorld.mul(MAX_SLOPE)));
+    const both = slopeBefore.add(slopeAfter).mul(0.5);
+    return select(plane.or(useBefore.and(useAfter)), both, select(useBefore, slopeBefore, select(useAfter, slopeAfter, float(0))));
+  };
+}
+
+/**
+ * surfaceTap.glsl: the rule every tap follows. Returns { weight, colour } for a texel whose depth
+ * the centre's plane predicts to be `expectedDepth`.
+ * @param {ReturnType<typeof surfaceSample>} sample
+ * @param {{ depthFalloff }} u
+ * @param {{ diffuse, surface, followSurface: 'off'|'drop'|'lerp', coverage: boolean }} inputs
+ */
+export function surfaceTap(sample, u, { diffuse, surface, followSurface, coverage }) {
+  return (texel, expectedDepth, centre) => {
+    const light = textureLoad(diffuse, texel).toVar();
+    const kept = light.a.greaterThan(0).and(finite3(light.rgb));
+    let colour = coverage ? light.rgb.div(light.a) : light.rgb;
+    let weight = coverage ? light.a : float(1);
+    if (followSurface !== 'off') {
+      const depth = sample.uncovered(textureLoad(surface, texel).xy, light.a).x;
+      const farness = clamp(abs(depth.sub(expectedDepth)).mul(u.depthFalloff), 0, 1);
+      if (followSurface === 'drop') weight = weight.mul(farness.oneMinus());
+      else colour = mix(colour, centre, farness);
+    }
+    // Off the mask or not finite: weight 0 and colour 0 (0 × NaN would still be NaN).
+    return { weight: select(kept, weight, float(0)), colour: select(kept, colour, vec3(0)) };
+  };
+}
+
+/**
+ * profileLookup.glsl's sssReadProfile: a ProfileLookup row at x mm, square-root spaced, linear
+ * between texels (32-bit float filtering is an extension), held past the range.
+ * @param {import('three/tsl').ShaderNodeObject} table texture node of ProfileLookup.texture
+ * @param {number} size its texels per row
+ */
+export function readProfile(table, size) {
+  return (row, xMm, rangeMm) => {
+    const position = sqrt(clamp(xMm.div(rangeMm), 0, 1)).mul(size - 1).toVar();
+    const below = min(int(position), size - 2);
+    const fraction = position.sub(float(below));
+    const a = textureLoad(table, ivec2(below, row)).rgb;
+    const b = textureLoad(table, ivec2(below.add(1), row)).rgb;
+    return mix(a, b, fraction);
+  };
+}

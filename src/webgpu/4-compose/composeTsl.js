@@ -1,0 +1,46 @@
+// Stage 4 for WebGPURenderer: the scattered diffuse light back on top of the rest of the scene's
+// light, linear HDR, before three's output (tone mapping, colour space). A port of
+// shaders/4-compose/compose.frag.glsl: pixels that are not subsurface keep exactly what their
+// material wrote; the result is never NaN or Inf. The debug views (src/4-compose/debugViews.js's,
+// by name) are a uniform here, so switching one rebuilds nothing; the thickness and transmittance
+// views need transmittance, which the node does not have yet.
+import { Fn, If, float, ivec2, screenCoordinate, select, textureLoad, uniform, vec3, vec4 } from 'three/tsl';
+import { DEBUG_VIEW, DEBUG_VIEWS } from '../../4-compose/debugViews.js';
+import { finite3 } from '../3-blur/surfaceTsl.js';
+
+/** The views the node can show (all but those needing transmittance). */
+export const NODE_DEBUG_VIEWS = Object.freeze(DEBUG_VIEWS.filter((v) => v !== DEBUG_VIEW.THICKNESS && v !== DEBUG_VIEW.TRANSMITTANCE));
+
+/** The uniform the compose reads: a view's position in DEBUG_VIEWS, compared by name below. */
+export const debugViewUniform = () => uniform(DEBUG_VIEWS.indexOf(DEBUG_VIEW.FINAL), 'int');
+const is = (u, view) => u.equal(DEBUG_VIEWS.indexOf(view));
+
+/**
+ * @param {object} o texture nodes read at the output's pixel (texelFetch in the GLSL: a filtered
+ *   sample a hair off the texel centre gave background pixels a sliver of a neighbour's mask on
+ *   WebGPU), and the view's uniforms
+ * @param {object} o.colour the pass's colour (specular + emissive of subsurface pixels, full colour elsewhere)
+ * @param {object} o.unscattered the diffuse light before the blur; a: the mask
+ * @param {object} o.scattered the blurred diffuse light (premultiplied by its coverage, like the colour)
+ * @param {object} o.surface r: linear view depth (world units)
+ * @param {object} o.view debugViewUniform()
+ * @param {object} o.depthRange world units mapped to white in the depth view (a float uniform)
+ */
+export function composeNode({ colour, unscattered, scattered, surface, view, depthRange }) {
+  return Fn(() => {
+    const pixel = ivec2(screenCoordinate.xy).toVar();
+    const light = textureLoad(colour, pixel).toVar();
+    const subsurface = textureLoad(unscattered, pixel).a.greaterThan(0).toVar();
+    const diffuse = select(subsurface, textureLoad(scattered, pixel).rgb, vec3(0)).toVar();
+    const result = light.rgb.add(diffuse).toVar();
+    If(is(view, DEBUG_VIEW.DIFFUSE), () => { result.assign(diffuse); });
+    If(is(view, DEBUG_VIEW.SPECULAR), () => { result.assign(select(subsurface, light.rgb, vec3(0))); });
+    If(is(view, DEBUG_VIEW.MASK), () => { result.assign(vec3(select(subsurface, float(1), float(0)))); });
+    If(is(view, DEBUG_VIEW.DEPTH), () => {
+      const viewDepth = textureLoad(surface, pixel).r;
+      result.assign(vec3(select(viewDepth.greaterThan(0), viewDepth.div(depthRange).oneMinus(), float(0))));
+    });
+    // Never hand NaN or Inf to tone mapping.
+    return vec4(select(finite3(result), result, vec3(0)), light.a);
+  })();
+}

@@ -1,0 +1,35 @@
+// The node's options in one place: what subsurfaceScattering(scenePass, { ... }) and setKernel
+// accept, their defaults (the WebGL pipeline's, src/options.js) and their checks (the WebGL
+// pipeline's messages: test/unit/webgpuBadInputs.test.js runs the bad-input table on both).
+import { MAX_SCALE_MM, METHODS, MIN_SCALE_MM, PIPELINE_DEFAULTS } from '../options.js';
+import { checkNumber, checkOneOf } from '../support/parameterChecks.js';
+
+/** The methods the node has: the WebGL path's default ('footprint'; the others are for validation there). */
+export const NODE_METHODS = Object.freeze(['footprint']);
+
+/** What subsurfaceScattering(scenePass, { ... }) accepts, with its defaults (the WebGL pipeline's). */
+export const NODE_DEFAULTS = Object.freeze({
+  worldUnitInMm: PIPELINE_DEFAULTS.worldUnitInMm,
+  profile: PIPELINE_DEFAULTS.profile,
+  method: PIPELINE_DEFAULTS.method,
+  samples: PIPELINE_DEFAULTS.samples,
+  strength: /** @type {number[]} */ ([1, 1, 1]),
+  followSurface: PIPELINE_DEFAULTS.followSurface,
+  depthThresholdMm: PIPELINE_DEFAULTS.depthThresholdMm,
+  foreshortening: PIPELINE_DEFAULTS.foreshortening,
+});
+
+/** What setKernel({ ... }) accepts. */
+export const KERNEL_OPTIONS = Object.freeze(['profile', 'method', 'samples', 'strength']);
+
+/** The WebGL pipeline's methods are accepted by name; the node has 'footprint' only (the others validate the WebGL path). */
+export function checkMethod(method) {
+  checkOneOf('method', method, METHODS);
+  if (!NODE_METHODS.includes(method)) {
+    throw new RangeError(`subsurfaceScattering: method '${method}' is not available on the node (only ${NODE_METHODS.map((m) => `'${m}'`).join(', ')}; the WebGL pipeline has the others, for validation)`);
+  }
+  return method;
+}
+
+export const checkWorldUnit = (mm) => checkNumber('worldUnitInMm', mm, { min: MIN_SCALE_MM, max: MAX_SCALE_MM, unit: 'mm' });
+export const checkDepthThreshold = (mm) => checkNumber('depthThresholdMm', mm, { min: 0, minExclusive: true, max: MAX_SCALE_MM, unit: 'mm' });

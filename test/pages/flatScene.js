@@ -1,0 +1,53 @@
+// The analytic accuracy scene, shared by the WebGL lab (lab.js) and the WebGPURenderer lab
+// (webgpu.js) so both renderers are measured on the same pixels: a flat subsurface plane seen
+// straight on by an orthographic camera at exactly `pxPerMm` pixels per profile millimetre (1 world
+// unit = 1 mm, widthMm 1), lit evenly from the camera (a white Lambert surface: diffuse light =
+// albedo). Its albedo varies along the plane's x axis, turned by `angleDeg` on screen: 'cosines' is
+// 0.5 + 0.1 Σ cos(2π f_k x + φ_k) (f in cycles per mm), 'step' is 1 for x ≥ 0 and `low` below (the
+// edge on a pixel boundary through the view's centre). Nothing here is part of the library.
+import * as THREE from 'three';
+
+/** A float DataTexture from f(x, y) → [r, g, b]; nearest filtering so edges stay hard. */
+export function dataTexture(width, height, f) {
+  const data = new Float32Array(width * height * 4);
+  for (let y = 0; y < height; y++) {
+    for (let x = 0; x < width; x++) data.set([...f(x, y), 1], (y * width + x) * 4);
+  }
+  const texture = new THREE.DataTexture(data, width, height, THREE.RGBAFormat, THREE.FloatType);
+  texture.minFilter = texture.magFilter = THREE.NearestFilter;
+  texture.needsUpdate = true;
+  return texture;
+}
+
+/**
+ * @returns {{ scene, camera, material, map }} the plane's material is a MeshStandardMaterial
+ *   (the caller makes it subsurface its renderer's way)
+ */
+export function flatScene({ width, height, pxPerMm, pattern, frequencies = [], phases = [], angleDeg = 0, low = 0.05 }) {
+  const scene = new THREE.Scene();
+  const halfW = width / (2 * pxPerMm);
+  const halfH = height / (2 * pxPerMm);
+  const camera = new THREE.OrthographicCamera(-halfW, halfW, halfH, -halfH, 1, 1000);
+  camera.position.set(0, 0, 100);
+  camera.updateMatrixWorld();
+  const size = 2.5 * Math.max(halfW, halfH); // covers the view at any angle
+  let map;
+  if (pattern === 'step') {
+    map = dataTexture(2, 1, (x) => (x === 0 ? [low, low, low] : [1, 1, 1]));
+  } else {
+    const texels = 8192;
+    map = dataTexture(texels, 1, (i) => {
+      const x = ((i + 0.5) / texels - 0.5) * 2 * size;
+      const v = 0.5 + frequencies.reduce((sum, f, k) => sum + 0.1 * Math.cos(2 * Math.PI * f * x + (phases[k] ?? 0)), 0);
+      return [v, v, v];
+    });
+    map.minFilter = map.magFilter = THREE.LinearFilter;
+  }
+  const material = new THREE.MeshStandardMaterial({ color: 0xffffff, roughness: 1, metalness: 0, map });
+  const plane = new THREE.Mesh(new THREE.PlaneGeometry(2 * size, 2 * size), material);
+  plane.rotation.z = (angleDeg * Math.PI) / 180;
+  const light = new THREE.DirectionalLight(0xffffff, Math.PI);
+  light.position.set(0, 0, 10);
+  scene.add(plane, light, light.target);
+  return { scene, camera, material, map, plane };
+}

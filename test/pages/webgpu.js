@@ -1,0 +1,236 @@
+// The browser side of the WebGPURenderer tests (test/browser/webgpu*.test.js): the library's
+// `three-separable-sss/webgpu` node on WebGPU or on WebGPURenderer's WebGL 2 backend
+// (`backend: 'webgl'`, forceWebGL), on the scenes the WebGL path's tests use, read back as floats.
+// Nothing here is part of the library.
+import * as THREE from 'three/webgpu';
+import { pass } from 'three/tsl';
+import * as NODE from '/src/webgpu/index.js';
+import { flatScene } from './flatScene.js';
+import { HEAD_WORLD_UNIT_IN_MM } from '/demo/headScene.js';
+import { headRig } from './headRig.js';
+import './lab.js'; // window.lab: the WebGL pipeline's side of the comparisons
+
+/** A WebGPURenderer on an offscreen canvas of `width` × `height` device pixels, initialised. */
+async function createRenderer(width, height, { backend = 'webgpu', ...parameters } = {}) {
+  const renderer = new THREE.WebGPURenderer({ antialias: false, forceWebGL: backend === 'webgl', ...parameters });
+  renderer.setPixelRatio(1);
+  renderer.setSize(width, height, false);
+  await renderer.init();
+  const actual = renderer.backend.isWebGPUBackend ? 'webgpu' : 'webgl';
+  if (actual !== backend) throw new Error(`asked for the ${backend} backend, got ${actual}`);
+  return renderer;
+}
+
+/** One renderer per backend for the accuracy scenes (a new WebGPU device per scene costs seconds). */
+const shared = new Map();
+async function sharedRenderer(backend, width, height) {
+  if (!shared.has(backend)) shared.set(backend, createRenderer(width, height, { backend }));
+  const renderer = await shared.get(backend);
+  renderer.setSize(width, height, false);
+  return renderer;
+}
+
+/**
+ * Any texture of a render target as RGBA 32-bit floats, rows bottom-up as the WebGL lab reads them
+ * (the WebGPU backend's textures hold them top-down).
+ */
+async function readFloats(renderer, target, index = 0) {
+  const { width, height } = target;
+  if (typeof index === 'string') index = target.textures.findIndex((t) => t.name === index);
+  const data = await renderer.readRenderTargetPixelsAsync(target, 0, 0, width, height, index);
+  let floats;
+  if (data instanceof Float32Array) floats = data;
+  else if (data instanceof Uint16Array) floats = Float32Array.from(data, THREE.DataUtils.fromHalfFloat);
+  else throw new TypeError(`readFloats: unexpected ${data.constructor.name}`);
+  if (!renderer.backend.isWebGPUBackend) return floats;
+  const rows = new Float32Array(floats.length);
+  const row = width * 4;
+  for (let y = 0; y < height; y++) rows.set(floats.subarray((height - 1 - y) * row, (height - y) * row), y * row);
+  return rows;
+}
+
+/** The subsurface pass and node over `scene` seen by `camera`, in a RenderPipeline. */
+function subsurfacePipeline(renderer, scene, camera, { type = THREE.HalfFloatType, sss = {} } = {}) {
+  const scenePass = pass(scene, camera, { type });
+  scenePass.setMRT(NODE.subsurfaceMRT());
+  const node = NODE.subsurfaceScattering(scenePass, sss);
+  const pipeline = new THREE.RenderPipeline(renderer);
+  pipeline.outputColorTransform = false; // linear HDR out, as the WebGL lab's composer without OutputPass
+  pipeline.outputNode = node;
+  return { scenePass, node, pipeline };
+}
+
+/** The analytic accuracy scene (flatScene.js) through the node: the diffuse light before the blur and after it. */
+async function flat({ width = 256, height = 256, backend = 'webgpu', sss = {}, ...options }) {
+  const renderer = await sharedRenderer(backend, width, height);
+  const { scene, camera, material, map } = flatScene({ width, height, ...options });
+  const skin = NODE.subsurfaceMaterial(material, { widthMm: 1 });
+  scene.traverse((object) => { if (object.material === material) object.material = skin; });
+  const { scenePass, node, pipeline } = subsurfacePipeline(renderer, scene, camera, { type: THREE.FloatType, sss: { worldUnitInMm: 1, ...sss } });
+  pipeline.render();
+  const before = await readFloats(renderer, scenePass.renderTarget, 'diffuse');
+  const after = await readFloats(renderer, node._scatteredTarget);
+  const result = { width, height, before, after, blur: node.plan.blur, plan: node.plan };
+  node.dispose();
+  pipeline.dispose();
+  scenePass.dispose();
+  skin.dispose();
+  material.dispose();
+  map.dispose();
+  return result;
+}
+
+/** 8-bit RGBA of a float read-back, as a canvas stores it (rounded, clamped). */
+const toBytes = (floats) => Uint8Array.from(floats, (v) => Math.round(Math.min(Math.max(v, 0), 1) * 255));
+
+/**
+ * The demo's head through both renderers, tone mapped (ACES) and sRGB-encoded, as 8-bit RGBA rows
+ * bottom-up: the WebGL pipeline in an EffectComposer with OutputPass, and the node in a
+ * RenderPipeline on `backend`; with `sss: false` each renderer's plain frame instead (the baseline
+ * difference between the two renderers). Shadows off: the renderers filter shadow maps differently.
+ * `fovDeg` narrows the demo's 25° view onto the face (more pixels per mm: more visible scattering).
+ */
+async function head({ width = 320, height = 180, backend = 'webgpu', sss = true, fovDeg }) {
+  const L = window.lab;
+  const glRig = await headRig(width / height, fovDeg);
+  const gl = L.createRenderer(width, height);
+  gl.toneMapping = L.THREE.ACESFilmicToneMapping;
+  const composer = L.createComposer(gl);
+  if (sss) {
+    const pipeline = new L.SSS.SubsurfaceScattering({ scene: glRig.scene, camera: glRig.camera, worldUnitInMm: HEAD_WORLD_UNIT_IN_MM, light: null });
+    pipeline.makeSubsurface(glRig.head.material, { widthMm: 1 });
+    composer.addPass(pipeline);
+  } else {
+    composer.addPass(new L.RenderPass(glRig.scene, glRig.camera));
+  }
+  composer.addPass(new L.OutputPass());
+  composer.render();
+  const webgl = toBytes(await L.read(gl, composer.readBuffer));
+  composer.dispose();
+  gl.dispose();
+  gl.forceContextLoss();
+
+  const rig = await headRig(width / height, fovDeg);
+  const renderer = await createRenderer(width, height, { backend });
+  renderer.toneMapping = THREE.ACESFilmicToneMapping;
+  const target = new THREE.RenderTarget(width, height, { type: THREE.HalfFloatType });
+  let disposeAll;
+  if (sss) {
+    rig.head.material = NODE.subsurfaceMaterial(rig.head.material, { widthMm: 1 });
+    const built = subsurfacePipeline(renderer, rig.scene, rig.camera, { sss: { worldUnitInMm: HEAD_WORLD_UNIT_IN_MM } });
+    built.pipeline.outputColorTransform = true;
+    renderer.setRenderTarget(target);
+    built.pipeline.render();
+    disposeAll = () => { built.node.dispose(); built.pipeline.dispose(); built.scenePass.dispose(); };
+  } else {
+    renderer.setRenderTarget(target);
+    renderer.outputColorSpace = THREE.SRGBColorSpace;
+    const pipeline = new THREE.RenderPipeline(renderer, pass(rig.scene, rig.camera));
+    pipeline.render();
+    disposeAll = () => pipeline.dispose();
+  }
+  renderer.setRenderTarget(null);
+  const node = toBytes(await readFloats(renderer, target));
+  disposeAll();
+  target.dispose();
+  renderer.dispose();
+  return { width, height, webgl, node, isStandIn: rig.isStandIn };
+}
+
+/** A small lit scene: a box of `material` over a grey background, a directional and an ambient light. */
+function boxScene(material) {
+  const scene = new THREE.Scene();
+  scene.background = new THREE.Color(0.25, 0.25, 0.25);
+  const camera = new THREE.PerspectiveCamera(30, 16 / 9, 0.1, 50);
+  camera.position.set(0, 0, 5);
+  const mesh = new THREE.Mesh(new THREE.BoxGeometry(1.6, 1, 0.5), material);
+  mesh.rotation.set(0.3, 0.5, 0);
+  const light = new THREE.DirectionalLight(0xffffff, 3);
+  light.position.set(1, 2, 3);
+  scene.add(mesh, light, light.target, new THREE.AmbientLight(0xffffff, 0.4));
+  return { scene, camera, mesh };
+}
+
+const memoryOf = (renderer) => ({ ...renderer.info.memory });
+
+/**
+ * renderer.info.memory before the node (the scene drawn plainly), while it runs (three frames, one
+ * with the blur off) and after its dispose (with the pipeline, the scene pass and the subsurface
+ * material, and the scene drawn plainly again).
+ */
+async function disposal({ backend = 'webgpu', width = 96, height = 54 }) {
+  const renderer = await createRenderer(width, height, { backend });
+  const material = new THREE.MeshStandardMaterial({ color: 0xffccaa, roughness: 0.6 });
+  const { scene, camera, mesh } = boxScene(material);
+  renderer.render(scene, camera);
+  const before = memoryOf(renderer);
+  const skin = NODE.subsurfaceMaterial(material, { widthMm: 5 });
+  mesh.material = skin;
+  const { scenePass, node, pipeline } = subsurfacePipeline(renderer, scene, camera, { sss: { worldUnitInMm: 100 } });
+  pipeline.render();
+  node.scattering = false;
+  pipeline.render();
+  node.scattering = true;
+  pipeline.render();
+  const during = memoryOf(renderer);
+  const blurred = node.plan.blur;
+  node.dispose();
+  pipeline.dispose();
+  scenePass.dispose();
+  skin.dispose();
+  mesh.material = material;
+  renderer.render(scene, camera);
+  const after = memoryOf(renderer);
+  renderer.dispose();
+  return { before, during, after, blurred };
+}
+
+/**
+ * The same box drawn plainly (renderer.render, no subsurface pass) with three's material and with
+ * its subsurface version: 8-bit RGBA of each.
+ */
+async function plainDraw({ backend = 'webgpu', width = 96, height = 54 }) {
+  const renderer = await createRenderer(width, height, { backend });
+  const target = new THREE.RenderTarget(width, height, { type: THREE.HalfFloatType });
+  const material = new THREE.MeshPhysicalMaterial({ color: 0xffccaa, roughness: 0.6, clearcoat: 0.5 });
+  const { scene, camera, mesh } = boxScene(material);
+  const draw = async () => {
+    renderer.setRenderTarget(target);
+    renderer.render(scene, camera);
+    renderer.setRenderTarget(null);
+    return toBytes(await readFloats(renderer, target));
+  };
+  const three = await draw();
+  mesh.material = NODE.subsurfaceMaterial(material, { widthMm: 5 });
+  const subsurface = await draw();
+  target.dispose();
+  renderer.dispose();
+  return { three, subsurface };
+}
+
+/** The box through the node in each debug view it has, linear (no output transform), float RGBA. */
+async function debugViews({ backend = 'webgpu', width = 96, height = 54 }) {
+  const renderer = await createRenderer(width, height, { backend });
+  const material = new THREE.MeshStandardMaterial({ color: 0xffccaa, roughness: 0.6 });
+  const { scene, camera, mesh } = boxScene(material);
+  mesh.material = NODE.subsurfaceMaterial(material, { widthMm: 5 });
+  const { scenePass, node, pipeline } = subsurfacePipeline(renderer, scene, camera, { sss: { worldUnitInMm: 100 } });
+  const target = new THREE.RenderTarget(width, height, { type: THREE.FloatType });
+  const views = {};
+  for (const view of ['final', 'diffuse', 'specular', 'mask', 'depth']) {
+    node.setDebugView(view, { depthRange: 10 });
+    renderer.setRenderTarget(target);
+    pipeline.render();
+    renderer.setRenderTarget(null);
+    views[view] = await readFloats(renderer, target);
+  }
+  node.dispose();
+  pipeline.dispose();
+  scenePass.dispose();
+  target.dispose();
+  renderer.dispose();
+  return views;
+}
+
+window.wgpu = { THREE, NODE, pass, createRenderer, readFloats, subsurfacePipeline, flat, head, disposal, plainDraw, debugViews };
+window.testReady = true;
