@@ -17,14 +17,13 @@ import { FootprintTable } from '../profiles/FootprintTable.js';
 import { AUTO_MAX_SAMPLES } from '../profiles/footprints.js';
 import { computeKernel } from '../profiles/kernel.js';
 import { getProfile } from '../profiles/presets.js';
-import { estimatePixelsPerMm, planFrame } from '../framePlan.js';
+import { estimatePixelsPerMm } from '../framePlan.js';
+import { planBlur } from '../3-blur/blurPlan.js';
 import { isPerspective } from '../support/screenScale.js';
-import { checkBoolean, checkNumber, checkOneOf, checkOptions, checkRgb } from '../support/parameterChecks.js';
+import { checkBoolean, checkNumber, checkOneOf, checkOptions } from '../support/parameterChecks.js';
 import { describe } from '../support/rendererSupport.js';
-import { FOLLOW_SURFACE_MODES } from '../options.js';
-import {
-  KERNEL_OPTIONS, NODE_DEFAULTS, checkDepthThreshold, checkMethod, checkWorldUnit,
-} from './nodeOptions.js';
+import { PIPELINE_SCHEMA, checkOption } from '../options.js';
+import { NODE_DEFAULTS, checkMethod } from './nodeOptions.js';
 import { ATTACHMENT_NAMES } from './2-scene-split/attachments.js';
 import { subsurfaceBlurNode } from './3-blur/subsurfaceBlurTsl.js';
 import { checkWebgpuThree } from './threeVersion.js';
@@ -49,24 +48,23 @@ export class SubsurfaceScatteringNode extends Node {
     checkWebgpuThree();
     if (!scenePass || scenePass.isPassNode !== true) throw new TypeError(`subsurfaceScattering: scenePass must be a PassNode (pass(scene, camera)), got ${describe(scenePass)}`);
     const o = { ...NODE_DEFAULTS, ...checkOptions('subsurfaceScattering options', options, Object.keys(NODE_DEFAULTS)) };
-    this.method = checkMethod(o.method);
     this.scenePass = scenePass;
-    this.scattering = true;
-    this.profileLookup = new ProfileLookup(getProfile(o.profile));
+    this.profileLookup = new ProfileLookup(getProfile(checkOption(PIPELINE_SCHEMA, 'profile', o.profile)));
     this.footprintTable = new FootprintTable(this.profileLookup);
     this._uniforms = {
       kernelRadiusMm: uniform(0), strength: uniform(new Vector3(1, 1, 1)), projectionScale: uniform(new Vector2(1, 1)),
       resolution: uniform(new Vector2(1, 1)), depthFalloff: uniform(1), perspective: uniform(1), mmToWorld: uniform(1e-3),
       marginalRangeMm: uniform(1), debugView: debugViewUniform(), debugDepthRange: uniform(1),
     };
-    /** What the output shows: 'final' or one ingredient (see setDebugView). */
-    this.debugView = 'final';
-    this.worldUnitInMm = o.worldUnitInMm;
-    this.setKernel({ samples: o.samples, strength: o.strength });
-    this.setFollowSurface(o.followSurface, o.depthThresholdMm);
-    this.setForeshortening(o.foreshortening);
-    /** What the last frame ran: { samples, kernelPixels, blur } (see planFrame). */
-    this.plan = { samples: 0, kernelPixels: 0, blur: false };
+    this._debugView = 'final';
+    this._settings = { method: checkMethod(o.method) };
+    // Every option through its setter: the WebGL pipeline's schema checks it (src/options.js).
+    Object.assign(this, {
+      scattering: true, worldUnitInMm: o.worldUnitInMm, depthThresholdMm: o.depthThresholdMm, samples: o.samples,
+      strength: o.strength, followSurface: o.followSurface, foreshortening: o.foreshortening,
+    });
+    /** What the last frame ran: { samples, kernelPixels, blur, passes } (see src/3-blur/blurPlan.js). */
+    this.plan = { samples: 0, kernelPixels: 0, blur: false, passes: 'separable' };
 
     // The surface needs the 32-bit mantissa (mm differences at metres); the light is half float.
     scenePass.getTexture(ATTACHMENT_NAMES.SURFACE).type = FloatType;
@@ -85,87 +83,107 @@ export class SubsurfaceScatteringNode extends Node {
     this.isSubsurfaceScatteringNode = true;
   }
 
-  /** Millimetres per world unit (three.js: metres, 1000). */
-  get worldUnitInMm() {
-    return this._worldUnitInMm;
-  }
+  // ---- The settings: properties, checked on assignment as the WebGL pipeline's are (one setter style).
+
+  /** Millimetres per world unit (three.js: metres, 1000). @type {number} */
+  get worldUnitInMm() { return this._worldUnitInMm; }
 
   set worldUnitInMm(mm) {
-    this._worldUnitInMm = checkWorldUnit(mm);
+    this._worldUnitInMm = checkOption(PIPELINE_SCHEMA, 'worldUnitInMm', mm);
     this._uniforms.mmToWorld.value = 1 / mm;
-    if (this.depthThresholdMm !== undefined) this.setFollowSurface(this.followSurface, this.depthThresholdMm);
+    this._updateDepthFalloff();
   }
 
-  /** Whether the blur runs (false: the output equals the scene without scattering). */
-  get scattering() {
-    return this._scattering;
+  /** Whether the blur runs (false: the output equals the scene without scattering). @type {boolean} */
+  get scattering() { return this._scattering; }
+
+  set scattering(enabled) { this._scattering = checkBoolean('SubsurfaceScatteringNode.scattering', enabled); }
+
+  /** How the blur weighs its taps: the node has 'footprint' (the WebGL path's default). @type {'footprint'} */
+  get method() { return this._settings.method; }
+
+  /** @param {import('../options.js').Method} method */
+  set method(method) { this._settings.method = checkMethod(method); }
+
+  /** Taps per direction (a budget), odd, 3..63, or 'auto'. @type {number|'auto'} */
+  get samples() { return this._settings.samples; }
+
+  /** @param {number|'auto'} samples */
+  set samples(samples) {
+    checkOption(PIPELINE_SCHEMA, 'samples', samples);
+    computeKernel({ profile: this.profile, method: 'marginal', samples: samples === 'auto' ? AUTO_MAX_SAMPLES : samples });
+    this._settings.samples = samples;
   }
 
-  set scattering(enabled) {
-    this._scattering = checkBoolean('SubsurfaceScatteringNode.scattering', enabled);
-  }
+  /** The diffusion profile (a preset's name or a profile object; read back as the object); refills the tables only on a change. @type {object} */
+  get profile() { return this.profileLookup.profile; }
 
-  /** @param {boolean} enabled the grazing-angle correction (shrink the step by cos(tilt), compare depths with the local plane) */
-  setForeshortening(enabled) {
-    this.foreshortening = checkBoolean('foreshortening', enabled);
-  }
-
-  /** The diffusion profile object (set it with setKernel({ profile })). */
-  get profile() {
-    return this.profileLookup.profile;
-  }
-
-  /**
-   * The profile, the taps and the strength, checked as the WebGL pipeline checks them (the profile
-   * by getProfile, the taps and the strength by computeKernel's marginal kernel, which 'footprint'
-   * builds on); the profile tables are refilled only when the profile changes.
-   * @param {{ profile?: string|object, method?: 'footprint', samples?: number|'auto', strength?: number[] }} options
-   */
-  setKernel(options) {
-    if (options === null || typeof options !== 'object' || Array.isArray(options)) {
-      throw new TypeError(`setKernel: options must be an object { profile, method, samples, strength, falloff }, got ${describe(options)}`);
-    }
-    checkOptions('setKernel options', options, KERNEL_OPTIONS);
-    const { profile, method = this.method, samples = this.samples, strength = this.strength } = options;
-    checkMethod(method);
-    const p = profile === undefined ? this.profileLookup.profile : getProfile(profile);
-    computeKernel({ profile: p, method: 'marginal', samples: samples === 'auto' ? AUTO_MAX_SAMPLES : samples, strength });
+  /** @param {import('../options.js').ProfileName|object} profile */
+  set profile(profile) {
+    const p = getProfile(checkOption(PIPELINE_SCHEMA, 'profile', profile));
     if (p !== this.profileLookup.profile) this.profileLookup.setProfile(p); // tens of ms: only on a change
-    this.samples = samples;
-    this.strength = checkRgb('strength', strength, { min: 0, max: 1 });
-    this._uniforms.strength.value.fromArray(this.strength);
   }
 
-  /**
-   * @param {'drop'|'lerp'|'off'} mode what a tap on another surface does
-   * @param {number} [depthThresholdMm] depth step (mm) treated as another surface
-   */
-  setFollowSurface(mode, depthThresholdMm = this.depthThresholdMm) {
-    checkOneOf('followSurface', mode, FOLLOW_SURFACE_MODES);
-    checkDepthThreshold(depthThresholdMm);
-    this.followSurface = mode;
-    this.depthThresholdMm = depthThresholdMm;
-    this._uniforms.depthFalloff.value = this.worldUnitInMm / depthThresholdMm; // 1 / threshold in world units
+  /** RGB 0..1, mix with no scattering. @type {number[]} */
+  get strength() { return this._settings.strength; }
+
+  /** @param {number[]} strength */
+  set strength(strength) {
+    this._settings.strength = checkOption(PIPELINE_SCHEMA, 'strength', strength);
+    this._uniforms.strength.value.fromArray(this._settings.strength);
   }
 
+  /** What a tap on another surface does. @type {import('../options.js').FollowSurfaceMode} */
+  get followSurface() { return this._settings.followSurface; }
+
+  /** @param {import('../options.js').FollowSurfaceMode} mode */
+  set followSurface(mode) { this._settings.followSurface = checkOption(PIPELINE_SCHEMA, 'followSurface', mode); }
+
+  /** The depth step taken for another surface, mm. @type {number} */
+  get depthThresholdMm() { return this._settings.depthThresholdMm; }
+
+  /** @param {number} mm */
+  set depthThresholdMm(mm) {
+    this._settings.depthThresholdMm = checkOption(PIPELINE_SCHEMA, 'depthThresholdMm', mm);
+    this._updateDepthFalloff();
+  }
+
+  /** The grazing-angle correction (shrink the step by cos(tilt), compare depths with the local plane). @type {boolean} */
+  get foreshortening() { return this._settings.foreshortening; }
+
+  /** @param {boolean} enabled */
+  set foreshortening(enabled) { this._settings.foreshortening = checkOption(PIPELINE_SCHEMA, 'foreshortening', enabled); }
+
   /**
-   * Shows one ingredient instead of the final image, as the WebGL pipeline's setDebugView does:
-   * 'final', 'diffuse' (the scattered diffuse light), 'specular' (the rest of subsurface pixels),
-   * 'mask', 'depth' (linear view depth, white at 0, black at `depthRange` world units).
-   * A uniform: switching rebuilds nothing.
-   * @param {'final'|'diffuse'|'specular'|'mask'|'depth'} view
-   * @param {{ depthRange?: number }} [options]
+   * One ingredient instead of the final image, as the WebGL pipeline's debugView: 'final',
+   * 'diffuse' (the scattered diffuse light), 'specular' (the rest of subsurface pixels), 'mask',
+   * 'depth'. A uniform: switching rebuilds nothing.
+   * @type {'final'|'diffuse'|'specular'|'mask'|'depth'}
    */
-  setDebugView(view, options) {
-    const { depthRange = 1 } = checkOptions('setDebugView options', options, ['depthRange']);
+  get debugView() { return this._debugView; }
+
+  /** @param {import('../4-compose/debugViews.js').DebugView} view */
+  set debugView(view) {
     checkOneOf('view', view, DEBUG_VIEWS);
     if (!NODE_DEBUG_VIEWS.includes(view)) {
-      throw new RangeError(`setDebugView: view '${view}' needs transmittance, which the node does not have yet (it has ${NODE_DEBUG_VIEWS.map((v) => `'${v}'`).join(', ')})`);
+      throw new RangeError(`debugView: view '${view}' needs transmittance, which the node does not have yet (it has ${NODE_DEBUG_VIEWS.map((v) => `'${v}'`).join(', ')})`);
     }
-    checkNumber('depthRange', depthRange, { min: 0, minExclusive: true, unit: 'world units' });
     this._uniforms.debugView.value = DEBUG_VIEWS.indexOf(view);
-    this._uniforms.debugDepthRange.value = depthRange;
-    this.debugView = view;
+    this._debugView = view;
+  }
+
+  /** World units the 'depth' view maps to white..black (default 1). @type {number} */
+  get debugDepthRange() { return this._uniforms.debugDepthRange.value; }
+
+  /** @param {number} depthRange */
+  set debugDepthRange(depthRange) {
+    this._uniforms.debugDepthRange.value = checkNumber('depthRange', depthRange, { min: 0, minExclusive: true, max: Infinity, unit: 'world units' });
+  }
+
+  /** 1 / the depth threshold in world units, for the depth rule. @private */
+  _updateDepthFalloff() {
+    if (this._worldUnitInMm === undefined || this._settings?.depthThresholdMm === undefined) return;
+    this._uniforms.depthFalloff.value = this._worldUnitInMm / this._settings.depthThresholdMm;
   }
 
   /** @returns {import('three/webgpu').TextureNode} the scattered diffuse light, premultiplied by its coverage */
@@ -173,7 +191,7 @@ export class SubsurfaceScatteringNode extends Node {
     return this._scatteredNode;
   }
 
-  /** The frame plan (src/framePlan.js): the on-screen reach of the kernel, the taps, whether the blur runs. */
+  /** The frame plan (src/3-blur/blurPlan.js): the on-screen reach of the kernel, the taps, whether the blur runs. */
   _planFrame(camera, width, height) {
     const meshes = [];
     this.scenePass.scene.traverseVisible((object) => {
@@ -183,14 +201,11 @@ export class SubsurfaceScatteringNode extends Node {
     });
     const pixelsPerMm = estimatePixelsPerMm(meshes, camera, { width, height },
       (m) => (m?.isSubsurfaceNodeMaterial ? m.widthMm / this.worldUnitInMm : undefined));
-    return planFrame({
-      scattering: this.scattering,
-      pixelsPerMm,
-      samples: this.samples,
-      autoRadiusMm: this.profileLookup.marginalRadiusMm,
-      radiusMmOf: () => this.profileLookup.marginalRadiusMm, // 'footprint': the radius holding 99 % (BlurStage.radiusMmOf)
-      autoSamples: () => AUTO_MAX_SAMPLES, // footprints choose per pixel (BlurStage.autoSamplesFor)
-    });
+    // Stage 3 plans itself from its own settings, as on the WebGL path (src/3-blur/blurPlan.js).
+    return planBlur({
+      method: this.method, samples: this.samples, scattering: this.scattering,
+      marginalRadiusMm: this.profileLookup.marginalRadiusMm, denseRadiusMm: 0, kernelReachMm: {},
+    }, pixelsPerMm);
   }
 
   /** The two blur materials, rebuilt when a compile-time switch changes (taps, depth rule, MSAA). */

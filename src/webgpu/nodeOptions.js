@@ -1,8 +1,8 @@
-// The node's options in one place: what subsurfaceScattering(scenePass, { ... }) and setKernel
-// accept, their defaults (the WebGL pipeline's, src/options.js) and their checks (the WebGL
+// The node's options in one place: what subsurfaceScattering(scenePass, { ... }) accepts (each
+// also a property of the node), their defaults (the WebGL pipeline's, src/options.js) and their checks (the WebGL
 // pipeline's messages: test/unit/webgpuBadInputs.test.js runs the bad-input table on both).
-import { MAX_SCALE_MM, METHODS, MIN_SCALE_MM, PIPELINE_DEFAULTS } from '../options.js';
-import { checkNumber, checkOneOf } from '../support/parameterChecks.js';
+import { METHODS, PIPELINE_DEFAULTS } from '../options.js';
+import { checkOneOf } from '../support/parameterChecks.js';
 
 /** The methods the node has: the WebGL path's default ('footprint'; the others are for validation there). */
 export const NODE_METHODS = Object.freeze(['footprint']);
@@ -19,9 +19,6 @@ export const NODE_DEFAULTS = Object.freeze({
   foreshortening: PIPELINE_DEFAULTS.foreshortening,
 });
 
-/** What setKernel({ ... }) accepts. */
-export const KERNEL_OPTIONS = Object.freeze(['profile', 'method', 'samples', 'strength']);
-
 /** The WebGL pipeline's methods are accepted by name; the node has 'footprint' only (the others validate the WebGL path). */
 export function checkMethod(method) {
   checkOneOf('method', method, METHODS);
@@ -30,6 +27,3 @@ export function checkMethod(method) {
   }
   return method;
 }
-
-export const checkWorldUnit = (mm) => checkNumber('worldUnitInMm', mm, { min: MIN_SCALE_MM, max: MAX_SCALE_MM, unit: 'mm' });
-export const checkDepthThreshold = (mm) => checkNumber('depthThresholdMm', mm, { min: 0, minExclusive: true, max: MAX_SCALE_MM, unit: 'mm' });

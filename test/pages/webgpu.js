@@ -218,7 +218,7 @@ async function debugViews({ backend = 'webgpu', width = 96, height = 54 }) {
   const target = new THREE.RenderTarget(width, height, { type: THREE.FloatType });
   const views = {};
   for (const view of ['final', 'diffuse', 'specular', 'mask', 'depth']) {
-    node.setDebugView(view, { depthRange: 10 });
+    Object.assign(node, { debugView: view, debugDepthRange: 10 });
     renderer.setRenderTarget(target);
     pipeline.render();
     renderer.setRenderTarget(null);

@@ -15,7 +15,8 @@ import { expectOutcome } from '../reliability/expectError.js';
 /** The table's lines about what the node has too: construction options, kernel, depth rule, width. */
 const NODE_LINES = [
   /^worldUnitInMm: /, /^profile/, /^method: /, /^samples: /, /^strength: /, /^followSurface: /, /^depthThresholdMm: /,
-  /^foreshortening: /, /^sss\.worldUnitInMm = /, /^setKernel/, /^setFollowSurface/, /^setForeshortening/, /^setDebugView/, /^widthMm: /,
+  /^foreshortening: /, /^sss\.worldUnitInMm = /, /^samples = /, /^method = /, /^profile = /, /^strength = /, /^followSurface = /,
+  /^depthThresholdMm = /, /^foreshortening = /, /^debugView = /, /^debugDepthRange = /, /^widthMm: /,
 ];
 const NODE_OPTIONS = Object.keys(NODE.NODE_DEFAULTS);
 
@@ -78,8 +79,8 @@ const NODE_CASES = [
   ['a misspelt option', (t) => t.NODE.subsurfaceScattering(pass(t.scene, t.camera), { sampels: 17 }), 'TypeError', /unknown option "sampels" \(accepted: worldUnitInMm, profile, method, samples, /],
   ["a WebGL pipeline's option", (t) => t.NODE.subsurfaceScattering(pass(t.scene, t.camera), { lightDepthSize: 1024 }), 'TypeError', /unknown option "lightDepthSize"/],
   ["method: 'marginal' (WebGL only)", (t) => t.make({ method: 'marginal' }), 'RangeError', /method 'marginal' is not available on the node \(only 'footprint'/],
-  ["setKernel({ method: 'dense' })", (t) => t.sss.setKernel({ method: 'dense' }), 'RangeError', /method 'dense' is not available on the node/],
-  ["setDebugView('thickness') (needs transmittance)", (t) => t.sss.setDebugView('thickness'), 'RangeError', /view 'thickness' needs transmittance, which the node does not have yet/],
+  ["method = 'dense'", (t) => { t.sss.method = 'dense'; }, 'RangeError', /method 'dense' is not available on the node/],
+  ["debugView = 'thickness' (needs transmittance)", (t) => { t.sss.debugView = 'thickness'; }, 'RangeError', /view 'thickness' needs transmittance, which the node does not have yet/],
   ["scattering = 'no'", (t) => { t.sss.scattering = 'no'; }, 'TypeError', /SubsurfaceScatteringNode\.scattering must be a boolean \(true or false\), got "no"/],
   ['subsurfaceMaterial(null)', (t) => t.NODE.subsurfaceMaterial(null), 'TypeError', /subsurfaceMaterial: material must be a THREE\.MeshStandardMaterial or MeshPhysicalMaterial \(or its node version\), got null/],
   ['subsurfaceMaterial(a MeshBasicMaterial)', (t) => t.NODE.subsurfaceMaterial(new t.THREE.MeshBasicMaterial()), 'TypeError', /material must be .*got MeshBasicMaterial/],
@@ -97,7 +98,7 @@ describe("the node's own bad inputs", () => {
     const t = nodeFixture();
     try {
       const node = t.make({ profile: 'skinBurley', samples: 17, strength: [1, 0.5, 0.25], followSurface: 'lerp', depthThresholdMm: 3, foreshortening: false });
-      node.setKernel({ samples: 'auto', profile: 'marble' });
+      Object.assign(node, { samples: 'auto', profile: 'marble' });
       expect(node.profile.name).toBe('marble');
       const skin = t.NODE.subsurfaceMaterial(new t.THREE.MeshPhysicalMaterial({ clearcoat: 1 }), { widthMm: 2 });
       expect(skin.isSubsurfaceNodeMaterial && skin.isMeshPhysicalNodeMaterial).toBe(true);
