@@ -2,9 +2,9 @@
 // oracle: a back-lit slab shows T(d) of its thickness, thick slabs show none, and no acne.
 import { describe, it, expect, beforeAll, afterAll } from 'vitest';
 import { mat4 } from 'gl-matrix';
-import { openPage, runLab } from '../harness/page.js';
-import { at } from '../harness/images.js';
-import { transmittedFractionOracle, thicknessFromLightDepth } from '../oracle/transmittance.js';
+import { openPage, runLab } from '../../harness/page.js';
+import { at } from '../../harness/images.js';
+import { transmittedFractionOracle, thicknessFromLightDepth } from '../../oracle/transmittance.js';
 
 let page;
 beforeAll(async () => { page = await openPage('/test/pages/lab.html'); });

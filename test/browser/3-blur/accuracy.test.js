@@ -11,7 +11,7 @@
 // Thresholds for the default ('footprint', samples 'auto'): transfer within 0.03 where the grating
 // has at least 4 pixels per cycle, step edges within 1 % of the step, at 0.5-10 px/mm.
 import { describe, it, expect, beforeAll, afterAll } from 'vitest';
-import { openPage, evaluateFloats } from '../harness/page.js';
+import { openPage, evaluateFloats } from '../../harness/page.js';
 
 let page;
 beforeAll(async () => { page = await openPage('/test/pages/lab.html'); });
@@ -20,8 +20,8 @@ afterAll(async () => {
   await page.close();
 });
 
-import { GAUSSIANS, BURLEY_L, transferOf, erfc } from '../oracle/closedForms.js';
-import { frequenciesAt, measuredTransfer } from '../oracle/gratingFit.js';
+import { GAUSSIANS, BURLEY_L, transferOf, erfc } from '../../oracle/closedForms.js';
+import { frequenciesAt, measuredTransfer } from '../../oracle/gratingFit.js';
 
 /** E(x): the profile's energy beyond the line at x mm (x may be negative), per channel. */
 function beyondLine(profile, x) {

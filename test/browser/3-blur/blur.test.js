@@ -1,10 +1,10 @@
 // Stage 3 on the GPU: the separable, depth- and mask-aware blur, checked against the float64
 // oracle and against closed-form expectations. Scenes come from test/pages/lab.js.
 import { describe, it, expect, beforeAll, afterAll } from 'vitest';
-import { openPage, runLab } from '../harness/page.js';
-import { at, channel, rgb, subtract, countNonFinite } from '../harness/images.js';
-import { separableBlurOracle, roundToHalfFloat, edgeResponse1D } from '../oracle/convolution.js';
-import { getProfile } from '../../src/profiles/presets.js';
+import { openPage, runLab } from '../../harness/page.js';
+import { at, channel, rgb, subtract, countNonFinite } from '../../harness/images.js';
+import { separableBlurOracle, roundToHalfFloat, edgeResponse1D } from '../../oracle/convolution.js';
+import { getProfile } from '../../../src/profiles/presets.js';
 
 let page;
 beforeAll(async () => { page = await openPage('/test/pages/lab.html'); });

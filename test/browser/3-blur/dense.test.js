@@ -2,11 +2,11 @@
 // (denseConvolutionOracle): same pixel energies, radius, mask and depth rules. Small images of the
 // bench's scenes (bench/scenes.js, through bench/lab.js) with wide kernels, float targets.
 import { describe, it, expect, beforeAll, afterAll } from 'vitest';
-import { openPage, evaluateFloats } from '../harness/page.js';
-import { rgb, channel } from '../harness/images.js';
-import { denseConvolutionOracle } from '../oracle/convolution.js';
-import { getProfile } from '../../src/profiles/presets.js';
-import { MAX_PLANE_SLOPE, MAX_SLOPE, PLANE_SLOPE_AGREEMENT } from '../../src/3-blur/samplingModel.js';
+import { openPage, evaluateFloats } from '../../harness/page.js';
+import { rgb, channel } from '../../harness/images.js';
+import { denseConvolutionOracle } from '../../oracle/convolution.js';
+import { getProfile } from '../../../src/profiles/presets.js';
+import { MAX_PLANE_SLOPE, MAX_SLOPE, PLANE_SLOPE_AGREEMENT } from '../../../src/3-blur/samplingModel.js';
 
 const W = 96;
 const H = 54;

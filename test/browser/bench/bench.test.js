@@ -3,7 +3,7 @@
 // three's), its SSS must change the image, and the blur's floor must be a 17-tap box filter of
 // the diffuse light over the subsurface pixels (against that filter computed here).
 import { describe, it, expect, beforeAll, afterAll } from 'vitest';
-import { openPage, evaluateFloats } from '../harness/page.js';
+import { openPage, evaluateFloats } from '../../harness/page.js';
 
 let page;
 beforeAll(async () => {

@@ -2,11 +2,11 @@
 // console errors. Measured on the linear HDR image OutputPass receives, read back as floats.
 import { describe, it, expect } from 'vitest';
 import { readFileSync, existsSync } from 'node:fs';
-import { openPage } from '../harness/page.js';
+import { openPage } from '../../harness/page.js';
 
 // The asset step (run before the tests) says whether the scan is here; without it only the
 // stand-in can be checked, and the scan test says why it did not run.
-const statusFile = new URL('../../public/assets/head-status.json', import.meta.url);
+const statusFile = new URL('../../../public/assets/head-status.json', import.meta.url);
 const scanAvailable = existsSync(statusFile) && JSON.parse(readFileSync(statusFile, 'utf8')).complete === true;
 
 const W = 320;

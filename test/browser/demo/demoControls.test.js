@@ -2,12 +2,12 @@
 // frame (float read-back) of the page itself; the URL hash reproduces a view.
 import { describe, it, expect } from 'vitest';
 import { readFileSync, existsSync } from 'node:fs';
-import { demoOpener } from '../harness/demoPage.js';
-import { evaluateFloats } from '../harness/page.js';
+import { demoOpener } from '../../harness/demoPage.js';
+import { evaluateFloats } from '../../harness/page.js';
 
 const W = 480;
 const H = 270;
-const statusFile = new URL('../../public/assets/head-status.json', import.meta.url);
+const statusFile = new URL('../../../public/assets/head-status.json', import.meta.url);
 const scanAvailable = existsSync(statusFile) && JSON.parse(readFileSync(statusFile, 'utf8')).complete === true;
 
 const demo = demoOpener({ width: W, height: H });

@@ -8,13 +8,13 @@
 //    and covers neither the face nor the attribution.
 import { describe, it, expect } from 'vitest';
 import { readFileSync, readdirSync, existsSync } from 'node:fs';
-import { demoOpener } from '../harness/demoPage.js';
-import { evaluateFloats, screenshotPixels } from '../harness/page.js';
-import { profiles } from '../../src/profiles/presets.js';
-import { defaultState } from '../../demo/state.js';
-import { figureState } from '../../demo/figures.js';
+import { demoOpener } from '../../harness/demoPage.js';
+import { evaluateFloats, screenshotPixels } from '../../harness/page.js';
+import { profiles } from '../../../src/profiles/presets.js';
+import { defaultState } from '../../../demo/state.js';
+import { figureState } from '../../../demo/figures.js';
 
-const statusFile = new URL('../../public/assets/head-status.json', import.meta.url);
+const statusFile = new URL('../../../public/assets/head-status.json', import.meta.url);
 const scanAvailable = existsSync(statusFile) && JSON.parse(readFileSync(statusFile, 'utf8')).complete === true;
 
 const demo = demoOpener({ width: 800, height: 450 });
@@ -440,8 +440,8 @@ describe.skipIf(!scanAvailable)('the demo at first sight (on the head scan; need
 });
 
 // Every `#key=value` example in README.md and docs/*.md, with what it promises.
-const docs = ['README.md', ...readdirSync(new URL('../../docs/', import.meta.url)).filter((f) => f.endsWith('.md')).map((f) => `docs/${f}`)];
-const examples = [...new Set(docs.flatMap((file) => [...readFileSync(new URL(`../../${file}`, import.meta.url), 'utf8').matchAll(/`#([a-zA-Z]+=[^`\s]*)`/g)].map((m) => m[1])))];
+const docs = ['README.md', ...readdirSync(new URL('../../../docs/', import.meta.url)).filter((f) => f.endsWith('.md')).map((f) => `docs/${f}`)];
+const examples = [...new Set(docs.flatMap((file) => [...readFileSync(new URL(`../../../${file}`, import.meta.url), 'utf8').matchAll(/`#([a-zA-Z]+=[^`\s]*)`/g)].map((m) => m[1])))];
 
 describe.skipIf(!scanAvailable)('hash examples in the README and docs', () => {
   it('are found', () => {

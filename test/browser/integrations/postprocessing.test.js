@@ -2,7 +2,7 @@
 // EffectComposer (the real package), in place of its RenderPass. The oracle is the three.js
 // composer path: the same head, the same settings, through three's EffectComposer.
 import { describe, it, expect, beforeAll, afterAll } from 'vitest';
-import { openPage, evaluateFloats } from '../harness/page.js';
+import { openPage, evaluateFloats } from '../../harness/page.js';
 
 let page;
 beforeAll(async () => {

@@ -3,7 +3,7 @@
 // the three.js pass draws by hand, follow a camera swap without a rebuild, and mount and unmount
 // without leaving anything in three's memory.
 import { describe, it, expect, beforeAll, afterAll } from 'vitest';
-import { openPage, evaluateFloats } from '../harness/page.js';
+import { openPage, evaluateFloats } from '../../harness/page.js';
 
 let page;
 beforeAll(async () => {

@@ -1,6 +1,6 @@
 // The bench's conclusions: Pareto front and the default setting, on rows with known answers.
 import { describe, it, expect } from 'vitest';
-import { dominates, paretoFront, isDefaultSetting, median, spread, peerSummary, autoAgainstFixed } from '../../bench/analysis.js';
+import { dominates, paretoFront, isDefaultSetting, median, spread, peerSummary, autoAgainstFixed } from '../../../bench/analysis.js';
 
 const row = (name, gpuMs, rmse, extra = {}) => ({ name, gpuMs, rmse, kind: 'separable', ...extra });
 
@@ -21,7 +21,7 @@ describe('bench analysis', () => {
   });
 
   it("the default setting is footprint, skin, samples 'auto' (PIPELINE_DEFAULTS), not a fixed budget", async () => {
-    const { PIPELINE_DEFAULTS } = await import('../../src/options.js');
+    const { PIPELINE_DEFAULTS } = await import('../../../src/options.js');
     expect([PIPELINE_DEFAULTS.method, PIPELINE_DEFAULTS.profile, PIPELINE_DEFAULTS.samples]).toEqual(['footprint', 'skin', 'auto']);
     const auto = { kind: 'separable', method: 'footprint', profile: 'skin', samples: 'auto', auto: true };
     expect(isDefaultSetting(auto)).toBe(true);

@@ -2,8 +2,8 @@
 // light on a plane (each Gaussian's share beyond the line: erfc), on lattices of different and
 // overlapping spacings, and uniform light on a sphere.
 import { describe, it, expect } from 'vitest';
-import { surfaceTruth, levelsOf, coarsen, SUMMED_SIGMA_PER_SPACING } from '../../bench/surfaceTruth/scatter.js';
-import { GAUSSIANS, erfc } from '../oracle/closedForms.js';
+import { surfaceTruth, levelsOf, coarsen, SUMMED_SIGMA_PER_SPACING } from '../../../bench/surfaceTruth/scatter.js';
+import { GAUSSIANS, erfc } from '../../oracle/closedForms.js';
 
 const SKIN = GAUSSIANS.skin;
 

@@ -4,7 +4,7 @@
 import { describe, it, expect } from 'vitest';
 import { readFileSync } from 'node:fs';
 
-const root = new URL('../../', import.meta.url);
+const root = new URL('../../../', import.meta.url);
 
 describe("the demo's lil-gui stylesheet", () => {
   it("is three's lil-gui's, as it would inject it", () => {

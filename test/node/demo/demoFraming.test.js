@@ -1,9 +1,9 @@
 // The demo's camera shots: the full head at 16:9 is the bench's and figures' default camera, and a
 // narrower window backs the camera off along the same line until the shot's width fits.
 import { describe, it, expect } from 'vitest';
-import { SHOTS, shotCamera } from '../../demo/framing.js';
-import { DEFAULT_CAMERA } from '../../demo/headScene.js';
-import { defaultState } from '../../demo/state.js';
+import { SHOTS, shotCamera } from '../../../demo/framing.js';
+import { DEFAULT_CAMERA } from '../../../demo/headScene.js';
+import { defaultState } from '../../../demo/state.js';
 
 const FOV = 25; // the demo camera's vertical field of view
 

@@ -1,8 +1,8 @@
 // The demo's URL state: every key parses back to what was written, invalid values are refused
 // with a message naming the key and the accepted values, and figures set their toggles.
 import { describe, it, expect } from 'vitest';
-import { STATE_SCHEMA, defaultState, parseHash, formatHash } from '../../demo/state.js';
-import { FIGURES, figureState } from '../../demo/figures.js';
+import { STATE_SCHEMA, defaultState, parseHash, formatHash } from '../../../demo/state.js';
+import { FIGURES, figureState } from '../../../demo/figures.js';
 
 describe('demo URL state', () => {
   it('round-trips a state through the hash', () => {

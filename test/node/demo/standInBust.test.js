@@ -4,7 +4,7 @@
 import { NoColorSpace, SRGBColorSpace } from 'three';
 import { describe, expect, it } from 'vitest';
 
-import { STAND_IN_LAYOUT, createStandInBust, createStandInTextures } from '../../demo/standInBust.js';
+import { STAND_IN_LAYOUT, createStandInBust, createStandInTextures } from '../../../demo/standInBust.js';
 
 const SCAN_SIZE = [8.55, 7.95, 5.18]; // LeePerrySmith.glb bounding box (REFERENCE section 9)
 

@@ -1,6 +1,6 @@
 // The bench's error metrics on images whose answers are known in closed form.
 import { describe, it, expect } from 'vitest';
-import { radianceErrors, maskedSsim } from '../../dev/metrics.js';
+import { radianceErrors, maskedSsim } from '../../../dev/metrics.js';
 
 /** An RGBA image of width × height from f(x, y) → [r, g, b]. */
 function image(width, height, f) {

@@ -1,7 +1,7 @@
 // The float64 maths under the profiles: special functions against mpmath, quadrature rules.
 import { describe, it, expect } from 'vitest';
-import { erf, erfc, besselK } from '../../src/math/specialFunctions.js';
-import { gaussLegendre, integrateAdaptive } from '../../src/math/quadrature.js';
+import { erf, erfc, besselK } from '../../../src/math/specialFunctions.js';
+import { gaussLegendre, integrateAdaptive } from '../../../src/math/quadrature.js';
 
 const relErr = (a, b) => Math.abs(a - b) / Math.abs(b);
 

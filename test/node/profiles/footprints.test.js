@@ -3,11 +3,11 @@
 // (an independent calculation from the profile's closed-form strip energies), it keeps the
 // kernel's variance, and its error falls with the budget to what 'auto' promises.
 import { describe, it, expect } from 'vitest';
-import { profiles } from '../../src/profiles/presets.js';
+import { profiles } from '../../../src/profiles/presets.js';
 import {
   footprintAllocation, footprintTable, footprintRowOf, footprintRowScale, FOOTPRINT_ROWS, FOOTPRINT_SCALES,
   AUTO_STEP_ERROR, AUTO_MAX_SAMPLES, autoFootprintAllocation,
-} from '../../src/profiles/footprints.js';
+} from '../../../src/profiles/footprints.js';
 
 const G = (name) => (xMm) => profiles[name].marginalIntegral(0, xMm); // closed form for skin (erf)
 

@@ -1,8 +1,8 @@
 import { describe, it, expect } from 'vitest';
-import { computeKernel, kernelRadiusMm, referenceKernel, REFERENCE_STRENGTH } from '../../src/profiles/kernel.js';
-import { profiles, DEON_SKIN_GAUSSIANS } from '../../src/profiles/presets.js';
-import { gaussianSumProfile } from '../../src/profiles/gaussianSum.js';
-import { edgeResponse1D, kernelEdgeResponse1D } from '../oracle/convolution.js';
+import { computeKernel, kernelRadiusMm, referenceKernel, REFERENCE_STRENGTH } from '../../../src/profiles/kernel.js';
+import { profiles, DEON_SKIN_GAUSSIANS } from '../../../src/profiles/presets.js';
+import { gaussianSumProfile } from '../../../src/profiles/gaussianSum.js';
+import { edgeResponse1D, kernelEdgeResponse1D } from '../../oracle/convolution.js';
 
 const ALL_SAMPLES = Array.from({ length: 31 }, (_, i) => 3 + 2 * i); // 3..63
 

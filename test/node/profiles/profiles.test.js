@@ -1,12 +1,12 @@
 import { describe, it, expect } from 'vitest';
-import { integrateAdaptive } from '../../src/math/quadrature.js';
-import { stripIntegral, radialProfile } from '../../src/profiles/radialProfile.js';
-import { gaussianSumProfile } from '../../src/profiles/gaussianSum.js';
-import { burleyProfile } from '../../src/profiles/burley.js';
-import { dipoleProfile } from '../../src/profiles/dipole.js';
+import { integrateAdaptive } from '../../../src/math/quadrature.js';
+import { stripIntegral, radialProfile } from '../../../src/profiles/radialProfile.js';
+import { gaussianSumProfile } from '../../../src/profiles/gaussianSum.js';
+import { burleyProfile } from '../../../src/profiles/burley.js';
+import { dipoleProfile } from '../../../src/profiles/dipole.js';
 import {
   profiles, getProfile, transmittance, DEON_SKIN_GAUSSIANS, MARBLE_GAUSSIANS, SKIN_BURLEY_SCATTER_DISTANCE_MM, WHOLE_MILK_COEFFICIENTS,
-} from '../../src/profiles/presets.js';
+} from '../../../src/profiles/presets.js';
 
 const NAMES = ['skin', 'skinBurley', 'marble', 'milk'];
 

@@ -1,9 +1,9 @@
 // QuadrantEnergyLookup: the table the dense reference reads its pixel energies from, read the
 // way the shader reads it, against closed forms of the profiles.
 import { describe, it, expect } from 'vitest';
-import { QuadrantEnergyLookup } from '../../src/profiles/QuadrantEnergyLookup.js';
-import { getProfile } from '../../src/profiles/presets.js';
-import { normalIntervalProbability } from '../../src/math/specialFunctions.js';
+import { QuadrantEnergyLookup } from '../../../src/profiles/QuadrantEnergyLookup.js';
+import { getProfile } from '../../../src/profiles/presets.js';
+import { normalIntervalProbability } from '../../../src/math/specialFunctions.js';
 
 const lookups = Object.fromEntries(['skin', 'skinBurley', 'milk'].map((name) => [name, new QuadrantEnergyLookup(name)]));
 const grid = [0.002, 0.02, 0.06, 0.1, 0.25, 0.5, 1, 2, 4, 8];

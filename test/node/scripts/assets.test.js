@@ -15,9 +15,9 @@ import {
   defaultHeadSources,
   ensureHeadAssets,
   sha256,
-} from '../../scripts/headAssets.js';
+} from '../../../scripts/headAssets.js';
 
-const REPO_ROOT = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '..', '..');
+const REPO_ROOT = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '..', '..', '..');
 const REAL_DIR = path.resolve(REPO_ROOT, '..', 'shared', 'assets', 'LeePerrySmith');
 
 // Five small fake files standing in for the real ones; their hashes replace the pinned table.

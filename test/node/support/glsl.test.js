@@ -1,8 +1,8 @@
 // The one GLSL mechanism (src/support/glsl.js): local includes resolved once each, loud on an
 // unknown or an unused chunk; enums as named defines; the library's shaders all assemble.
 import { describe, it, expect } from 'vitest';
-import { assembleGlsl, enumDefines, glslFloat, constantCase } from '../../src/support/glsl.js';
-import { DEBUG_VIEWS } from '../../src/4-compose/debugViews.js';
+import { assembleGlsl, enumDefines, glslFloat, constantCase } from '../../../src/support/glsl.js';
+import { DEBUG_VIEWS } from '../../../src/4-compose/debugViews.js';
 
 describe('assembleGlsl', () => {
   it('replaces each local include by its chunk, once, recursively, and leaves three\'s includes alone', () => {
@@ -57,7 +57,7 @@ describe('glslFloat', () => {
 
 describe("the library's shaders", () => {
   it('all assemble on import (every include found, no chunk unused)', async () => {
-    const m = await import('../../src/index.js');
+    const m = await import('../../../src/index.js');
     expect(m.transmittanceChunk).toContain('float sssThicknessWorld(');
     expect(m.transmittanceChunk).toContain('vec3 sssReadProfile(');
   });
@@ -67,7 +67,7 @@ describe('enumerated options in the GLSL sources', () => {
   it('are compared with named values only, never with a number', async () => {
     const { readdirSync, readFileSync } = await import('node:fs');
     const { join } = await import('node:path');
-    const root = new URL('../../shaders/', import.meta.url).pathname;
+    const root = new URL('../../../shaders/', import.meta.url).pathname;
     const files = readdirSync(root, { recursive: true }).filter((f) => f.endsWith('.glsl'));
     expect(files.length).toBeGreaterThan(10);
     const numeric = /\b(DEBUG_VIEW|FOLLOW_SURFACE|KERNEL_MODE|SSS_LIGHT_TYPE|sssDebugOutput)\s*[!=]=\s*\d/;

@@ -1,5 +1,5 @@
 import { describe, it, expect } from 'vitest';
-import { checkNumber, checkInteger, checkOddInteger, checkRgb, checkOneOf, describeValue } from '../../src/support/parameterChecks.js';
+import { checkNumber, checkInteger, checkOddInteger, checkRgb, checkOneOf, describeValue } from '../../../src/support/parameterChecks.js';
 
 describe('checkNumber', () => {
   it('returns accepted values', () => {

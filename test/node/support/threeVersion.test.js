@@ -4,10 +4,10 @@
 import { describe, it, expect } from 'vitest';
 import { readFileSync } from 'node:fs';
 import { MeshStandardMaterial, REVISION, ShaderLib } from 'three';
-import { makeSubsurface } from '../../src/index.js';
-import { SUPPORTED_THREE, SUPPORTED_THREE_RANGE, isSupportedThree } from '../../src/support/threeVersion.js';
+import { makeSubsurface } from '../../../src/index.js';
+import { SUPPORTED_THREE, SUPPORTED_THREE_RANGE, isSupportedThree } from '../../../src/support/threeVersion.js';
 
-const pkg = JSON.parse(readFileSync(new URL('../../package.json', import.meta.url), 'utf8'));
+const pkg = JSON.parse(readFileSync(new URL('../../../package.json', import.meta.url), 'utf8'));
 
 describe('supported three releases', () => {
   it('package.json peers on the range the version matrix tests; the devDependency is the newest', () => {
