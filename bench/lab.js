@@ -1,4 +1,4 @@
-// The browser side of the speed-accuracy bench (bench/run.js drives it; test/browser/dense.test.js
+// The browser side of the speed-accuracy bench (bench/run.js drives it; test/browser/3-blur/dense.test.js
 // uses it too): `window.bench` builds a scene with the real pipeline in a real EffectComposer,
 // renders the dense 2D reference once per profile (the pipeline's own method 'dense'), then
 // measures each setting's error against it and its time, all through the library's public API.

@@ -1,7 +1,7 @@
 // What runs this frame, decided once per frame after the scene split and before the blur:
 // how far the kernel reaches on screen, how many taps 'auto' takes, and whether the blur runs at
 // all (not below half a pixel: it could not move light into another pixel). planFrame is pure
-// and estimatePixelsPerMm only reads the scene graph; both run in Node (test/unit/framePlan.test.js).
+// and estimatePixelsPerMm only reads the scene graph; both run in Node (test/node/framePlan.test.js).
 import { Vector3 } from 'three';
 import { AUTO_REACH, AUTO_SAMPLES } from './options.js';
 import { MIN_KERNEL_PIXELS } from './3-blur/samplingModel.js';

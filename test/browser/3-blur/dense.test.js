@@ -82,7 +82,7 @@ describe('DenseSubsurfacePass (no grazing-angle correction) matches the float64 
   });
 });
 
-/** shaders/surfaceSlope.glsl's rule: depth change per pixel along `axis` from the neighbours. */
+/** shaders/common/surfaceSlope.glsl's rule: depth change per pixel along `axis` from the neighbours. */
 function surfaceSlope({ depth, widthWorld }, i, j, axis, pixelWorld) {
   const index = (k) => (axis === 0 ? j * W + Math.min(Math.max(i + k, 0), W - 1) : Math.min(Math.max(j + k, 0), H - 1) * W + i);
   const centre = j * W + i;
