@@ -6,8 +6,8 @@
  * - kernel: which computeKernel method builds the separable passes' taps ('marginal' or 'reference');
  * - blur: the blur stage's mode ('footprint' or 'taps' of SubsurfaceBlurPass, or 'dense' for
  *   DenseSubsurfacePass instead of the two separable passes).
- * 'footprint' (default): the marginal kernel's footprints snapped to pixels per pixel and weighed
- * exactly; 'marginal' and 'reference': computeKernel's fixed taps ('reference' is Jimenez 2012's
+ * 'footprint' (default): per pixel, footprints of whole pixels weighed exactly (the sampling model,
+ * item 8, in docs/ARCHITECTURE.md, "Stage 3: the sampling model"); 'marginal' and 'reference': computeKernel's fixed taps ('reference' is Jimenez 2012's
  * kernel, its profile built in); 'dense': the brute-force 2D reference, for validation only (its
  * cost grows with the square of the on-screen radius).
  */
