@@ -13,6 +13,7 @@ import {
 import { EffectComposer } from 'three/addons/postprocessing/EffectComposer.js';
 import { OutputPass } from 'three/addons/postprocessing/OutputPass.js';
 import { SubsurfaceScattering, AUTO_SAMPLES, pixelsPerMm, footprintTable } from '/src/index.js';
+import { ATTACHMENTS } from '/src/2-scene-split/subsurfaceTarget.js';
 import { AUTO_STEP_ERROR, footprintRowOf } from '/src/profiles/footprints.js';
 import { readRenderTargetFloats } from '/dev/readback.js';
 import { GpuStageTimer } from '/dev/gpuTimer.js';
@@ -143,7 +144,7 @@ async function reference({ profile, coverage = 0.997 }) {
   const t0 = performance.now();
   const images = await renderImages();
   const ms = performance.now() - t0;
-  const surface = await readRenderTargetFloats(renderer, sss.scenePass.renderTarget, 2);
+  const surface = await readRenderTargetFloats(renderer, sss.scenePass.renderTarget, ATTACHMENTS.SURFACE);
   const mask = Float32Array.from({ length: session.width * session.height }, (_, i) => surface[i * 4 + 1]);
   const radiusPx = radiusPixels(surface, dense.radiusMm);
   const bound = dense.uniforms.maxRadiusPx.value;
@@ -164,7 +165,7 @@ async function autoTaps() {
   session.autoTables ??= new Map();
   if (!session.autoTables.has(profile)) session.autoTables.set(profile, footprintTable((x) => sss.profileLookup.marginalEnergy(x), 'auto'));
   const { samples } = session.autoTables.get(profile);
-  const surface = await readRenderTargetFloats(renderer, sss.scenePass.renderTarget, 2);
+  const surface = await readRenderTargetFloats(renderer, sss.scenePass.renderTarget, ATTACHMENTS.SURFACE);
   const p = built.camera.projectionMatrix.elements;
   let sum = 0, count = 0, max = 0, min = Infinity;
   for (let i = 0; i < width * height; i++) {
@@ -307,8 +308,8 @@ async function readDense({ profile, coverage = 0.997, followSurface = 'drop', fo
   return {
     width, height,
     output: await readRenderTargetFloats(renderer, sss.scatteredTarget),
-    diffuse: await readRenderTargetFloats(renderer, sss.scenePass.renderTarget, 1),
-    surface: await readRenderTargetFloats(renderer, sss.scenePass.renderTarget, 2),
+    diffuse: await readRenderTargetFloats(renderer, sss.scenePass.renderTarget, ATTACHMENTS.DIFFUSE),
+    surface: await readRenderTargetFloats(renderer, sss.scenePass.renderTarget, ATTACHMENTS.SURFACE),
     projectionScale: [p[0], p[5]],
     depthThresholdWorld: dense.depthThresholdWorld,
     followSurface: dense.followSurface,

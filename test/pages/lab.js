@@ -7,6 +7,7 @@ import { RenderPass } from 'three/addons/postprocessing/RenderPass.js';
 import { ShaderPass } from 'three/addons/postprocessing/ShaderPass.js';
 import { OutputPass } from 'three/addons/postprocessing/OutputPass.js';
 import * as SSS from '/src/index.js';
+import { ATTACHMENTS } from '/src/2-scene-split/subsurfaceTarget.js';
 import { readRenderTargetFloats } from '/dev/readback.js';
 import { mulberry32 as random } from '/demo/seededRandom.js';
 
@@ -16,6 +17,31 @@ function createRenderer(width, height, parameters = {}) {
   renderer.setPixelRatio(1);
   renderer.setSize(width, height, false);
   return renderer;
+}
+
+/**
+ * The page's one renderer for run() and flat(), resized for each case and reused across them: one
+ * WebGL context for the page, and three compiles each program once for all the cases that use it
+ * (a fresh renderer per case made a context and recompiled every program each time). A case that
+ * needs a renderer of its own (other parameters, state it changes) makes one with createRenderer.
+ */
+let shared = null;
+function sharedRenderer(width, height) {
+  shared ??= createRenderer(width, height);
+  shared.setSize(width, height, false);
+  shared.setRenderTarget(null);
+  return shared;
+}
+
+/** Frees what a case's scene holds on the GPU (geometries, materials, their maps). */
+function disposeScene(scene) {
+  scene.traverse((object) => {
+    object.geometry?.dispose();
+    for (const material of [object.material ?? []].flat()) {
+      material.map?.dispose();
+      material.dispose();
+    }
+  });
 }
 
 /** A composer with half-float (or float) buffers (MSAA with `samples`) and no OutputPass: linear HDR out. */
@@ -142,7 +168,7 @@ const DEFAULTS = {
 async function run(options) {
   const o = { ...DEFAULTS, ...options };
   o.aspect = o.aspect ?? o.width / o.height;
-  const renderer = createRenderer(o.width, o.height);
+  const renderer = sharedRenderer(o.width, o.height);
   const built = SCENES[o.scene](o);
   const type = o.type === 'float' ? THREE.FloatType : THREE.HalfFloatType;
   const composer = createComposer(renderer, { type, samples: o.samples ?? 0 });
@@ -174,7 +200,8 @@ async function run(options) {
   const reads = { output: () => read(renderer, composer.readBuffer) };
   if (sss) {
     const t = sss.scenePass.renderTarget;
-    Object.assign(reads, { light: () => read(renderer, t, 0), diffuse: () => read(renderer, t, 1), surface: () => read(renderer, t, 2) });
+    const { COLOR, DIFFUSE, SURFACE } = ATTACHMENTS;
+    Object.assign(reads, { light: () => read(renderer, t, COLOR), diffuse: () => read(renderer, t, DIFFUSE), surface: () => read(renderer, t, SURFACE) });
     const p = built.camera.projectionMatrix.elements;
     Object.assign(result, {
       kernel: sss.kernel, kernelPixels: sss.kernelPixels, blurEnabled: sss.plan.blur,
@@ -189,8 +216,7 @@ async function run(options) {
   result.glError = renderer.getContext().getError();
   sss?.dispose();
   composer.dispose();
-  renderer.dispose();
-  renderer.forceContextLoss();
+  disposeScene(built.scene);
   return result;
 }
 
@@ -206,7 +232,7 @@ async function run(options) {
 async function flat({
   width = 256, height = 256, pxPerMm, pattern, frequencies = [], phases = [], angleDeg = 0, low = 0.05, sss = {},
 }) {
-  const renderer = createRenderer(width, height);
+  const renderer = sharedRenderer(width, height);
   const scene = new THREE.Scene();
   const halfW = width / (2 * pxPerMm);
   const halfH = height / (2 * pxPerMm);
@@ -237,15 +263,12 @@ async function flat({
   const composer = createComposer(renderer, { type: THREE.FloatType });
   composer.addPass(pipeline);
   composer.render();
-  const before = await read(renderer, pipeline.scenePass.renderTarget, 1);
+  const before = await read(renderer, pipeline.scenePass.renderTarget, ATTACHMENTS.DIFFUSE);
   const after = await read(renderer, pipeline.scatteredTarget);
   const result = { width, height, before, after, blur: pipeline.plan.blur, glError: renderer.getContext().getError() };
   pipeline.dispose();
   composer.dispose();
-  material.dispose();
-  map.dispose();
-  renderer.dispose();
-  renderer.forceContextLoss();
+  disposeScene(scene);
   return result;
 }
 
