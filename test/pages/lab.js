@@ -19,31 +19,6 @@ function createRenderer(width, height, parameters = {}) {
   return renderer;
 }
 
-/**
- * The page's one renderer for run() and flat(), resized for each case and reused across them: one
- * WebGL context for the page, and three compiles each program once for all the cases that use it
- * (a fresh renderer per case made a context and recompiled every program each time). A case that
- * needs a renderer of its own (other parameters, state it changes) makes one with createRenderer.
- */
-let shared = null;
-function sharedRenderer(width, height) {
-  shared ??= createRenderer(width, height);
-  shared.setSize(width, height, false);
-  shared.setRenderTarget(null);
-  return shared;
-}
-
-/** Frees what a case's scene holds on the GPU (geometries, materials, their maps). */
-function disposeScene(scene) {
-  scene.traverse((object) => {
-    object.geometry?.dispose();
-    for (const material of [object.material ?? []].flat()) {
-      material.map?.dispose();
-      material.dispose();
-    }
-  });
-}
-
 /** A composer with half-float (or float) buffers (MSAA with `samples`) and no OutputPass: linear HDR out. */
 function createComposer(renderer, { type = THREE.HalfFloatType, samples = 0 } = {}) {
   const size = renderer.getDrawingBufferSize(new THREE.Vector2());
@@ -168,7 +143,7 @@ const DEFAULTS = {
 async function run(options) {
   const o = { ...DEFAULTS, ...options };
   o.aspect = o.aspect ?? o.width / o.height;
-  const renderer = sharedRenderer(o.width, o.height);
+  const renderer = createRenderer(o.width, o.height);
   const built = SCENES[o.scene](o);
   const type = o.type === 'float' ? THREE.FloatType : THREE.HalfFloatType;
   const composer = createComposer(renderer, { type, samples: o.samples ?? 0 });
@@ -216,7 +191,8 @@ async function run(options) {
   result.glError = renderer.getContext().getError();
   sss?.dispose();
   composer.dispose();
-  disposeScene(built.scene);
+  renderer.dispose();
+  renderer.forceContextLoss();
   return result;
 }
 
@@ -232,7 +208,7 @@ async function run(options) {
 async function flat({
   width = 256, height = 256, pxPerMm, pattern, frequencies = [], phases = [], angleDeg = 0, low = 0.05, sss = {},
 }) {
-  const renderer = sharedRenderer(width, height);
+  const renderer = createRenderer(width, height);
   const scene = new THREE.Scene();
   const halfW = width / (2 * pxPerMm);
   const halfH = height / (2 * pxPerMm);
@@ -268,7 +244,10 @@ async function flat({
   const result = { width, height, before, after, blur: pipeline.plan.blur, glError: renderer.getContext().getError() };
   pipeline.dispose();
   composer.dispose();
-  disposeScene(scene);
+  material.dispose();
+  map.dispose();
+  renderer.dispose();
+  renderer.forceContextLoss();
   return result;
 }
 
