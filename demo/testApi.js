@@ -5,7 +5,7 @@ import { ATTACHMENTS } from '../src/2-scene-split/subsurfaceTarget.js';
 
 /**
  * @param {object} demo the page's parts (demo/main.js)
- * @param {{ onChange: (key: string) => void, onFigure: Function, onReset: Function }} actions
+ * @param {{ onChange: (key: string) => void, onFigure: Function, onReset: Function, onHash: () => void }} actions
  * @param {() => void} frame renders one frame
  */
 export function testApi(demo, actions, frame) {
@@ -26,6 +26,11 @@ export function testApi(demo, actions, frame) {
       state[key] = value;
       actions.onChange(key);
       panel.refresh();
+    },
+    /** Shows the view a URL hash describes, as an edited hash does (tests reuse one page so). */
+    show(hash) {
+      history.replaceState(null, '', hash ? `#${hash}` : location.pathname + location.search);
+      actions.onHash();
     },
     figure: actions.onFigure,
     reset: actions.onReset,

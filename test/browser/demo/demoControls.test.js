@@ -10,7 +10,8 @@ const H = 270;
 const statusFile = new URL('../../../public/assets/head-status.json', import.meta.url);
 const scanAvailable = existsSync(statusFile) && JSON.parse(readFileSync(statusFile, 'utf8')).complete === true;
 
-const demo = demoOpener({ width: W, height: H });
+// One page for the file: each test shows its hashes on it; the reload test loads one more.
+const demo = demoOpener({ width: W, height: H, reuse: true });
 
 /** The full head lit as before the first view changed (issue 13): the hash of these tests' scenes. */
 const fullHead = (extra) => `shot=head&split=0&${extra.includes('lightAzimuth') ? '' : 'lightAzimuth=30&'}lightElevation=25&lightIntensity=2.6&${extra}`;
@@ -137,7 +138,7 @@ describe.skipIf(!scanAvailable)('demo controls (on the head scan; needs npm run 
     const hash = await page.evaluate(() => location.hash);
     expect(hash).toContain('profile=marble');
     const first = await frame(page);
-    const reloaded = await frame(await demo(hash.slice(1)));
+    const reloaded = await frame(await demo(hash.slice(1), { fresh: true }));
     let worst = 0;
     for (let i = 0; i < first.data.length; i++) worst = Math.max(worst, Math.abs(first.data[i] - reloaded.data[i]));
     expect(worst).toBe(0);
