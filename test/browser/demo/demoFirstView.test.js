@@ -17,7 +17,8 @@ import { figureState } from '../../../demo/figures.js';
 const statusFile = new URL('../../../public/assets/head-status.json', import.meta.url);
 const scanAvailable = existsSync(statusFile) && JSON.parse(readFileSync(statusFile, 'utf8')).complete === true;
 
-const demo = demoOpener({ width: 800, height: 450 });
+// Tests 1 and 3 share a page at the default size (the others need their own size or a first load).
+const demo = demoOpener({ width: 800, height: 450, reuse: true });
 
 /** Renders and returns the screenshot of the image alone (no header, panel, divider...). */
 async function bareImage(page) {
