@@ -6,6 +6,7 @@
 //   packaging  vite builds, tsc on the declarations, the built demo under its CSP and Trusted
 //              Types (`npm run test:packaging`, which adds the three-version matrix)
 // See docs/TESTING.md for what each layer holds and what it costs.
+import { availableParallelism } from 'node:os';
 import { defineConfig } from 'vitest/config';
 
 // The timeouts the suite had as one queue, for every layer: on the shared two-core machine a Node
@@ -24,7 +25,8 @@ export default defineConfig({
   test: {
     reporters: ['default'],
     projects: [
-      { test: { name: 'node', include: ['test/node/**/*.test.js'], ...timeouts, sequence: { groupOrder: 0 } } },
+      // vitest's default is one worker fewer than the cores: one on two cores, so no parallelism at all.
+      { test: { name: 'node', include: ['test/node/**/*.test.js'], maxWorkers: availableParallelism(), ...timeouts, sequence: { groupOrder: 0 } } },
       { test: { name: 'browser', include: ['test/browser/**/*.test.js'], ...browserLayer, sequence: { groupOrder: 1 } } },
       { test: { name: 'packaging', include: ['test/packaging/**/*.test.js'], ...browserLayer, sequence: { groupOrder: 2 } } },
     ],
