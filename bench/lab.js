@@ -1,4 +1,4 @@
-// The browser side of the speed-accuracy bench (bench/run.js drives it; test/browser/dense.test.js
+// The browser side of the speed-accuracy bench (bench/run.js drives it; test/browser/3-blur/dense.test.js
 // uses it too): `window.bench` builds a scene with the real pipeline in a real EffectComposer,
 // renders the dense 2D reference once per profile (the pipeline's own method 'dense'), then
 // measures each setting's error against it and its time, all through the library's public API.
@@ -14,6 +14,7 @@ import { EffectComposer } from 'three/addons/postprocessing/EffectComposer.js';
 import { OutputPass } from 'three/addons/postprocessing/OutputPass.js';
 import { SubsurfaceScattering, pixelsPerMm } from '/src/index.js';
 import { AUTO_SAMPLES, footprintTable } from '/src/internals.js';
+import { ATTACHMENTS } from '/src/2-scene-split/subsurfaceTarget.js';
 import { AUTO_STEP_ERROR, footprintRowOf } from '/src/profiles/footprints.js';
 import { readRenderTargetFloats } from '/dev/readback.js';
 import { GpuStageTimer } from '/dev/gpuTimer.js';
@@ -144,7 +145,7 @@ async function reference({ profile, coverage = 0.997 }) {
   const t0 = performance.now();
   const images = await renderImages();
   const ms = performance.now() - t0;
-  const surface = await readRenderTargetFloats(renderer, sss.scenePass.renderTarget, 2);
+  const surface = await readRenderTargetFloats(renderer, sss.scenePass.renderTarget, ATTACHMENTS.SURFACE);
   const mask = Float32Array.from({ length: session.width * session.height }, (_, i) => surface[i * 4 + 1]);
   const radiusPx = radiusPixels(surface, dense.radiusMm);
   const bound = dense.uniforms.maxRadiusPx.value;
@@ -165,7 +166,7 @@ async function autoTaps() {
   session.autoTables ??= new Map();
   if (!session.autoTables.has(profile)) session.autoTables.set(profile, footprintTable((x) => sss.profileLookup.marginalEnergy(x), 'auto'));
   const { samples } = session.autoTables.get(profile);
-  const surface = await readRenderTargetFloats(renderer, sss.scenePass.renderTarget, 2);
+  const surface = await readRenderTargetFloats(renderer, sss.scenePass.renderTarget, ATTACHMENTS.SURFACE);
   const p = built.camera.projectionMatrix.elements;
   let sum = 0, count = 0, max = 0, min = Infinity;
   for (let i = 0; i < width * height; i++) {
@@ -307,8 +308,8 @@ async function readDense({ profile, coverage = 0.997, followSurface = 'drop', fo
   return {
     width, height,
     output: await readRenderTargetFloats(renderer, sss.scatteredTarget),
-    diffuse: await readRenderTargetFloats(renderer, sss.scenePass.renderTarget, 1),
-    surface: await readRenderTargetFloats(renderer, sss.scenePass.renderTarget, 2),
+    diffuse: await readRenderTargetFloats(renderer, sss.scenePass.renderTarget, ATTACHMENTS.DIFFUSE),
+    surface: await readRenderTargetFloats(renderer, sss.scenePass.renderTarget, ATTACHMENTS.SURFACE),
     projectionScale: [p[0], p[5]],
     depthThresholdWorld: dense.depthThresholdWorld,
     followSurface: dense.followSurface,
@@ -354,7 +355,7 @@ async function peerMeasure(options) {
 async function peerCoverage() {
   const { renderer, sss, width, height } = session;
   (await peersOf()).draw.ours();
-  const diffuse = await readRenderTargetFloats(renderer, sss.scenePass.renderTarget, 1);
+  const diffuse = await readRenderTargetFloats(renderer, sss.scenePass.renderTarget, ATTACHMENTS.DIFFUSE);
   let subsurfacePixels = 0;
   for (let i = 3; i < diffuse.length; i += 4) if (diffuse[i] > 0) subsurfacePixels++;
   const box = sss.scenePass.subsurfaceBox;

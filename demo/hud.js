@@ -7,6 +7,14 @@ const NAMES = {
   compose: 'compose', transparent: 'transparent',
 };
 
+/** An element with text (no HTML strings: the demo runs under Trusted Types) and a class. */
+function element(tag, text, className) {
+  const e = document.createElement(tag);
+  e.textContent = text;
+  if (className) e.className = className;
+  return e;
+}
+
 const format = (ms) => (ms >= 100 ? ms.toFixed(0) : ms >= 10 ? ms.toFixed(1) : ms.toFixed(2));
 
 export class TimingsHud {
@@ -34,35 +42,29 @@ export class TimingsHud {
     const t = this.timings.summary();
     const fps = Number.isFinite(t.fps) ? t.fps.toFixed(t.fps >= 10 ? 0 : t.fps >= 1 ? 1 : 2) : '…';
     const cpu = Number.isFinite(t.cpu) ? format(t.cpu) : '…';
-    this.fps.innerHTML = `<b>${fps}</b> fps <span class="hud-sub" title="CPU time of the render call">· render() ${cpu} ms</span>`;
+    const sub = element('span', `· render() ${cpu} ms`, 'hud-sub');
+    sub.title = 'CPU time of the render call';
+    this.fps.replaceChildren(element('b', fps), ' fps ', sub);
     const stages = STAGES.filter((s) => Number.isFinite(t[s]));
     const total = stages.reduce((sum, s) => sum + t[s], 0);
     const row = (s) => {
       const skipped = t.skipped.includes(s);
-      const element = document.createElement('div');
-      element.className = skipped ? 'hud-pass hud-skipped' : 'hud-pass';
-      element.dataset.stage = s;
+      const line = element('div', '', skipped ? 'hud-pass hud-skipped' : 'hud-pass');
+      line.dataset.stage = s;
       if (skipped) {
-        element.title = s === 'lightDepth'
+        line.title = s === 'lightDepth'
           ? 'not run this frame: the light reaches no subsurface mesh from behind (or transmittance is off), so no map is needed'
           : 'not run this frame';
       }
-      const name = document.createElement('span');
-      name.textContent = NAMES[s];
-      const bar = document.createElement('span');
-      bar.className = 'hud-bar';
+      const bar = element('span', '', 'hud-bar');
       bar.style.setProperty('--share', !skipped && total > 0 ? (t[s] / total).toFixed(3) : '0');
-      const ms = document.createElement('span');
-      ms.className = 'hud-ms';
-      ms.textContent = skipped ? 'skipped' : format(t[s]);
-      element.append(name, bar, ms);
-      return element;
+      line.append(element('span', NAMES[s]), bar, element('span', skipped ? 'skipped' : format(t[s]), 'hud-ms'));
+      return line;
     };
     this.passes.replaceChildren(...STAGES.filter((s) => stages.includes(s) || t.skipped.includes(s)).map(row));
     if (stages.length > 1) {
-      const totalRow = document.createElement('div');
-      totalRow.className = 'hud-pass hud-total';
-      totalRow.innerHTML = `<span>all passes</span><span class="hud-bar"></span><span class="hud-ms">${format(total)}</span>`;
+      const totalRow = element('div', '', 'hud-pass hud-total');
+      totalRow.append(element('span', 'all passes'), element('span', '', 'hud-bar'), element('span', format(total), 'hud-ms'));
       this.passes.append(totalRow);
     }
     this.drawPlot();

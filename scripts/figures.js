@@ -121,7 +121,7 @@ function figuresMarkdown() {
 
 /** How figure 2's preset was calibrated against the profile (the numbers are computed here). */
 function calibrationMarkdown() {
-  const albedo = 0.5; // the ear's albedo green/red, measured in the page (test/browser/demoFirstView.test.js)
+  const albedo = 0.5; // the ear's albedo green/red, measured in the page (test/browser/demo/demoFirstView.test.js)
   const rows = [0.3, 0.44, 0.6, 0.8, 1, 2.4].map((d) => {
     const t = profiles.skin.transmittance(d);
     const rgb = [1, (albedo * t[1]) / t[0], (albedo * 0.9 * t[2]) / t[0]].map((v) => v * 0.45);
@@ -145,7 +145,7 @@ function calibrationMarkdown() {
     'Beyond about 0.6 mm T\'s green is so small that ACES\'s output matrix takes it to zero: the ear',
     'shows pure red (the old preset, translucency 0.7, put 8 mm at 2.4 mm). Red-orange (hue ≥ 10°) needs',
     'd ≤ 0.6 mm, i.e. transmitted green/red ≥ albedo × T_g/T_r(0.6 mm) ≈ 0.08: the floor the browser',
-    'test (test/browser/demoFirstView.test.js) derives from the profile and the albedo it measures,',
+    'test (test/browser/demo/demoFirstView.test.js) derives from the profile and the albedo it measures,',
     'and checks the ear against (the ear measures about 0.14; the old preset 0.003). Translucency',
     '0.945 puts the median at 0.44 mm (the thin rim is more orange, the folds redder); intensity 8',
     'keeps the red below clipping, so the ear keeps its shading.',

@@ -2,7 +2,7 @@
 // `npm run options-doc`: writes what derives from the options' schema (src/options.js) into the
 // places that document it: the JSDoc typedefs of src/SubsurfaceScattering.js (from which the
 // TypeScript declarations are generated) and the README's options tables, each between its
-// markers. test/unit/options.test.js fails when either is out of date (run this to mend it).
+// markers. test/node/options.test.js fails when either is out of date (run this to mend it).
 import { readFileSync, writeFileSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
 import { MATERIAL_ALIASES, MATERIAL_SCHEMA, PIPELINE_SCHEMA } from '../src/options.js';

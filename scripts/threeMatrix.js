@@ -16,11 +16,11 @@ if (!/^0\.\d+\.\d+$/.test(version)) throw new RangeError(`threeMatrix: version m
 /** What the matrix runs: the pipeline's core (blur, transmittance, the drop-in pass), the integrations and the reliability suite (bad inputs, leaks, soak, context loss). */
 const CORE_TESTS = [
   'test/browser/threeVersion.test.js', // first: fails at once if the alias did not take
-  'test/browser/blur.test.js',
-  'test/browser/transmittance.test.js',
+  'test/browser/3-blur/blur.test.js',
+  'test/browser/1-light-depth/transmittance.test.js',
   'test/browser/dropIn.test.js',
-  'test/browser/postprocessing.test.js',
-  'test/browser/r3f.test.js',
+  'test/browser/integrations/postprocessing.test.js',
+  'test/browser/integrations/r3f.test.js',
   'test/browser/reliability.test.js',
 ];
 

@@ -1,7 +1,7 @@
 // The scene's side of a frame's plan: how large a profile millimetre is on screen over the
 // subsurface meshes drawn (estimatePixelsPerMm), the one input the blur stage's own plan takes
 // from outside it (src/3-blur/blurPlan.js), and the nearest depth of a mesh, which the light's
-// side test shares. Both only read the scene graph and run in Node (test/unit/framePlan.test.js).
+// side test shares. Both only read the scene graph and run in Node (test/node/framePlan.test.js).
 // planFrame is version 0.2's plan with callbacks into the blur, kept for one minor version.
 import { Vector3 } from 'three';
 import { MIN_KERNEL_PIXELS } from './3-blur/samplingModel.js';

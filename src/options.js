@@ -3,7 +3,7 @@
 // (PIPELINE_DEFAULTS, MATERIAL_DEFAULTS), the checks at the edge (checkPipelineOptions and the
 // setters of SubsurfaceScattering, checkMaterialOptions), the JSDoc typedefs the TypeScript
 // declarations are built from, and the README's options tables (both written by
-// `npm run options-doc`, scripts/optionsDoc.js; test/unit/options.test.js fails when they drift).
+// `npm run options-doc`, scripts/optionsDoc.js; test/node/options.test.js fails when they drift).
 import { FloatType, HalfFloatType } from 'three';
 import { getProfile } from './profiles/presets.js';
 import { describe } from './support/rendererSupport.js';
@@ -16,10 +16,11 @@ import {
  * - kernel: which computeKernel method builds the separable passes' taps ('marginal' or 'reference');
  * - blur: the blur stage's mode ('footprint' or 'taps' of SubsurfaceBlurPass, or 'dense' for
  *   DenseSubsurfacePass instead of the two separable passes); src/3-blur/blurPlan.js dispatches on it.
- * 'footprint' (default): the sampling model of docs/ARCHITECTURE.md "Stage 3: the sampling model";
- * 'marginal' and 'reference': computeKernel's fixed taps ('reference' is Jimenez 2012's kernel, its
- * profile built in); 'dense': the brute-force 2D reference, for validation only (its cost grows with
- * the square of the on-screen radius).
+ * 'footprint' (default): per pixel, footprints of whole pixels weighed exactly (the sampling model,
+ * item 8, in docs/ARCHITECTURE.md, "Stage 3: the sampling model"); 'marginal' and 'reference':
+ * computeKernel's fixed taps ('reference' is Jimenez 2012's kernel, its profile built in); 'dense':
+ * the brute-force 2D reference, for validation only (its cost grows with the square of the
+ * on-screen radius).
  */
 export const METHOD_TABLE = Object.freeze({
   footprint: Object.freeze({ kernel: 'marginal', blur: 'footprint' }),

@@ -69,7 +69,7 @@ diffuse light (the pipeline's own, transmittance included) is rendered into its 
 texel's world position and area, and at every pixel the camera sees, the scattered light is the
 float64 sum over the surface, Σⱼ R(|x − xⱼ|) Eⱼ Aⱼ, with d'Eon's six Gaussians of the skin profile
 (widthMm ${view.widthMm}), summed with 3D distances (bench/surfaceTruth/scatter.js; unit tests in
-test/unit/surfaceTruth.test.js against closed forms on planes and a sphere). Head at
+test/node/bench/surfaceTruth.test.js against closed forms on planes and a sphere). Head at
 ${view.width}×${view.height}, the speed-accuracy bench's camera, float targets.
 
 Error: ‖setting − truth‖ / ‖no scattering − truth‖ over each region's pixels (RGB), i.e. the part of

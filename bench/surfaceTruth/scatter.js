@@ -5,7 +5,7 @@
 // Screen-space methods see only what the camera sees, along the screen; this sees the surface.
 //
 // R is a sum of normalised 2D Gaussians, R(r) = Σᵢ wᵢ exp(−r²/2vᵢ)/(2πvᵢ) (d'Eon's skin: written out
-// in bench/surfaceTruth/profiles.js, not taken from the library). A Gaussian much narrower than the
+// in test/oracle/closedForms.js's GAUSSIANS, not taken from the library). A Gaussian much narrower than the
 // samples' spacing cannot be summed over them (it would alias on the lattice); it keeps its energy
 // where the light arrived: wᵢ · E(x), E(x) the query point's own diffuse light. Wider ones are
 // summed: on a locally regular lattice of spacing h the sum of a Gaussian of σ ≥ 0.6 h matches its

@@ -5,32 +5,11 @@
 // resolved from MSAA, shaders/common/surfaceSample.glsl), SSS_MAX_SLOPE, SSS_MIN_KERNEL_PIXELS,
 // SSS_ENERGY_LEFT (the numbers of src/3-blur/samplingModel.js) and KERNEL_MODE:
 //   KERNEL_MODE_TAPS: fixed weights and offsets (computeKernel's reference or marginal kernel);
-//   KERNEL_MODE_FOOTPRINT: per pixel, contiguous footprints of whole pixels, allocated for the
-//     pixel's scale so that the worst step-edge error is least for the budget (src/profiles/
-//     footprints.js: single pixels where the profile is steep, wide footprints where it is flat),
-//     read from the FootprintTable (the row nearest the pixel's scale; edges in mm times its scale,
-//     snapped, at least one pixel each) and weighted by the exact energy of the profile's marginal
-//     over them, read from the ProfileLookup. Where the budget covers the on-screen kernel pixel by
-//     pixel this is the exact 1D convolution of the pixel image. It stops as soon as the energy left
-//     is negligible, so small kernels cost fewer taps.
+//   KERNEL_MODE_FOOTPRINT: per pixel, footprints of whole pixels from the FootprintTable, weighted
+//     by the profile marginal's exact energy from the ProfileLookup.
 //
-// Sampling model (the float64 oracle in test/oracle/convolution.js implements the same):
-// - the step per kernel millimetre, in pixels, is shaders/common/screenScale.glsl's
-//   widthWorld * P / (2 * depth) * resolution along this axis;
-// - a tap inside the screen lies between two texels along the axis; each texel counts with its
-//   linear-interpolation weight times shaders/common/surfaceTap.glsl's weight (0 off the mask,
-//   1 - farness in 'drop' mode; its colour lerped to the centre's in 'lerp' mode), so no colour
-//   crosses a depth edge or the mask through filtering;
-// - the tap's kernel weight is scaled by the sum of its texel weights and each channel is
-//   renormalised by the weights used; with SSS_COVERAGE each texel also weighs its coverage, and
-//   the output is premultiplied by the centre's, like the input, so the compose adds it as is;
-// - grazing angles (FORESHORTEN, default on): the surface's depth slope along the axis, in world
-//   units per pixel, comes from the two neighbours (central difference; one-sided when a neighbour
-//   is off the mask or steeper than SSS_MAX_SLOPE; 0 when both are). A surface tilted by theta puts
-//   1 / cos(theta) = sqrt(1 + s^2) of surface under each pixel (s: depth change per world unit
-//   across), so the step shrinks by cos(theta), as the seed paper proposes with a normal buffer; and
-//   'drop'/'lerp' measure each texel's depth against the plane through the centre (centre depth +
-//   slope * texel offset), so a tilted surface is not mistaken for a depth edge.
+// The sampling model this implements is stated once, numbered, in docs/ARCHITECTURE.md ("Stage 3:
+// the sampling model"); the float64 oracle in test/oracle/convolution.js implements the same.
 
 uniform sampler2D tDiffuse;  // the multi-target's diffuse light (or the horizontal pass's output); alpha: the mask
 uniform sampler2D tSurface;  // the multi-target's surface: r linear view depth (world units), g world units per profile mm

@@ -1,4 +1,4 @@
-// Stage 3's plan for one frame, pure (test/unit/blurPlan.test.js): which blur runs, with how many
+// Stage 3's plan for one frame, pure (test/node/3-blur/blurPlan.test.js): which blur runs, with how many
 // taps, and how far it reaches on screen. BlurStage calls it with the settings it owns; the only
 // input from outside is the scene's scale (pixels per profile mm, src/framePlan.js's
 // estimatePixelsPerMm). BLUR_MODES is the dispatch on METHOD_TABLE's `blur` column: no method is

@@ -1,4 +1,4 @@
-// The numbers of the blur's sampling model (shaders/3-blur/subsurfaceBlur.frag.glsl's header),
+// The numbers of the blur's sampling model (docs/ARCHITECTURE.md, "Stage 3: the sampling model"),
 // shared by the shaders (as defines: SurfacePass sets them) and by the float64 oracle in
 // test/oracle/convolution.js, which imports the numbers but none of the code.
 

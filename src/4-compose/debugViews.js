@@ -1,6 +1,6 @@
 // What the compose pass can show: the final image or one of its ingredients, and what each view
 // needs the subsurface materials to write into the diffuse attachment. The compose shader compares
-// the views by name (DEBUG_VIEW_MASK, ...: support/glsl.js's enumDefines), never by position.
+// the views by name (DEBUG_VIEW_MASK, ...: src/support/glsl.js's enumDefines), never by position.
 
 /**
  * What the compose can show (setDebugView).

@@ -1,4 +1,4 @@
-// A diffusion profile as a small float table the shaders read (shaders/profileLookup.glsl), so any
+// A diffusion profile as a small float table the shaders read (shaders/common/profileLookup.glsl), so any
 // profile works on the GPU (Gaussian sums, Burley, dipole) from one JS source of truth:
 //   row 0: transmittance T(d) (energy beyond radius d), for the transmittance chunk;
 //   row 1: G(x) = ∫_0^x marginal, whose differences are the exact weight of any footprint of the

@@ -1,5 +1,5 @@
 // A diffusion profile's energy over axis-aligned rectangles, as a 2D float table the dense
-// reference reads (shaders/quadrantEnergy.glsl):
+// reference reads (shaders/common/quadrantEnergy.glsl):
 //   Q(a, b) = ∫_0^a ∫_0^b R(√(x² + y²)) dy dx   (a, b ≥ 0 mm; Q → 1/4 per channel as a, b → ∞)
 // so the energy over any pixel square [x0, x1] × [y0, y1] is the double difference
 // Q(x1, y1) − Q(x0, y1) − Q(x1, y0) + Q(x0, y0), Q extended as an odd function of each argument.
@@ -94,7 +94,7 @@ export class QuadrantEnergyLookup {
   }
 
   /**
-   * Q(a, b) read from the table exactly as shaders/quadrantEnergy.glsl reads it (odd in each
+   * Q(a, b) read from the table exactly as shaders/common/quadrantEnergy.glsl reads it (odd in each
    * argument, bilinear between texels in square-root coordinates, held past the range).
    * @param {number} aMm
    * @param {number} bMm

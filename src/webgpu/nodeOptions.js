@@ -1,6 +1,6 @@
 // The node's options in one place: what subsurfaceScattering(scenePass, { ... }) accepts (each
 // also a property of the node), their defaults (the WebGL pipeline's, src/options.js) and their checks (the WebGL
-// pipeline's messages: test/unit/webgpuBadInputs.test.js runs the bad-input table on both).
+// pipeline's messages: test/node/webgpu/webgpuBadInputs.test.js runs the bad-input table on both).
 import { METHODS, PIPELINE_DEFAULTS } from '../options.js';
 import { checkOneOf } from '../support/parameterChecks.js';
 

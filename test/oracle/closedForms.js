@@ -1,5 +1,5 @@
 // Closed forms of the profiles, written out from the papers rather than taken from the library
-// (src/profiles): the accuracy suite (test/browser/accuracy.test.js), the bench's transfer plot and
+// (src/profiles): the accuracy suite (test/browser/3-blur/accuracy.test.js), the bench's transfer plot and
 // its surface-space truth (bench/surfaceTruth/) all compare with these.
 // d'Eon & Luebke 2007's six Gaussians [variance mm², rgb weights] (REFERENCE §2); the skinBurley
 // scatter distances, which src/profiles/presets.js documents and the profile unit tests derive

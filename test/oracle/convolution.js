@@ -9,29 +9,14 @@
  *   kernel millimetre at that pixel (0 = not a subsurface pixel);
  * - `projectionScale` = [P0, P5], the projection matrix's x and y scales (three.js elements[0], [5]).
  *
- * SAMPLING MODEL of `separableBlurOracle` (the GPU shader implements the same; REFERENCE §4 with the
- * aspect bug fixed and the mask and depth rules made explicit). One pass along axis a (horizontal: a = (1, 0),
- * P = P0, resolution = width; vertical: a = (0, 1), P = P5, resolution = height); horizontal pass first,
- * its output stored through `storeIntermediate` (e.g. half-float rounding), then the vertical pass on it:
- *  1. centre pixel (i, j), p = (i + 0.5, j + 0.5); if widthWorld_c = 0 the output is the input.
- *  2. stepPx = widthWorld_c · P / (2 · depth_c) · resolution: pixels per kernel-mm along a (a world length L
- *     at view depth z spans L·P/z in NDC, which spans 2 over `resolution` pixels).
- *  2b. with `foreshorten` (the GPU's default): slope = depth change per pixel along a from the two
- *     neighbours: their central difference when both are on the mask and their slopes agree within
- *     PLANE_SLOPE_AGREEMENT of the larger (one plane, up to MAX_PLANE_SLOPE); otherwise central difference
- *     of those no steeper than MAX_SLOPE world units of depth per world unit across, one-sided when only
- *     one is, 0 when neither (src/3-blur/samplingModel.js's numbers), pixelWorld =
- *     2·depth_c/(P·resolution), tilt = slope/pixelWorld; stepPx /= sqrt(1 + tilt²) (cos of the tilt), and the
- *     depth rule below compares texel t with the plane, depth_c + slope·(t − centre along a), not depth_c.
- *  3. pixel skip: if stepPx · max_k |offset_k| < 0.5 the output is the centre colour (kernel below a pixel).
- *  4. tap k ≥ 1 at p_k = p + a · offset_k · stepPx. Dropped if p_k lies outside [0, width) × [0, height).
- *     It lies between texels along a (centres at integer + 0.5, clamp-to-edge). Each texel t counts with
- *     keep_t = its bilinear weight b_t, times 0 off the mask (widthWorld_t = 0), times the follow-surface
- *     factor below; the tap colour is Σ keep_t·colour_t / Σ keep_t and its kernel weight is scaled by
- *     Σ keep_t (dropped when that is 0): no colour crosses the mask or a depth edge through filtering.
- *  5. follow-surface per texel, dz = |depth_t − depth_c|, f = clamp(dz / depthThresholdWorld, 0, 1):
- *     'drop': keep_t · (1 − f);  'lerp': colour_t = mix(colour_t, colour_c, f);  'off': none.
- *  6. output = Σ weight · colour / Σ weight, per channel, the centre tap (w_0, colour_c) included.
+ * SAMPLING MODEL of `separableBlurOracle`: the numbered statement in docs/ARCHITECTURE.md ("Stage 3: the
+ * sampling model"; REFERENCE §4 with the aspect bug fixed and the mask and depth rules made explicit),
+ * which the GPU shader implements too. Here, in its terms: the centre of pixel (i, j) is
+ * p = (i + 0.5, j + 0.5) and tap k ≥ 1 lies at p + a · offset_k · stepPx, a = (1, 0) for the horizontal
+ * pass, (0, 1) for the vertical one; the horizontal pass's output is stored through `storeIntermediate`
+ * (e.g. half-float rounding) before the vertical pass reads it; the skip (item 4) compares
+ * stepPx · max_k |offset_k| with half a pixel; pixelWorld = 2·depth_c/(P·resolution) and
+ * tilt = slope/pixelWorld (item 3).
  *
  * The older 'bilinear' tap filter (`tapFilter: 'bilinear'`) took a tap's mask and depth from the texel
  * containing it but its colour from plain bilinear filtering, so a tap within half a texel of a depth edge

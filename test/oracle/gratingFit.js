@@ -1,6 +1,6 @@
 // Measuring a grating's transfer in a rendered image (pure, runs in Node): the amplitude of each
 // frequency by least squares of c0 + Σ aₖ cos + bₖ sin along the grating, after over before the
-// blur. Shared by the analytic accuracy suite (test/browser/accuracy.test.js) and the bench's
+// blur. Shared by the analytic accuracy suite (test/browser/3-blur/accuracy.test.js) and the bench's
 // transfer plot (bench/transfer/run.js), which render with test/pages/lab.js's `flat`.
 
 /** Solves the small dense system A y = b (Gaussian elimination with partial pivoting). */

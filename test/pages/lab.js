@@ -8,6 +8,7 @@ import { ShaderPass } from 'three/addons/postprocessing/ShaderPass.js';
 import { OutputPass } from 'three/addons/postprocessing/OutputPass.js';
 import * as SSS from '/src/index.js';
 import * as INTERNALS from '/src/internals.js';
+import { ATTACHMENTS } from '/src/2-scene-split/subsurfaceTarget.js';
 import { readRenderTargetFloats } from '/dev/readback.js';
 import { mulberry32 as random } from '/demo/seededRandom.js';
 import { dataTexture, flatScene } from './flatScene.js';
@@ -164,7 +165,8 @@ async function run(options) {
   const reads = { output: () => read(renderer, composer.readBuffer) };
   if (sss) {
     const t = sss.scenePass.renderTarget;
-    Object.assign(reads, { light: () => read(renderer, t, 0), diffuse: () => read(renderer, t, 1), surface: () => read(renderer, t, 2) });
+    const { COLOR, DIFFUSE, SURFACE } = ATTACHMENTS;
+    Object.assign(reads, { light: () => read(renderer, t, COLOR), diffuse: () => read(renderer, t, DIFFUSE), surface: () => read(renderer, t, SURFACE) });
     const p = built.camera.projectionMatrix.elements;
     Object.assign(result, {
       kernel: sss.kernel, kernelPixels: sss.kernelPixels, blurEnabled: sss.plan.blur,
@@ -196,7 +198,7 @@ async function flat({ width = 256, height = 256, sss = {}, ...scene }) {
   const composer = createComposer(renderer, { type: THREE.FloatType });
   composer.addPass(pipeline);
   composer.render();
-  const before = await read(renderer, pipeline.scenePass.renderTarget, 1);
+  const before = await read(renderer, pipeline.scenePass.renderTarget, ATTACHMENTS.DIFFUSE);
   const after = await read(renderer, pipeline.scatteredTarget);
   const result = { width, height, before, after, blur: pipeline.plan.blur, glError: renderer.getContext().getError() };
   pipeline.dispose();

@@ -1,4 +1,4 @@
-// The browser side of test/browser/postprocessing.test.js: pmndrs `postprocessing` (the real
+// The browser side of test/browser/integrations/postprocessing.test.js: pmndrs `postprocessing` (the real
 // package), the pass of three-separable-sss/postprocessing, the demo's head and the lab's helpers
 // on `window.pp`. Nothing here is part of the library.
 import * as POSTPROCESSING from 'postprocessing';

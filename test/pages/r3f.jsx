@@ -1,4 +1,4 @@
-// The browser side of test/browser/r3f.test.js: a React Three Fiber app (the real @react-three/fiber)
+// The browser side of test/browser/integrations/r3f.test.js: a React Three Fiber app (the real @react-three/fiber)
 // that adds skin scattering as the README says, with hooks on `window.r3f` for the test: mount and
 // unmount it, swap the camera as makeDefault does, render frames (frameloop "never": the test
 // decides when), read the canvas, and render the same scene by hand with the three.js pass as the

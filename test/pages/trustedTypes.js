@@ -1,5 +1,5 @@
 // The library imported and rendering (transmittance, both blurs, the compose) on a page that
-// enforces Trusted Types (trustedTypes.html). test/browser/security.test.js collects the page's
+// enforces Trusted Types (trustedTypes.html). test/packaging/security.test.js collects the page's
 // securitypolicyviolation events from before it loads; this module reports the frame, and then
 // proves the enforcement is on (a string to innerHTML and to new Function must throw).
 import * as THREE from 'three';

@@ -7,7 +7,7 @@
 //            NaN pixel and no GL error (it may be black: the warning says why);
 //   expected 'sane': no error, no warning, no GL error; the frame is finite and not black.
 //   expected 'ok': the call works (a fixed bug that used to throw a native error).
-// CALL_CASES run in Node (test/unit/badInputs.test.js) and in the browser, FRAME_CASES in the
+// CALL_CASES run in Node (test/node/badInputs.test.js) and in the browser, FRAME_CASES in the
 // browser only (test/browser/reliability.test.js). The functions run where they are imported: they
 // may use only `t` (t.THREE, t.SSS, the scene's objects, t.sss, t.make(options)...).
 

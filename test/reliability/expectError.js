@@ -1,5 +1,5 @@
-// One bad-input line's check, for the tables' runners (test/unit/badInputs.test.js for the WebGL
-// pipeline, test/unit/webgpuBadInputs.test.js for the WebGPURenderer node): `run(t)` works
+// One bad-input line's check, for the tables' runners (test/node/badInputs.test.js for the WebGL
+// pipeline, test/node/webgpu/webgpuBadInputs.test.js for the WebGPURenderer node): `run(t)` works
 // ('ok'), or throws the named error class with a message matching the line's fragment.
 import { expect } from 'vitest';
 

@@ -1,6 +1,6 @@
-// A strict TypeScript consumer of every export (test/unit/types.test.js compiles it against the
+// A strict TypeScript consumer of every export (test/packaging/types.test.js compiles it against the
 // declarations generated from the JSDoc, installed as a package). It must compile with no error;
-// test/unit/types.test.js also checks that ALL_EXPORTS names every value the package exports, and
+// test/packaging/types.test.js also checks that ALL_EXPORTS names every value the package exports, and
 // ALL_INTERNALS every value of the unstable three-separable-sss/internals entry.
 import * as THREE from 'three';
 import { EffectComposer } from 'three/addons/postprocessing/EffectComposer.js';

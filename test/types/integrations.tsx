@@ -1,5 +1,5 @@
 // The subpath exports in a strict TypeScript consumer: pmndrs postprocessing and React Three Fiber
-// (JSX), as the README shows them. Compiled by test/unit/types.test.js; must have no error.
+// (JSX), as the README shows them. Compiled by test/packaging/types.test.js; must have no error.
 import * as THREE from 'three';
 import { EffectComposer, EffectPass, BloomEffect, ToneMappingEffect } from 'postprocessing';
 import { useState } from 'react';

@@ -1,5 +1,5 @@
 // Deliberate misuses: each line after a `@ts-expect-error` must be a compile error.
-// test/unit/types.test.js compiles this file as it is (an unused directive would fail it) and
+// test/packaging/types.test.js compiles this file as it is (an unused directive would fail it) and
 // with the directives removed, where it expects an error on exactly those lines.
 import * as THREE from 'three';
 import { SubsurfaceScattering, makeSubsurface, computeKernel } from 'three-separable-sss';

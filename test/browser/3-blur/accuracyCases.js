@@ -1,0 +1,139 @@
+// The analytic accuracy suite's measurements and its table of cases for the default method
+// ('footprint', samples 'auto'), shared by the WebGL pipeline's test (accuracy.test.js) and the
+// WebGPURenderer node's (webgpuAccuracy.test.js), so both renderers meet the same thresholds on the
+// same scenes (test/pages/flatScene.js). A flat plane of subsurface material seen straight on at a
+// known scale, with cosine gratings and step edges of albedo, blurred and compared with closed forms
+// of the profiles (written out here, independent of the library's kernel code):
+// - transfer of a grating at f cycles/mm along an axis: the marginal's Fourier transform M(f):
+//   Gaussian sums Σ wᵢ exp(−2π² vᵢ f²) (d'Eon skin, marble), Burley ¼(1/√(1+(2πfl)²) + 3/√(1+(6πfl)²));
+//   along the diagonal a separable blur gives M(f/√2)²;
+// - a step edge: the exact 1D convolution of the pixel image with the marginal, E(x) = the
+//   profile's energy beyond a line at x (Gaussian sums: Σ wᵢ erfc(x/√(2vᵢ))/2; Burley: a polar
+//   integral of its closed-form R, computed here).
+// Thresholds for the default: transfer within 0.03 where the grating has at least 4 pixels per
+// cycle, step edges within 1 % of the step, at 0.5-10 px/mm.
+import { expect } from 'vitest';
+import { GAUSSIANS, BURLEY_L, transferOf, erfc } from '../../oracle/closedForms.js';
+import { frequenciesAt, measuredTransfer } from '../../oracle/gratingFit.js';
+
+/** E(x): the profile's energy beyond the line at x mm (x may be negative), per channel. */
+export function beyondLine(profile, x) {
+  if (x < 0) return beyondLine(profile, -x).map((e) => 1 - e);
+  if (profile !== 'skinBurley') return [0, 1, 2].map((c) => GAUSSIANS[profile].reduce((s, [v, w]) => s + w[c] * 0.5 * erfc(x / Math.sqrt(2 * v)), 0));
+  // Burley: R(r) = (e^{−r/l} + e^{−r/3l}) / (8π l r); the circle of radius r > x has the angle
+  // 2 acos(x / r) beyond the line: E(x) = ∫_x^∞ 2 acos(x/r) R(r) r dr, with r = x + u² against the
+  // square-root start, trapezoid in u (smooth), out to 80 l.
+  return BURLEY_L.map((l) => {
+    if (x === 0) return 0.5;
+    const R = (r) => (Math.exp(-r / l) + Math.exp(-r / (3 * l))) / (8 * Math.PI * l * r);
+    const U = Math.sqrt(80 * l);
+    const n = 6000;
+    let sum = 0;
+    for (let k = 1; k <= n; k++) {
+      const u = (k / n) * U;
+      const r = x + u * u;
+      sum += (k === n ? 0.5 : 1) * 2 * Math.acos(x / r) * R(r) * r * 2 * u;
+    }
+    return sum * (U / n);
+  });
+}
+
+/**
+ * The two measurements over a renderer's flat scene.
+ * @param {(options: object) => Promise<{ before: Float32Array, after: Float32Array, glError?: number }>} flat
+ *   renders test/pages/flatScene.js's scene with `options` and reads the diffuse light back before
+ *   and after the blur (float RGBA)
+ */
+export function accuracyMeasures(flat) {
+  /** Measured transfer per frequency and channel, and its worst difference from `expected(f)`. */
+  async function grating({ profile, s, angleDeg = 0, width = 256, height = 256, sss = {}, expected = (f) => transferOf(profile, f) }) {
+    const frequencies = frequenciesAt(s);
+    const phases = frequencies.map((_, k) => 0.7 * k);
+    const r = await flat({ width, height, pxPerMm: s, pattern: 'cosines', frequencies, phases, angleDeg, sss: { profile, ...sss } });
+    if (r.glError !== undefined) expect(r.glError).toBe(0);
+    const measured = measuredTransfer(r, frequencies, s, angleDeg);
+    let worst = 0;
+    frequencies.forEach((f, k) => {
+      const e = expected(f);
+      for (let c = 0; c < 3; c++) worst = Math.max(worst, Math.abs(measured[c][k] - e[c]));
+    });
+    return { worst, measured, frequencies };
+  }
+
+  /** Worst |measured − exact| of a step edge's response along the row (or column) through the centre, per channel. */
+  async function stepEdge({ profile, s, angleDeg = 0, width = 256, height = 256, sss = {} }) {
+    const low = 0.05;
+    const r = await flat({ width, height, pxPerMm: s, pattern: 'step', angleDeg, low, sss: { profile, ...sss } });
+    if (r.glError !== undefined) expect(r.glError).toBe(0);
+    const vertical = angleDeg === 90;
+    const length = vertical ? height : width;
+    const reach = Math.min(Math.ceil(12 * s), length / 2 - 2);
+    const at = (image, i, c) => {
+      const x = vertical ? width / 2 : length / 2 + i;
+      const y = vertical ? length / 2 + i : height / 2;
+      return image[(y * width + x) * 4 + c];
+    };
+    let worst = 0;
+    for (let i = -reach; i < reach; i++) {
+      // Pixel i from the edge (the edge between pixels −1 and 0): lit pixels are j ≥ 0, so the exact
+      // response is the energy beyond the line through the edge, at (−i − 1/2) / s mm from the centre.
+      // (A backend storing rows top-down mirrors the vertical case about the edge: the response
+      // measured from the two levels is then the same.)
+      const exact = beyondLine(profile, (-i - 0.5) / s);
+      for (let c = 0; c < 3; c++) {
+        // The step's two levels as the material shaded them (three's diffuse is not exactly the albedo).
+        const dark = at(r.before, -reach, c);
+        const lit = at(r.before, reach - 1, c);
+        const response = (at(r.after, i, c) - dark) / (lit - dark);
+        worst = Math.max(worst, Math.abs(response - exact[c]));
+      }
+    }
+    return worst;
+  }
+
+  return { grating, stepEdge };
+}
+
+/**
+ * The 'footprint' method's cases, the default (samples 'auto') and a fixed 17 taps: [title, run]
+ * pairs for `it(title, run)`, over `accuracyMeasures(flat)`.
+ * @param {ReturnType<typeof accuracyMeasures>} measures
+ * @returns {[string, () => Promise<void>][]}
+ */
+export function footprintCases({ grating, stepEdge }) {
+  const cases = [];
+  for (const profile of ['skin', 'skinBurley']) {
+    for (const s of [1, 2, 5, 10]) {
+      cases.push([`${profile}: gratings along x and y at ${s} px/mm have the analytic transfer within 0.03`, async () => {
+        for (const angleDeg of [0, 90]) {
+          const { worst, frequencies } = await grating({ profile, s, angleDeg });
+          expect(frequencies.length).toBeGreaterThan(0);
+          expect(worst, `${angleDeg}°`).toBeLessThan(0.03);
+        }
+      }]);
+    }
+    cases.push([`${profile}: step edges along x and y at 0.5-8 px/mm are within 1 % of the exact 1D convolution`, async () => {
+      for (const s of [0.5, 1, 2, 4, 8]) {
+        for (const angleDeg of [0, 90]) expect(await stepEdge({ profile, s, angleDeg }), `${s} px/mm, ${angleDeg}°`).toBeLessThan(0.01);
+      }
+    }]);
+  }
+  cases.push(['marble: gratings along x at 2 and 5 px/mm within 0.03', async () => {
+    for (const s of [2, 5]) expect((await grating({ profile: 'marble', s })).worst).toBeLessThan(0.03);
+  }]);
+  cases.push(['a diagonal grating gets the separable transfer M(f/√2)², within 0.03 (the radial M(f) differs: the separable approximation)', async () => {
+    const separable = (f) => transferOf('skin', f / Math.SQRT2).map((m) => m * m);
+    const r = await grating({ profile: 'skin', s: 3, angleDeg: 45, expected: separable });
+    expect(r.worst).toBeLessThan(0.03);
+  }]);
+  cases.push(['is the same along x and y whatever the viewport aspect (2:1 and 1:2)', async () => {
+    const wide = await grating({ profile: 'skin', s: 2, angleDeg: 0, width: 384, height: 192 });
+    const tall = await grating({ profile: 'skin', s: 2, angleDeg: 90, width: 192, height: 384 });
+    expect(wide.worst).toBeLessThan(0.03);
+    for (let c = 0; c < 3; c++) wide.measured[c].forEach((m, k) => expect(Math.abs(m - tall.measured[c][k])).toBeLessThan(0.005));
+  }]);
+  cases.push(["'footprint' with a fixed 17 taps: step edges within 1 % up to 4 px/mm", async () => {
+    for (const s of [1, 4]) expect(await stepEdge({ profile: 'skin', s, sss: { samples: 17 } })).toBeLessThan(0.01);
+  }]);
+  return cases;
+}

@@ -1,0 +1,299 @@
+// Stage 3 on the GPU: the separable, depth- and mask-aware blur, checked against the float64
+// oracle and against closed-form expectations. Scenes come from test/pages/lab.js.
+import { describe, it, expect, beforeAll, afterAll } from 'vitest';
+import { openPage, runLab } from '../../harness/page.js';
+import { at, channel, rgb, subtract, countNonFinite } from '../../harness/images.js';
+import { separableBlurOracle, roundToHalfFloat, edgeResponse1D } from '../../oracle/convolution.js';
+import { getProfile } from '../../../src/profiles/presets.js';
+
+let page;
+beforeAll(async () => { page = await openPage('/test/pages/lab.html'); });
+afterAll(async () => {
+  expect(page.problems).toEqual([]);
+  await page.close();
+});
+
+/** The blurred diffuse light: output − light attachment, on subsurface pixels. */
+function scattered(r) {
+  return subtract(r.output, r.light);
+}
+
+describe('aspect fix: horizontal and vertical widths agree in world units at 16:9', () => {
+  it('a blurred point spreads equally in x and y (world units), within 2 %', async () => {
+    // The camera 20 units away: the kernel (35 px) stays inside the image in both directions, so no
+    // tap is dropped at a border (where renormalisation would skew the moments).
+    const r = await runLab(page, {
+      scene: 'slab', pattern: 'point', cells: 255, width: 256, height: 144, distance: 20, widthMm: 4,
+      sss: { followSurface: 'off', samples: 25 }, reads: ['output', 'light', 'diffuse', 'surface'], type: 'float',
+    });
+    const { width, height } = r;
+    const moments = (img) => {
+      let s = 0, sx = 0, sy = 0, sxx = 0, syy = 0;
+      for (let y = 0; y < height; y++) for (let x = 0; x < width; x++) {
+        const v = img[at(width, x, y)]; // red: the widest channel
+        s += v; sx += v * x; sy += v * y; sxx += v * x * x; syy += v * y * y;
+      }
+      const mx = sx / s, my = sy / s;
+      return { s, varX: sxx / s - mx * mx, varY: syy / s - my * my };
+    };
+    const before = moments(r.diffuse);
+    const after = moments(scattered(r));
+    // Pixel sizes in world units at the slab's depth, per axis (aspect and fov included).
+    const depth = r.surface[at(width, width >> 1, height >> 1)];
+    const pxX = (2 * depth) / (r.projectionScale[0] * width);
+    const pxY = (2 * depth) / (r.projectionScale[1] * height);
+    const sigmaX = Math.sqrt(after.varX - before.varX) * pxX;
+    const sigmaY = Math.sqrt(after.varY - before.varY) * pxY;
+    expect(Math.abs(pxX / pxY - 1)).toBeLessThan(1e-3); // square pixels: the check is meaningful
+    expect(sigmaX).toBeGreaterThan(0.02); // it did blur (world units)
+    expect(Math.abs(sigmaX / sigmaY - 1)).toBeLessThan(0.02);
+    // Energy of the point is kept.
+    expect(Math.abs(after.s / before.s - 1)).toBeLessThan(0.005);
+  });
+});
+
+describe('grazing angles', () => {
+  // A point of light on a slab turned 60° about the vertical axis: on the surface, light must spread
+  // as far across (x) as up (y); on screen the x spread is foreshortened by cos 60° = 0.5.
+  const spread = async (foreshortening) => {
+    const r = await runLab(page, {
+      scene: 'slab', pattern: 'point', cells: 255, tiltDeg: 60, width: 256, height: 144, widthMm: 4, type: 'float',
+      sss: { followSurface: 'drop', samples: 25, foreshortening }, reads: ['output', 'light', 'diffuse', 'surface'],
+    });
+    const { width, height } = r;
+    const moments = (img) => {
+      let s = 0, sx = 0, sy = 0, sxx = 0, syy = 0;
+      for (let y = 0; y < height; y++) for (let x = 0; x < width; x++) {
+        const v = img[at(width, x, y)];
+        s += v; sx += v * x; sy += v * y; sxx += v * x * x; syy += v * y * y;
+      }
+      const mx = sx / s, my = sy / s;
+      return { varX: sxx / s - mx * mx, varY: syy / s - my * my, mx, my };
+    };
+    const before = moments(r.diffuse);
+    const after = moments(scattered(r));
+    const depth = r.surface[at(width, Math.round(before.mx), Math.round(before.my))];
+    const pxX = (2 * depth) / (r.projectionScale[0] * width);
+    const pxY = (2 * depth) / (r.projectionScale[1] * height);
+    const surfaceX = (Math.sqrt(after.varX - before.varX) * pxX) / Math.cos(Math.PI / 3);
+    const surfaceY = Math.sqrt(after.varY - before.varY) * pxY;
+    return surfaceX / surfaceY;
+  };
+
+  it('the blur spreads light equally along a tilted surface (within 5 %) with the correction, and not without', async () => {
+    expect(Math.abs((await spread(true)) - 1)).toBeLessThan(0.05);
+    // Without it, 'drop' reads the tilted plane as a depth edge and cuts the kernel short across it.
+    expect(Math.abs((await spread(false)) - 1)).toBeGreaterThan(0.4);
+  });
+});
+
+describe('accuracy', () => {
+  it('matches the float64 oracle\'s separable result at a hard light edge within 1e-3 of the lit level', async () => {
+    const cases = [['edgeX', 17, 'reference'], ['edgeY', 11, 'marginal'], ['noise', 25, 'footprint'], ['edgeX', 9, 'footprint']];
+    for (const [pattern, samples, method] of cases) {
+      const r = await runLab(page, {
+        scene: 'slab', pattern, widthMm: 2, sss: { samples, method, followSurface: 'drop' },
+        reads: ['output', 'light', 'diffuse', 'surface'],
+      });
+      const { width, height } = r;
+      const oracle = separableBlurOracle({
+        width, height, diffuse: rgb(r.diffuse), depth: channel(r.surface, 0), widthWorld: channel(r.surface, 1),
+        kernel: r.kernel, projectionScale: r.projectionScale, followSurface: 'drop',
+        depthThresholdWorld: r.depthThresholdWorld, storeIntermediate: roundToHalfFloat,
+        footprint: method === 'footprint' ? { ...r.footprint, profile: getProfile(r.profile) } : undefined,
+        foreshorten: true,
+      });
+      const gpu = scattered(r);
+      const lit = Math.max(...channel(r.diffuse, 0));
+      let worst = 0;
+      for (let i = 0; i < width * height; i++) {
+        for (let c = 0; c < 3; c++) worst = Math.max(worst, Math.abs(gpu[i * 4 + c] - oracle[i * 3 + c]));
+      }
+      expect(r.blurEnabled).toBe(true);
+      expect(worst / lit, `${pattern} ${method} ${samples}`).toBeLessThan(1e-3);
+    }
+  });
+
+  it('the footprint-weighted marginal kernel matches the exact 2D convolution along the axes within 1 %', async () => {
+    // 1 profile mm = widthWorld · P0 / (2 z) · W pixels: 0.075 · 3.19 / 20 · 320 ≈ 3.8 px per mm: red's
+    // tail reaches ~55 px, which a budget of 45 taps covers with footprints of one or two pixels.
+    const r = await runLab(page, {
+      scene: 'slab', pattern: 'edgeX', low: 0, widthMm: 0.15, worldUnitInMm: 2, width: 320, height: 180,
+      sss: { samples: 45, method: 'footprint', followSurface: 'off' }, reads: ['output', 'light', 'diffuse', 'surface'], type: 'float',
+    });
+    const { width, height } = r;
+    const profile = getProfile('skin');
+    const y = height >> 1;
+    const gpu = scattered(r);
+    const depth = r.surface[at(width, width >> 1, y)];
+    const widthWorld = r.surface[at(width, width >> 1, y) + 1];
+    const pxPerMm = (widthWorld * r.projectionScale[0] * width) / (2 * depth);
+    // The edge sits where the input drops from lit to 0.
+    let edge = 0;
+    for (let x = 1; x < width; x++) if (r.diffuse[at(width, x - 1, y)] > 0.5 && r.diffuse[at(width, x, y)] < 0.5) edge = x;
+    const lit = [0, 1, 2].map((c) => r.diffuse[at(width, edge - 40, y) + c]);
+    let worst = 0;
+    for (let x = edge - 30; x < edge + 30; x++) {
+      // Exact: the lit half-plane convolved with the radial profile is ∫ marginal beyond the edge.
+      const dMm = (x + 0.5 - edge) / pxPerMm;
+      const exact = edgeResponse1D(profile, dMm);
+      for (let c = 0; c < 3; c++) worst = Math.max(worst, Math.abs(gpu[at(width, x, y) + c] / lit[c] - exact[c]));
+    }
+    expect(pxPerMm).toBeGreaterThan(3.5);
+    expect(worst).toBeLessThan(0.01);
+  });
+});
+
+describe('mask: only subsurface pixels change', () => {
+  it('background and ordinary materials are identical to the same scene without the pipeline', async () => {
+    const common = { scene: 'mixed', widthMm: 3, type: 'float' };
+    const withSss = await runLab(page, { ...common, reads: ['output', 'surface'] });
+    const plain = await runLab(page, { ...common, pipeline: 'plain' });
+    const { width, height } = withSss;
+    let compared = 0, subsurface = 0, worst = 0;
+    for (let i = 0; i < width * height; i++) {
+      if (withSss.surface[i * 4 + 1] > 0) { subsurface++; continue; }
+      compared++;
+      for (let c = 0; c < 4; c++) worst = Math.max(worst, Math.abs(withSss.output[i * 4 + c] - plain.output[i * 4 + c]));
+    }
+    expect(subsurface).toBeGreaterThan(0.1 * width * height);
+    expect(compared).toBeGreaterThan(0.3 * width * height);
+    expect(worst).toBeLessThan(1e-4);
+  });
+
+  it('taps on ordinary pixels get zero weight: a 50× brighter neighbour changes no subsurface pixel', async () => {
+    const common = { scene: 'mixed', widthMm: 6, type: 'float', reads: ['output', 'surface'] };
+    const dim = await runLab(page, { ...common, brightness: 1 });
+    const bright = await runLab(page, { ...common, brightness: 50 });
+    const { width, height } = dim;
+    let worst = 0;
+    for (let i = 0; i < width * height; i++) {
+      if (!(dim.surface[i * 4 + 1] > 0)) continue;
+      for (let c = 0; c < 3; c++) worst = Math.max(worst, Math.abs(bright.output[i * 4 + c] - dim.output[i * 4 + c]));
+    }
+    expect(worst).toBeLessThan(1e-5);
+  });
+});
+
+describe('depth-aware', () => {
+  it('leaks across a depth edge at most 2 % of what a depth-blind blur leaks', async () => {
+    const leak = async (followSurface) => {
+      const r = await runLab(page, {
+        scene: 'depthEdge', gapWorld: 2, widthMm: 4, sss: { followSurface, samples: 25 },
+        reads: ['output', 'light', 'surface'],
+      });
+      const { width, height } = r;
+      const s = scattered(r);
+      let total = 0;
+      for (let y = 10; y < height - 10; y++) {
+        for (let x = 0; x < width; x++) {
+          const depth = r.surface[at(width, x, y)];
+          if (depth > 9) total += s[at(width, x, y)]; // far slab: depth 10; the near one is at 8
+        }
+      }
+      const base = s[at(width, width - 5, height >> 1)]; // far slab, far from the edge
+      let farPixels = 0;
+      for (let y = 10; y < height - 10; y++) for (let x = 0; x < width; x++) if (r.surface[at(width, x, y)] > 9) farPixels++;
+      return total - base * farPixels;
+    };
+    const blind = await leak('off');
+    const dropped = await leak('drop');
+    const lerped = await leak('lerp');
+    expect(blind).toBeGreaterThan(0.5); // the depth-blind blur does bleed
+    expect(Math.abs(dropped)).toBeLessThan(0.02 * blind);
+    expect(Math.abs(lerped)).toBeLessThan(0.02 * blind);
+  });
+});
+
+describe('energy and HDR', () => {
+  it('keeps the diffuse energy of a lit slab\'s interior within 0.5 %, and blurs radiance 50 unclamped', async () => {
+    const r = await runLab(page, {
+      scene: 'slab', pattern: 'noise', intensity: 50 * Math.PI, widthMm: 0.5, reads: ['output', 'light', 'diffuse'],
+    });
+    const { width, height } = r;
+    const s = scattered(r);
+    const margin = 30; // wider than the kernel's radius on screen (≈ 21 px)
+    let before = 0, after = 0, peak = 0;
+    for (let y = margin; y < height - margin; y++) for (let x = margin; x < width - margin; x++) {
+      const i = at(width, x, y);
+      before += r.diffuse[i]; after += s[i];
+      peak = Math.max(peak, s[i]);
+    }
+    expect(Math.abs(after / before - 1)).toBeLessThan(0.005);
+    expect(peak).toBeGreaterThan(20);
+    expect(countNonFinite(r.output)).toBe(0);
+  });
+
+  it('never lets NaN or Inf out, even from non-finite input pixels', async () => {
+    const r = await runLab(page, { scene: 'slab', pattern: 'nan', widthMm: 3, reads: ['output', 'diffuse'] });
+    expect(countNonFinite(r.diffuse)).toBe(0); // the material output is sanitised
+    expect(countNonFinite(r.output)).toBe(0);
+    const direct = await page.evaluate(async () => {
+      // The blur pass on its own, fed a texture with NaN and Inf.
+      const { THREE, SSS, createRenderer, dataTexture, read } = window.lab;
+      const renderer = createRenderer(32, 32);
+      const diffuse = dataTexture(32, 32, (x, y) => (x === 16 && y === 16 ? [NaN, Infinity, -Infinity] : [1, 1, 1]));
+      const surface = dataTexture(32, 32, () => [5, 0.05, 0]);
+      const camera = new THREE.PerspectiveCamera(30, 1, 0.1, 10);
+      const kernel = SSS.computeKernel({ samples: 9, profile: 'skin' });
+      const pass = new SSS.SubsurfaceBlurPass({ direction: 'horizontal', kernel, camera, surfaceTexture: surface, diffuseTexture: diffuse });
+      pass.setSize(32, 32);
+      const target = new THREE.WebGLRenderTarget(32, 32, { type: THREE.FloatType });
+      pass.render(renderer, target, null);
+      const data = await read(renderer, target);
+      let bad = 0;
+      for (const v of data) if (!Number.isFinite(v)) bad++;
+      pass.dispose(); target.dispose(); renderer.dispose();
+      return bad;
+    });
+    expect(direct).toBe(0);
+  });
+});
+
+describe('strength', () => {
+  it('strength 0 on a material turns scattering off and keeps its diffuse light', async () => {
+    const common = { scene: 'slab', pattern: 'noise', type: 'float', widthMm: 2 };
+    const off = await runLab(page, { ...common, material: { strength: 0 }, reads: ['output'] });
+    const plain = await runLab(page, { ...common, pipeline: 'plain' });
+    let worst = 0;
+    for (let i = 0; i < off.output.length; i++) worst = Math.max(worst, Math.abs(off.output[i] - plain.output[i]));
+    expect(worst).toBeLessThan(1e-5);
+  });
+
+  it('RGB strength mixes the footprint blur with no scattering, per channel', async () => {
+    const common = { scene: 'slab', pattern: 'edgeX', type: 'float', widthMm: 2, reads: ['output', 'light', 'diffuse'] };
+    const full = await runLab(page, { ...common, sss: { strength: [1, 1, 1] } });
+    const mixed = await runLab(page, { ...common, sss: { strength: [0, 0.5, 1] } });
+    let worst = [0, 0, 0];
+    let moved = 0;
+    for (let i = 0; i < full.output.length; i += 4) {
+      for (let c = 0; c < 3; c++) {
+        const raw = full.diffuse[i + c];
+        const blurred = full.output[i + c] - full.light[i + c];
+        const expected = raw + (blurred - raw) * [0, 0.5, 1][c];
+        worst[c] = Math.max(worst[c], Math.abs(mixed.output[i + c] - mixed.light[i + c] - expected));
+        if (c === 2) moved = Math.max(moved, Math.abs(blurred - raw));
+      }
+    }
+    expect(moved).toBeGreaterThan(0.05); // the edge is blurred at strength 1
+    // Each pass mixes its result with its input by s; on an edge along x the vertical pass finds
+    // nothing to blur, so the output is raw + s · (fully blurred − raw) exactly, per channel.
+    for (let c = 0; c < 3; c++) expect(worst[c], `channel ${c}`).toBeLessThan(1e-5);
+  });
+});
+
+describe('below one pixel, no work', () => {
+  it('skips both blurs and equals the no-SSS output when the kernel is under half a pixel', async () => {
+    const common = { scene: 'slab', pattern: 'noise', type: 'float' };
+    const tiny = await runLab(page, { ...common, widthMm: 0.001, reads: ['output'] });
+    const plain = await runLab(page, { ...common, pipeline: 'plain' });
+    expect(tiny.kernelPixels).toBeLessThan(0.5);
+    expect(tiny.blurEnabled).toBe(false);
+    let worst = 0;
+    for (let i = 0; i < tiny.output.length; i++) worst = Math.max(worst, Math.abs(tiny.output[i] - plain.output[i]));
+    expect(worst).toBeLessThan(1e-5);
+    const wide = await runLab(page, { ...common, widthMm: 1, reads: ['output'] });
+    expect(wide.kernelPixels).toBeGreaterThan(0.5);
+    expect(wide.blurEnabled).toBe(true);
+  });
+});

@@ -1,0 +1,158 @@
+// The demo's controls change the image where and how they should, measured on the linear HDR
+// frame (float read-back) of the page itself; the URL hash reproduces a view.
+import { describe, it, expect } from 'vitest';
+import { readFileSync, existsSync } from 'node:fs';
+import { demoOpener } from '../../harness/demoPage.js';
+import { evaluateFloats } from '../../harness/page.js';
+
+const W = 480;
+const H = 270;
+const statusFile = new URL('../../../public/assets/head-status.json', import.meta.url);
+const scanAvailable = existsSync(statusFile) && JSON.parse(readFileSync(statusFile, 'utf8')).complete === true;
+
+// One page for the file: each test shows its hashes on it; the reload test loads one more.
+const demo = demoOpener({ width: W, height: H, reuse: true });
+
+/** The full head lit as before the first view changed (issue 13): the hash of these tests' scenes. */
+const fullHead = (extra) => `shot=head&split=0&${extra.includes('lightAzimuth') ? '' : 'lightAzimuth=30&'}lightElevation=25&lightIntensity=2.6&${extra}`;
+
+/** The HDR frame plus the pixel positions of world points, computed in the page. */
+function frame(page, points = {}) {
+  return evaluateFloats(page, async (pts) => {
+    const { demo } = window;
+    const image = await demo.readHdr();
+    const camera = demo.rig.camera;
+    const at = {};
+    for (const [name, p] of Object.entries(pts)) {
+      const v = new demo.rig.camera.position.constructor(...p).project(camera);
+      at[name] = [Math.round((v.x * 0.5 + 0.5) * image.width), Math.round((v.y * 0.5 + 0.5) * image.height)];
+    }
+    const surface = await demo.readSurface();
+    return { ...image, at, surface };
+  }, points);
+}
+
+/** Mean of channel c over a (2r+1)² box around [x, y]. */
+function boxMean(img, [x, y], r, c) {
+  let sum = 0;
+  for (let j = y - r; j <= y + r; j++) for (let i = x - r; i <= x + r; i++) sum += img.data[(j * img.width + i) * 4 + c];
+  return sum / (2 * r + 1) ** 2;
+}
+
+const luminance = (d, i) => 0.2126 * d[i] + 0.7152 * d[i + 1] + 0.0722 * d[i + 2];
+
+describe.skipIf(!scanAvailable)('demo controls (on the head scan; needs npm run assets)', () => {
+  it('has at least 20 controls and no console errors', async () => {
+    const page = await demo();
+    const count = await page.evaluate(() => window.demo.panel.gui.controllersRecursive().length);
+    expect(count).toBeGreaterThanOrEqual(20);
+  });
+
+  it('transmittance with the light behind the head (lightAzimuth=180) makes the ears redder', async () => {
+    // Seen from the front the ears are edge-on to a light straight behind: their rims let red through.
+    const ears = { right: [1.8, 1.35, -0.25], left: [-1.9, 1.35, -0.25] };
+    const without = await frame(await demo(fullHead('lightAzimuth=180&transmittance=0')), ears);
+    const withT = await frame(await demo(fullHead('lightAzimuth=180&transmittance=1')), ears);
+    for (const side of ['right', 'left']) {
+      // Light gained over a box holding the whole ear, per channel.
+      const gain = [0, 1, 2].map((c) => (boxMean(withT, without.at[side], 8, c) - boxMean(without, without.at[side], 8, c)) * 17 * 17);
+      const before = boxMean(without, without.at[side], 8, 0) * 17 * 17;
+      expect(gain[0], `${side} ear: red light gained`).toBeGreaterThan(0.05 * before);
+      expect(gain[0], `${side} ear: red gains more than green`).toBeGreaterThan(3 * Math.max(gain[1], 0));
+      expect(gain[0], `${side} ear: red gains more than blue`).toBeGreaterThan(3 * Math.max(gain[2], 0));
+    }
+  });
+
+  it('the blur smooths the skin: less high-frequency energy in the face', async () => {
+    const face = { face: [0.6, 1.0, 2.1] };
+    const energy = (img) => {
+      const [cx, cy] = img.at.face;
+      let e = 0;
+      for (let y = cy - 12; y <= cy + 12; y++) for (let x = cx - 12; x <= cx + 12; x++) {
+        const i = (y * img.width + x) * 4;
+        const lap = 4 * luminance(img.data, i) - luminance(img.data, i - 4) - luminance(img.data, i + 4)
+          - luminance(img.data, i - 4 * img.width) - luminance(img.data, i + 4 * img.width);
+        e += lap * lap;
+      }
+      return e;
+    };
+    const sharp = energy(await frame(await demo(fullHead('sss=0&width=2')), face));
+    const soft = energy(await frame(await demo(fullHead('sss=1&width=2')), face));
+    expect(sharp).toBeGreaterThan(0);
+    expect(soft).toBeLessThan(0.8 * sharp);
+  });
+
+  it('depth consideration reduces bleeding across the head\'s depth edges (figure 4)', async () => {
+    // Far-side pixels of a depth edge: a neighbour within 3 px is nearer by more than 20 mm (0.4 units).
+    const bleeding = (img, unblurred) => {
+      let total = 0;
+      for (let y = 3; y < img.height - 3; y++) for (let x = 3; x < img.width - 3; x++) {
+        const i = y * img.width + x;
+        const z = img.surface[i * 4];
+        if (!(img.surface[i * 4 + 1] > 0)) continue;
+        let edge = false;
+        for (let d = -3; d <= 3 && !edge; d++) {
+          for (const n of [i + d, i + d * img.width]) {
+            if (img.surface[n * 4 + 1] > 0 && z - img.surface[n * 4] > 0.4) edge = true;
+          }
+        }
+        if (edge) total += Math.abs(luminance(img.data, i * 4) - luminance(unblurred.data, i * 4));
+      }
+      return total;
+    };
+    const unblurred = await frame(await demo('figure=4&sss=0'));
+    const blind = bleeding(await frame(await demo('figure=4&followSurface=off')), unblurred);
+    const aware = bleeding(await frame(await demo('figure=4&followSurface=drop')), unblurred);
+    expect(blind).toBeGreaterThan(0);
+    expect(aware).toBeLessThan(0.7 * blind);
+  });
+
+  it('the split view\'s left half equals scattering off', async () => {
+    const split = await frame(await demo('split=0.5&width=3'));
+    const off = await frame(await demo('sss=0&width=3'));
+    let worst = 0;
+    let differsRight = 0;
+    for (let y = 0; y < H; y++) for (let x = 0; x < W; x++) {
+      const i = (y * W + x) * 4;
+      for (let c = 0; c < 3; c++) {
+        const d = Math.abs(split.data[i + c] - off.data[i + c]);
+        if (x < W / 2) worst = Math.max(worst, d);
+        else if (d > 1e-3) differsRight++;
+      }
+    }
+    expect(worst).toBeLessThan(1e-4);
+    expect(differsRight).toBeGreaterThan(100); // the right half is scattered
+  });
+
+  it('a state written by the controls reloads to the same image', async () => {
+    const page = await demo();
+    await page.evaluate(() => {
+      const { demo: d } = window;
+      d.set('width', 2.5);
+      d.set('profile', 'marble');
+      d.set('lightAzimuth', 120);
+      d.set('followSurface', 'lerp');
+      d.set('samples', 25);
+      d.set('view', 'diffuse');
+    });
+    const hash = await page.evaluate(() => location.hash);
+    expect(hash).toContain('profile=marble');
+    const first = await frame(page);
+    const reloaded = await frame(await demo(hash.slice(1), { fresh: true }));
+    let worst = 0;
+    for (let i = 0; i < first.data.length; i++) worst = Math.max(worst, Math.abs(first.data[i] - reloaded.data[i]));
+    expect(worst).toBe(0);
+  });
+
+  it('invalid hash values are ignored with a visible notice, and the page still renders', async () => {
+    const page = await demo('width=-3&profile=jelly&bogus=1');
+    const notice = await page.evaluate(() => ({ hidden: document.getElementById('hash-notice').hidden, text: document.getElementById('hash-notice').textContent }));
+    expect(notice.hidden).toBe(false);
+    expect(notice.text).toMatch(/width=-3/);
+    expect(notice.text).toMatch(/profile=jelly/);
+    expect(notice.text).toMatch(/bogus/);
+    expect(await page.evaluate(() => [window.demo.state.width, window.demo.state.profile])).toEqual([1, 'skin']);
+    const img = await frame(page, { face: [0.6, 1.0, 2.1] });
+    expect(boxMean(img, img.at.face, 3, 0)).toBeGreaterThan(0.05);
+  });
+});

@@ -1,0 +1,21 @@
+// The analytic accuracy suite (accuracyCases.js: the same cases and thresholds as the WebGL
+// pipeline's accuracy.test.js) on the three-separable-sss/webgpu node, on WebGPURenderer's WebGPU
+// backend (SwiftShader's Vulkan) and on its WebGL 2 backend (forceWebGL).
+import { describe, it, expect, beforeAll, afterAll } from 'vitest';
+import { evaluateFloats } from '../../harness/page.js';
+import { BACKENDS, openWebgpuPage } from '../../harness/webgpuBrowser.js';
+import { accuracyMeasures, footprintCases } from '../3-blur/accuracyCases.js';
+
+let page;
+beforeAll(async () => { page = await openWebgpuPage('/test/pages/webgpu.html'); });
+afterAll(async () => {
+  expect(page.problems).toEqual([]);
+  await page.close();
+});
+
+for (const backend of BACKENDS) {
+  describe(`the node on ${backend}: 'footprint' (the default, samples 'auto', and 17 taps) against closed forms`, () => {
+    const measures = accuracyMeasures((o) => evaluateFloats(page, (options) => window.wgpu.flat(options), { ...o, backend }));
+    for (const [title, run] of footprintCases(measures)) it(title, run);
+  });
+}

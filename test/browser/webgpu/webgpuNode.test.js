@@ -1,0 +1,88 @@
+// The three-separable-sss/webgpu node on both of WebGPURenderer's backends (WebGPU on SwiftShader's
+// Vulkan, WebGL 2 with forceWebGL) against the WebGL pipeline and against three itself:
+// - the demo's head: the node's 8-bit output (RenderPipeline, ACES, sRGB) against the WebGL
+//   pipeline in an EffectComposer with OutputPass: mean |difference| ≤ 1/255, 99th percentile ≤ 4/255
+//   (measured 2026-12-01, 320 × 180: mean 0.03-0.05, p99 1 on WebGPU, as the renderers' plain
+//   frames differ; the scattering itself changes the close-up by p99 8);
+// - a subsurface material drawn outside a subsurface pass renders exactly as three's own material;
+// - the debug views add up (diffuse + specular = final on subsurface pixels);
+// - dispose returns the renderer to its baseline (renderer.info.memory: geometries, textures,
+//   render targets, programs; one attribute stays, the full-screen quad's geometry that the node,
+//   like three's own display nodes, shares between all instances).
+import { describe, it, expect, beforeAll, afterAll } from 'vitest';
+import { evaluateFloats } from '../../harness/page.js';
+import { BACKENDS, openWebgpuPage } from '../../harness/webgpuBrowser.js';
+
+let page;
+beforeAll(async () => { page = await openWebgpuPage('/test/pages/webgpu.html'); });
+afterAll(async () => {
+  expect(page.problems).toEqual([]);
+  await page.close();
+});
+
+/** Mean and 99th percentile of |a − b| over the RGB channels, in 8-bit steps. */
+function difference(a, b) {
+  const d = [];
+  for (let i = 0; i < a.length; i += 4) for (let c = 0; c < 3; c++) d.push(Math.abs(a[i + c] - b[i + c]));
+  d.sort((x, y) => x - y);
+  return { mean: d.reduce((s, x) => s + x, 0) / d.length, p99: d[Math.floor(0.99 * d.length)], max: d[d.length - 1] };
+}
+
+const bytes = (object) => Object.fromEntries(Object.entries(object).map(([k, v]) => [k, Array.isArray(v) ? Uint8Array.from(v) : v]));
+const run = (name, options) => page.evaluate(async (n, o) => {
+  const r = await window.wgpu[n](o);
+  return Object.fromEntries(Object.entries(r).map(([k, v]) => [k, v instanceof Uint8Array ? Array.from(v) : v]));
+}, name, options).then(bytes);
+
+for (const backend of BACKENDS) {
+  describe(`the node on ${backend}`, () => {
+    it('draws the head as the EffectComposer path does: mean |difference| ≤ 1/255, 99th percentile ≤ 4/255', async () => {
+      // The demo's framing, and a close-up (8°: about 3 px per mm) where the scattering shows.
+      for (const fovDeg of [25, 8]) {
+        const r = await run('head', { backend, width: 320, height: 180, fovDeg });
+        expect(r.isStandIn).toBe(false);
+        const d = difference(r.node, r.webgl);
+        expect(d.mean, `${fovDeg}°`).toBeLessThanOrEqual(1);
+        expect(d.p99, `${fovDeg}°`).toBeLessThanOrEqual(4);
+        if (fovDeg !== 8) continue;
+        // At the close-up the bound can tell: without its scattering the node would be off by more.
+        const plain = await run('head', { backend, width: 320, height: 180, fovDeg, sss: false });
+        expect(difference(plain.webgl, r.webgl).p99).toBeGreaterThan(4);
+        expect(difference(plain.node, r.node).p99).toBeGreaterThan(4);
+      }
+    });
+
+    it("renders a subsurface material outside a subsurface pass exactly as three's own", async () => {
+      const r = await run('plainDraw', { backend });
+      expect(difference(r.subsurface, r.three).max).toBe(0);
+      expect(r.three.some((v, i) => i % 4 === 0 && v > 100)).toBe(true); // the box is lit
+    });
+
+    it("shows the debug views it has: diffuse + specular = final on the mask, the mask 0 or 1, depth in (0, 1)", async () => {
+      const v = await evaluateFloats(page, (b) => window.wgpu.debugViews({ backend: b }), backend);
+      let on = 0;
+      for (let i = 0; i < v.mask.length; i += 4) {
+        const mask = v.mask[i];
+        expect([0, 1]).toContain(mask);
+        for (let c = 0; c < 3; c++) {
+          if (mask === 1) expect(Math.abs(v.diffuse[i + c] + v.specular[i + c] - v.final[i + c])).toBeLessThan(1e-3);
+          else expect(v.diffuse[i + c] + v.specular[i + c]).toBe(0);
+        }
+        if (mask === 1) {
+          on++;
+          expect(v.depth[i]).toBeGreaterThan(0);
+          expect(v.depth[i]).toBeLessThan(1);
+        }
+      }
+      expect(on).toBeGreaterThan(v.mask.length / 4 / 20); // the box covers part of the frame
+      expect(on).toBeLessThan(v.mask.length / 4);
+    });
+
+    it("dispose returns the renderer to its baseline (renderer.info.memory)", async () => {
+      const { before, during, after, blurred } = await page.evaluate((b) => window.wgpu.disposal({ backend: b }), backend);
+      expect(blurred).toBe(true);
+      expect(during.textures).toBeGreaterThan(before.textures); // the node's targets and tables were counted
+      for (const key of ['geometries', 'textures', 'renderTargets', 'programs']) expect(after[key], key).toBe(before[key]);
+    });
+  });
+}

@@ -1,0 +1,58 @@
+// Stage 3's own plan, in Node: planBlur is pure and dispatches on METHOD_TABLE through BLUR_MODES
+// (src/3-blur/blurPlan.js); BlurStage's plan reads only its own settings. The counts are worked
+// out by hand from the rules in blurPlan.js's comments.
+import { describe, it, expect } from 'vitest';
+import { planBlur, autoSampleCount, BLUR_MODES, blurModeOf } from '../../../src/3-blur/blurPlan.js';
+import { AUTO_SAMPLES, AUTO_REACH, METHODS, METHOD_TABLE } from '../../../src/options.js';
+import { AUTO_MAX_SAMPLES } from '../../../src/profiles/footprints.js';
+import { computeKernel, kernelRadiusMm } from '../../../src/profiles/kernel.js';
+import { profiles } from '../../../src/profiles/presets.js';
+
+const base = { scattering: true, marginalRadiusMm: 3, denseRadiusMm: 7, kernelReachMm: { 17: 4, 25: 5 } };
+
+describe('planBlur', () => {
+  it('every method has a blur mode, and every mode a pass kind', () => {
+    for (const method of METHODS) {
+      expect(BLUR_MODES[METHOD_TABLE[method].blur], method).toBeDefined();
+      expect(['separable', 'dense']).toContain(blurModeOf(method).passes);
+    }
+  });
+
+  it("'footprint': the frame keeps the budget (per pixel the table chooses) and reaches the marginal's 99 % radius", () => {
+    expect(planBlur({ ...base, method: 'footprint', samples: 'auto' }, 2)).toEqual({ samples: AUTO_MAX_SAMPLES, kernelPixels: 6, blur: true, passes: 'separable' });
+    expect(planBlur({ ...base, method: 'footprint', samples: 9 }, 2).samples).toBe(9);
+  });
+
+  it('fixed taps reach their outermost tap; below half a pixel, or switched off, nothing runs', () => {
+    expect(planBlur({ ...base, method: 'marginal', samples: 17 }, 0.1)).toEqual({ samples: 17, kernelPixels: 0.4, blur: false, passes: 'separable' });
+    expect(planBlur({ ...base, method: 'marginal', samples: 17 }, 0.125).blur).toBe(true); // exactly 0.5 px
+    expect(planBlur({ ...base, method: 'reference', samples: 25 }, 0).blur).toBe(false); // nothing drawn
+    expect(planBlur({ ...base, method: 'marginal', samples: 17, scattering: false }, 100).blur).toBe(false);
+    expect(() => planBlur({ ...base, method: 'marginal', samples: 9 }, 1)).toThrow(/no kernel reach for 9 taps/);
+  });
+
+  it("'auto' fixed taps: the fewest of AUTO_SAMPLES whose (n - 3) / 2 pixels per side reach AUTO_REACH of the radius", () => {
+    const reach = Object.fromEntries(AUTO_SAMPLES.map((n) => [n, n / 10]));
+    // 3 mm at 2 px/mm: 6 px; 0.92 × 6 = 5.52 px per side: (13 - 3) / 2 = 5 is short, (17 - 3) / 2 = 7 reaches.
+    expect(planBlur({ ...base, kernelReachMm: reach, method: 'marginal', samples: 'auto' }, 2)).toEqual({ samples: 17, kernelPixels: 3.4, blur: true, passes: 'separable' });
+    expect(autoSampleCount(6)).toBe(17);
+    expect(autoSampleCount(1e6)).toBe(63);
+    for (const n of AUTO_SAMPLES) expect(autoSampleCount((((n - 3) / 2) / AUTO_REACH) * (1 - 1e-9))).toBe(n);
+  });
+
+  it("'dense' runs the dense pass and reaches its own radius", () => {
+    expect(planBlur({ ...base, method: 'dense', samples: 'auto' }, 2)).toMatchObject({ kernelPixels: 14, blur: true, passes: 'dense' });
+  });
+
+  it("the fixed-tap modes are compiled for the largest 'auto' count, so a change of count is a uniform change", () => {
+    expect(BLUR_MODES.taps.tapCapacity(5, true)).toBe(AUTO_SAMPLES[AUTO_SAMPLES.length - 1]);
+    expect(BLUR_MODES.taps.tapCapacity(17, false)).toBe(17);
+    expect(BLUR_MODES.footprint.tapCapacity(63, true)).toBe(63);
+  });
+
+  it('a real kernel reach is its outermost tap', () => {
+    const kernel = computeKernel({ samples: 17, method: 'marginal', profile: profiles.skin });
+    const mm = kernelRadiusMm(kernel);
+    expect(planBlur({ ...base, kernelReachMm: { 17: mm }, method: 'marginal', samples: 17 }, 3).kernelPixels).toBeCloseTo(3 * mm, 12);
+  });
+});

@@ -1,0 +1,77 @@
+// The bench's cost model (bench/costModel.js) against sums worked out by hand from the formats
+// (RGBA16F 8 B, RG32F 8 B, 24-bit depth 4 B) and the passes, and the issue's ratios
+// (bench/costReport.js) against rounds made up for the test.
+import { describe, it, expect } from 'vitest';
+import { AFTER, BEFORE, NOT_BUILT, TEXEL_BYTES, frameTraffic, targetMemory } from '../../../bench/costModel.js';
+import { issueRatios, msaaRatio } from '../../../bench/costReport.js';
+
+describe('cost model', () => {
+  it('targets at 1920×1080: 2 × RGBA16F + RG32F + depth in the multi-target, 2 × RGBA16F for the blur', () => {
+    const pixels = 1920 * 1080;
+    expect(targetMemory(1920, 1080).bytes).toBe(pixels * (8 + 8 + 8 + 4 + 8 + 8));
+    // MSAA 4: a 4-sample renderbuffer per multi-target attachment besides its resolved texture.
+    expect(targetMemory(1920, 1080, { samples: 4 }).bytes).toBe(pixels * ((8 + 8 + 8 + 4) * 5 + 16));
+    expect(TEXEL_BYTES.rg32f).toBe(8);
+  });
+
+  it('an empty frame: only the clears, the blur passes\' centres and the compose', () => {
+    const t = frameTraffic(BEFORE, { subsurface: 0, box: 0, taps: 11 });
+    expect(t.scene).toEqual({ written: 28, read: 0, fetched: 0 });
+    expect(t.blurH).toEqual({ written: 8, read: 16, fetched: 16 });
+    expect(t.compose).toEqual({ written: 12, read: 20, fetched: 20 });
+    // Scissored to an empty box the blur passes cost nothing.
+    const after = frameTraffic(AFTER, { subsurface: 0, box: 0, taps: 11 });
+    expect(after.blurH).toEqual({ written: 0, read: 0, fetched: 0 });
+    expect(after.total.written).toBe(28 + 12);
+  });
+
+  it('a mask pixel: the split writes 28 B, a blur tap fetches two texels of diffuse and surface', () => {
+    const s = 0.25;
+    const t = frameTraffic(BEFORE, { subsurface: s, box: 0.5, taps: 9 });
+    // Scene: clears 28, prepass depth 4 (write) + 4 (test), split depth 4 + 4, colour, diffuse, surface 24.
+    expect(t.scene.written).toBeCloseTo(28 + s * (4 + 4 + 24), 12);
+    expect(t.scene.read).toBeCloseTo(s * (4 + 4), 12);
+    // Fetched per mask pixel: centre 16, slope 2 × 8, 9 taps × 2 texels × 16.
+    expect(t.blurV.fetched).toBeCloseTo(16 + s * (16 + 9 * 2 * 16), 12);
+    const after = frameTraffic(AFTER, { subsurface: s, box: 0.5, taps: 9 });
+    expect(t.scene.written - after.scene.written).toBeCloseTo(4 * s, 12); // no prepass depth write
+    expect(after.blurH.written).toBeCloseTo(0.5 * 8, 12); // the box only
+    expect(after.blurH.fetched).toBeCloseTo(0.5 * 16 + s * (16 + 9 * 2 * 16), 12);
+    expect(after.total.written + after.total.read).toBeLessThan(t.total.written + t.total.read);
+  });
+
+  it('the directions not built: no surface attachment saves its 8 B clear; the compose in the blur its pass', () => {
+    const scene = { subsurface: 0, box: 0.5, taps: 9 };
+    const after = frameTraffic(AFTER, scene);
+    expect(after.scene.written - frameTraffic(NOT_BUILT.surfaceFromDepth, scene).scene.written).toBe(8);
+    expect(frameTraffic(NOT_BUILT.surfaceFromDepth, scene).blurH.read).toBeCloseTo(0.5 * (8 + 4), 12); // depth: 4 B
+    const folded = frameTraffic(NOT_BUILT.composeInBlur, scene);
+    expect(folded.compose).toEqual({ written: 0, read: 0, fetched: 0 });
+    // The vertical pass over the whole frame: centre 16 + colour 8 + depth 4 read, colour + depth out.
+    expect(folded.blurV).toEqual({ written: 12, read: 28, fetched: 28 });
+  });
+});
+
+describe('issue 19 ratios', () => {
+  const round = (k) => ({
+    none: { stages: { scene: 10, blurH: 5 }, threePlain: { timerMs: 10 } },
+    msaa4: { stages: { scene: 10 + 2 * k, blurH: 5 }, threePlain: { timerMs: 10 + k } },
+  });
+
+  it('MSAA: ours added over the plain frame added, per round, then median and range', () => {
+    expect(msaaRatio([round(1), round(2), round(4)])).toMatchObject({ median: 2, min: 2, max: 2 });
+    expect(msaaRatio(undefined)).toBeNull();
+  });
+
+  it('the four ratios of a peers entry', () => {
+    const entry = {
+      summary: { overhead: { timer: { ratio: { median: 0.8 } } }, nonBlurShare: { median: 1.2 }, blurOverFloor: { timer: { median: 3 } } },
+      features: [round(1)],
+    };
+    const r = issueRatios(entry);
+    expect(r.overhead.median).toBe(0.8);
+    expect(r.nonBlur.median).toBe(1.2);
+    expect(r.blurOverFloor.median).toBe(3);
+    expect(r.msaa.median).toBe(2);
+  });
+});

@@ -1,0 +1,36 @@
+// Issue 19's switches (documented-internal flags the bench flips) take booleans only: a TypeError
+// naming the switch otherwise, never a silent truthy value.
+import { describe, it, expect } from 'vitest';
+import { PerspectiveCamera, Scene } from 'three';
+import { SubsurfaceScattering } from '../../../src/SubsurfaceScattering.js';
+
+describe('issue 19 switches', () => {
+  const sss = new SubsurfaceScattering({ scene: new Scene(), camera: new PerspectiveCamera() });
+  const switches = [
+    [sss, 'skipsUnreadLightDepth', true],
+    [sss.scenePass, 'depthPrepass', false],
+    [sss.blur, 'confineToSubsurface', true],
+    [sss.composePass, 'writesDepth', true],
+    [sss.composePass, 'fetchesEverywhere', false],
+  ];
+
+  it.each(switches.map(([owner, field, value]) => [field, owner, value]))('%s: defaults to the saving, takes booleans only', (field, owner, value) => {
+    expect(owner[field]).toBe(value);
+    expect(() => { owner[field] = 'no'; }).toThrow(TypeError);
+    expect(() => { owner[field] = 1; }).toThrow(new RegExp(field));
+    owner[field] = !value;
+    expect(owner[field]).toBe(!value);
+    owner[field] = value;
+  });
+
+  it('the compose\'s switches reach its material', () => {
+    sss.composePass.fetchesEverywhere = true;
+    expect(sss.composePass.material.defines.FETCH_EVERYWHERE).toBe(1);
+    sss.composePass.fetchesEverywhere = false;
+    sss.composePass.writesDepth = false;
+    sss.composePass.setClear(true);
+    expect(sss.composePass.material.depthWrite).toBe(false);
+    sss.composePass.writesDepth = true;
+    expect(sss.composePass.material.depthWrite).toBe(true);
+  });
+});

@@ -1,0 +1,110 @@
+// The bad-input table (test/reliability/badInputs.js) on the WebGPURenderer node's API, in plain
+// Node: every line of the table that names an option or a call the node has runs against the node
+// (the fixture's `make` builds subsurfaceScattering(pass(scene, camera), options), its `sss` is a
+// node, `sss.makeSubsurface` is subsurfaceMaterial), and must give the same error with the same
+// message as on the WebGL pipeline. Then the node's own cases.
+import { describe, it, expect } from 'vitest';
+import * as THREE from 'three';
+import { pass } from 'three/tsl';
+import * as SSS from '../../../src/index.js';
+import * as NODE from '../../../src/webgpu/index.js';
+import { CALL_CASES } from '../../reliability/badInputs.js';
+import { createFixture } from '../../reliability/fixture.js';
+import { expectOutcome } from '../../reliability/expectError.js';
+
+/** The table's lines about what the node has too: construction options, kernel, depth rule, width. */
+const NODE_LINES = [
+  /^worldUnitInMm: /, /^profile/, /^method: /, /^samples: /, /^strength: /, /^followSurface: /, /^depthThresholdMm: /,
+  /^foreshortening: /, /^sss\.worldUnitInMm = /, /^samples = /, /^method = /, /^profile = /, /^strength = /, /^followSurface = /,
+  /^depthThresholdMm = /, /^foreshortening = /, /^debugView = /, /^debugDepthRange = /, /^widthMm: /,
+];
+const NODE_OPTIONS = Object.keys(NODE.NODE_DEFAULTS);
+
+/** The WebGL fixture's scene with the node in place of the pipeline. */
+function nodeFixture() {
+  const t = createFixture(THREE, SSS);
+  const made = [];
+  const make = (options = {}) => {
+    const kept = Object.fromEntries(Object.entries({ worldUnitInMm: 100, ...options }).filter(([key]) => NODE_OPTIONS.includes(key)));
+    const node = NODE.subsurfaceScattering(pass(t.scene, t.camera), kept);
+    node.makeSubsurface = (material, materialOptions) => NODE.subsurfaceMaterial(material, materialOptions);
+    made.push(node);
+    return node;
+  };
+  let node = null;
+  const { THREE: three, scene, camera, material, mesh, light, nanProfile, changedProfile } = t; // not its getters (they make a WebGL pipeline)
+  return {
+    THREE: three, SSS, scene, camera, material, mesh, light, nanProfile, changedProfile,
+    NODE,
+    make,
+    get sss() {
+      node ??= make();
+      return node;
+    },
+    dispose() {
+      for (const n of made) n.dispose();
+      t.dispose();
+    },
+  };
+}
+
+/** Runs `run(t)` and checks the error it throws. */
+function expectError(run, expected, fragment) {
+  const t = nodeFixture();
+  try {
+    expectOutcome(run, t, expected, fragment);
+  } finally {
+    t.dispose();
+  }
+}
+
+const lines = CALL_CASES.filter(([input]) => NODE_LINES.some((line) => line.test(input)));
+
+describe("the bad-input table on the node's API, in Node", () => {
+  it('covers every kind of line it names (none of the patterns matches nothing)', () => {
+    for (const line of NODE_LINES) expect(lines.some(([input]) => line.test(input)), String(line)).toBe(true);
+    expect(lines.length).toBeGreaterThan(40);
+  });
+
+  for (const [input, run, expected, fragment] of lines) {
+    it(`${input}: ${expected} ${fragment}`, () => expectError(run, expected, fragment));
+  }
+});
+
+/** The node's own lines: [input, run(t), expected, message fragment], as in the table. */
+const NODE_CASES = [
+  ['subsurfaceScattering()', (t) => t.NODE.subsurfaceScattering(), 'TypeError', /scenePass must be a PassNode \(pass\(scene, camera\)\), got undefined/],
+  ['subsurfaceScattering(scene)', (t) => t.NODE.subsurfaceScattering(t.scene), 'TypeError', /scenePass must be a PassNode .*got Scene/],
+  ['options: null', (t) => t.NODE.subsurfaceScattering(pass(t.scene, t.camera), null), 'TypeError', /subsurfaceScattering options must be an object, got null/],
+  ['a misspelt option', (t) => t.NODE.subsurfaceScattering(pass(t.scene, t.camera), { sampels: 17 }), 'TypeError', /unknown option "sampels" \(accepted: worldUnitInMm, profile, method, samples, /],
+  ["a WebGL pipeline's option", (t) => t.NODE.subsurfaceScattering(pass(t.scene, t.camera), { lightDepthSize: 1024 }), 'TypeError', /unknown option "lightDepthSize"/],
+  ["method: 'marginal' (WebGL only)", (t) => t.make({ method: 'marginal' }), 'RangeError', /method 'marginal' is not available on the node \(only 'footprint'/],
+  ["method = 'dense'", (t) => { t.sss.method = 'dense'; }, 'RangeError', /method 'dense' is not available on the node/],
+  ["debugView = 'thickness' (needs transmittance)", (t) => { t.sss.debugView = 'thickness'; }, 'RangeError', /view 'thickness' needs transmittance, which the node does not have yet/],
+  ["scattering = 'no'", (t) => { t.sss.scattering = 'no'; }, 'TypeError', /SubsurfaceScatteringNode\.scattering must be a boolean \(true or false\), got "no"/],
+  ['subsurfaceMaterial(null)', (t) => t.NODE.subsurfaceMaterial(null), 'TypeError', /subsurfaceMaterial: material must be a THREE\.MeshStandardMaterial or MeshPhysicalMaterial \(or its node version\), got null/],
+  ['subsurfaceMaterial(a MeshBasicMaterial)', (t) => t.NODE.subsurfaceMaterial(new t.THREE.MeshBasicMaterial()), 'TypeError', /material must be .*got MeshBasicMaterial/],
+  ['subsurfaceMaterial(material, null)', (t) => t.NODE.subsurfaceMaterial(t.material, null), 'TypeError', /subsurfaceMaterial options must be an object, got null/],
+  ['subsurfaceMaterial(material, { widthmm })', (t) => t.NODE.subsurfaceMaterial(t.material, { widthmm: 2 }), 'TypeError', /subsurfaceMaterial options: unknown option "widthmm" \(accepted: widthMm\)/],
+  ["material.widthMm = 'wide'", (t) => { t.NODE.subsurfaceMaterial(t.material).widthMm = 'wide'; }, 'TypeError', /widthMm must be a finite number, got "wide"/],
+];
+
+describe("the node's own bad inputs", () => {
+  for (const [input, run, expected, fragment] of NODE_CASES) {
+    it(`${input}: ${expected} ${fragment}`, () => expectError(run, expected, fragment));
+  }
+
+  it('takes what the table lets through: a good node and material, no error', () => {
+    const t = nodeFixture();
+    try {
+      const node = t.make({ profile: 'skinBurley', samples: 17, strength: [1, 0.5, 0.25], followSurface: 'lerp', depthThresholdMm: 3, foreshortening: false });
+      Object.assign(node, { samples: 'auto', profile: 'marble' });
+      expect(node.profile.name).toBe('marble');
+      const skin = t.NODE.subsurfaceMaterial(new t.THREE.MeshPhysicalMaterial({ clearcoat: 1 }), { widthMm: 2 });
+      expect(skin.isSubsurfaceNodeMaterial && skin.isMeshPhysicalNodeMaterial).toBe(true);
+      expect(skin.widthMm).toBe(2);
+    } finally {
+      t.dispose();
+    }
+  });
+});
