@@ -42,9 +42,10 @@ const surfaceMaterial = () => new ShaderMaterial({
  * Opens a scene at width × height with the light at (azimuth, elevation) degrees.
  * @param {{ width: number, height: number, lightAzimuthDeg?: number, lightElevationDeg?: number, widthMm?: number, atlasSize?: number, density?: number, view?: number[]|null, scene?: 'head'|'slab' }} o
  *   view: [x, y, z, targetX, targetY, targetZ, fovDeg] for another camera than the bench's (a close-up);
- *   density: the truth's samples per area (1: bench/surfaceTruth/scatter.js's rule)
+ *   density: the truth's samples per area (1: bench/surfaceTruth/scatter.js's rule); truthLight:
+ *   the truth computed before for the same configuration (truthLight()), instead of computing it
  */
-async function open({ width, height, lightAzimuthDeg = 0, lightElevationDeg = 0, widthMm = 1, atlasSize = 2048, density = 1, view = null, scene = 'head' }) {
+async function open({ width, height, lightAzimuthDeg = 0, lightElevationDeg = 0, widthMm = 1, atlasSize = 2048, density = 1, view = null, scene = 'head', truthLight = null }) {
   close();
   const renderer = new WebGLRenderer({ antialias: false });
   renderer.setPixelRatio(1);
@@ -75,7 +76,9 @@ async function open({ width, height, lightAzimuthDeg = 0, lightElevationDeg = 0,
   session.surface = surface;
   session.unscattered = unscattered.diffuse;
   session.triangles = trianglesOf(mesh, built.worldUnitInMm);
-  const truth = await truthAt({ atlasSize, density });
+  // truthLight: a truth computed before for this configuration (its light per pixel, as truthLight() gives it).
+  const truth = truthLight ? { light: Float64Array.from(truthLight), cached: true } : await truthAt({ atlasSize, density });
+  if (truth.light.length !== 3 * pixels.length) throw new RangeError(`open: truthLight must hold 3 × ${pixels.length} values, got ${truth.light.length}`);
   const { light } = truth;
   session.truth = { pixels, light };
   // Scattering moves light, it does not make it: over the whole view the truth keeps about the
@@ -367,4 +370,7 @@ async function images(setting) {
   return { truth: await toPng(truthImage), unscattered: await toPng(unscattered), setting: await toPng(scattered) };
 }
 
-window.surfaceTruthBench = { open, measure, truthUncertainty, images, costs, close };
+/** The session's truth, rgb per subsurface pixel (in the order of the pixels), to be saved and given back to open. */
+const truthLight = () => Array.from(session.truth.light);
+
+window.surfaceTruthBench = { open, measure, truthUncertainty, images, costs, truthLight, close };

@@ -13,6 +13,7 @@ const root = join(dirname(fileURLToPath(import.meta.url)), '../..');
 const quick = process.argv.includes('--quick');
 const resultsPath = join(root, 'bench/results/surface-truth.json');
 const markdownPath = join(root, 'docs/SURFACE-TRUTH.md');
+const truthDirectory = join(root, 'bench/results/tmp/surface-truth'); // not committed: 1 MB per view
 if (process.argv.includes('--report')) { // the markdown again from the last results
   await writeFile(markdownPath, surfaceTruthMarkdown(JSON.parse(await readFile(resultsPath, 'utf8'))));
   process.exit(0);
@@ -75,6 +76,11 @@ const line = (relative) => Object.entries(relative).map(([k, v]) => `${k} ${v ==
 async function measureConfiguration(page, name, options, settingNames, withCost = false) {
   const info = await page.evaluate((o) => window.surfaceTruthBench.open(o), { ...view, atlasSize: ATLAS, ...options });
   info.view = { width: options.width ?? view.width, height: options.height ?? view.height };
+  // The truth kept for measuring other settings against it later (bench/surfaceTruth/variants.js).
+  if (!quick) {
+    await mkdir(truthDirectory, { recursive: true });
+    await writeFile(join(truthDirectory, `${fileName(name)}.json`), JSON.stringify({ name, options: { ...view, atlasSize: ATLAS, ...options }, light: await page.evaluate(() => window.surfaceTruthBench.truthLight()) }));
+  }
   results.webgl ??= info.webgl;
   console.log(`${name}: truth in ${(info.truthMs / 1000).toFixed(1)} s (${info.lightReads} light reads: ${Object.entries(info.readShares).map(([k, v]) => `${k} ${(100 * v).toFixed(1)} %`).join(', ')}); truth / unscattered ${info.truthOverUnscattered.map((v) => v.toFixed(4)).join(', ')}`);
   const convergence = [];
@@ -93,8 +99,11 @@ async function measureConfiguration(page, name, options, settingNames, withCost 
   let cost = null;
   if (withCost) {
     const timed = SETTINGS.filter(([n]) => settingNames.includes(n) && n !== 'none');
-    cost = await page.evaluate((list, o) => window.surfaceTruthBench.costs(list, o), timed, COST_ROUNDS);
-    console.log(`  SSS ms (median of ${COST_ROUNDS.rounds} interleaved rounds): ${Object.entries(cost).map(([k, v]) => `${k} ${v.toFixed(1)}`).join(', ')}`);
+    cost = await page.evaluate((list, o) => window.surfaceTruthBench.costs(list, o), timed, COST_ROUNDS).catch((error) => {
+      console.log(`  SSS cost not measured: ${error.message}`);
+      return null;
+    });
+    if (cost) console.log(`  SSS ms (median of ${COST_ROUNDS.rounds} interleaved rounds): ${Object.entries(cost).map(([k, v]) => `${k} ${v.toFixed(1)}`).join(', ')}`);
   }
   const images = await page.evaluate(() => window.surfaceTruthBench.images({}));
   for (const [k, v] of Object.entries(images)) await png(`image-${fileName(name)}-${k}`, v);
