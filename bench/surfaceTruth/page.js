@@ -229,6 +229,27 @@ function relativeByRegion(valueAt) {
 }
 
 /**
+ * Per region: the mean of value − truth per channel, over the mean truth (R, G, B): whether a
+ * setting is too dark (negative) or too bright there, and in which colour.
+ * @param {(q: number, c: number) => number} valueAt query q's channel c
+ */
+function biasByRegion(valueAt) {
+  const { truth, regions } = session;
+  const n = REGION_NAMES.length;
+  const difference = new Float64Array(3 * (n + 1));
+  const sum = new Float64Array(3 * (n + 1));
+  truth.pixels.forEach((i, q) => {
+    for (const r of [regions[i], n]) {
+      for (let c = 0; c < 3; c++) {
+        difference[3 * r + c] += valueAt(q, c) - truth.light[3 * q + c];
+        sum[3 * r + c] += truth.light[3 * q + c];
+      }
+    }
+  });
+  return Object.fromEntries([...REGION_NAMES, 'all'].map((name, r) => [name, [0, 1, 2].map((c) => difference[3 * r + c] / sum[3 * r + c])]));
+}
+
+/**
  * How far the truth itself moves with its sampling: the truth at another density or atlas size
  * ({ density, atlasSize }, as truthAt) against the session's, in the same measure as a setting's
  * error. A setting's error below this is within the truth's own uncertainty.
@@ -356,7 +377,7 @@ async function measure(setting, { heatMapMax = 0.05 } = {}) {
     for (let c = 0; c < 3; c++) absolute[i] += Math.abs(scattered[4 * i + c] - truth.light[3 * q + c]);
   });
   const relative = relativeByRegion((q, c) => scattered[4 * truth.pixels[q] + c]);
-  return { relative, heatMap: await heatMap(absolute, width, height, heatMapMax, regions) };
+  return { relative, bias: biasByRegion((q, c) => scattered[4 * truth.pixels[q] + c]), heatMap: await heatMap(absolute, width, height, heatMapMax, regions) };
 }
 
 /** The truth, the unscattered and a setting's light as PNGs (linear → sRGB-ish gamma 2.2). */

@@ -137,11 +137,13 @@ area, and from an atlas of twice the side, against the truth, in the same measur
 The bench's slab (bench/scenes.js) at ${plane.view.width}×${plane.view.height}: a plane facing the camera, a hard-edged disc of light on it.
 There the truth is the exact convolution of the pixels' light, which the dense screen-space
 reference computes too (pixel-exact energies): the dense reference misses ${number(planeBy.dense?.all)} of
-the effect (goal ≤ 0.05), the default ${number(planeBy.default?.all)}.
+the effect (goal ≤ 0.05), the default ${number(planeBy.default?.all)}. (Its "silhouettes" are the image's
+border, where no screen-space method sees the light beyond the frame; "ears" a patch of the plane
+inside the head's ear boxes.)
 
 ${truthSentence(plane)}
 
-${configurationTable(plane, ['all'])}
+${configurationTable(plane, ['all', 'silhouettes', 'rest'])}
 
 ## Part 2's goals
 

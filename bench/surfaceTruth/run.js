@@ -93,7 +93,7 @@ async function measureConfiguration(page, name, options, settingNames, withCost 
   for (const [setting, o] of SETTINGS.filter(([n]) => settingNames.includes(n))) {
     const r = await page.evaluate((x) => window.surfaceTruthBench.measure(x), o);
     if (['default', 'dense'].includes(setting)) await png(`heat-${fileName(name)}-${setting}`, r.heatMap);
-    settings.push({ name: setting, options: o, relative: r.relative });
+    settings.push({ name: setting, options: o, relative: r.relative, bias: r.bias });
     console.log(`  ${setting.padEnd(26)} ${line(r.relative)}`);
   }
   let cost = null;

@@ -2,7 +2,8 @@
 // measures settings against truths `npm run bench:truth` computed and kept
 // (bench/results/tmp/surface-truth/<view>.json), without computing them again: for variants of the
 // library tried on a patched tree (a depth rule in the blur's shader, say), in a few minutes
-// instead of the whole bench. Prints each setting's error by region; writes nothing.
+// instead of the whole bench. Prints each setting's error by region and its bias (mean setting −
+// truth over mean truth, per channel) where screen space errs; writes nothing.
 import { readFile } from 'node:fs/promises';
 import { join, dirname } from 'node:path';
 import { fileURLToPath } from 'node:url';
@@ -25,8 +26,10 @@ try {
     await page.evaluate((o) => window.surfaceTruthBench.open(o), { ...cached.options, truthLight: cached.light });
     console.log(cached.name);
     for (const [name, options] of settings) {
-      const { relative } = await page.evaluate((o) => window.surfaceTruthBench.measure(o), options);
+      const { relative, bias } = await page.evaluate((o) => window.surfaceTruthBench.measure(o), options);
       console.log(`  ${name.padEnd(26)} ${Object.entries(relative).map(([k, v]) => `${k} ${v == null ? '—' : v.toFixed(3)}`).join('  ')}`);
+      // Too dark or too bright, per channel: mean(setting − truth) / mean(truth).
+      console.log(`  ${''.padEnd(26)} bias R G B: ${['creases', 'eyes', 'lips', 'all'].map((k) => `${k} ${bias[k].map((v) => (v == null ? '—' : `${(100 * v).toFixed(1)} %`)).join(' ')}`).join('  ')}`);
     }
     if (page.problems.length) throw new Error(`the page reported problems:\n${page.problems.join('\n')}`);
     await page.close();
