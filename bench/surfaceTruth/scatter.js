@@ -21,7 +21,8 @@
 // footprint is kept local there, wᵢ E(x): the light is one value across that pixel, and the
 // Gaussian's mass outside the pixel is below 4 · erfc(2/√2)/2 ≈ 9 % of its weight (half a pixel
 // is 2σ), a share of the light of the pixel's neighbours that the pixel keeps instead. (At 0.2
-// the eye close-up's narrowest Gaussian would be summed over pieces of 0.08 mm: 12 million.)
+// the eye close-up's narrowest Gaussian would be summed over pieces of 0.08 mm: 12 million.) The
+// rule does not change with the samples' density: the bench's density check moves the sums only.
 //
 // The sums run piece by piece (streamed, nothing stored): each piece at a Gaussian's size is
 // splatted to the query points within the Gaussian's cut-off radius.
@@ -176,7 +177,8 @@ export function triangleArea(a, b, c) {
  * @param {[number, number[]][]} o.gaussians the profile, [varianceMm2, rgb weights]
  * @param {number} [o.widthMm=1] millimetres of material per profile millimetre
  * @param {number} [o.lightEdgeMm] the longest edge of a piece whose light is read at its centroid
- * @param {number} [o.density=1] samples per area relative to the rule above (2: √2 shorter edges, twice the samples)
+ * @param {number} [o.density=1] samples per area relative to the rule above (2: √2 shorter edges,
+ *   twice the samples); the local rule does not change with it (the pixels' light is what it is)
  * @returns {{ light: Float64Array, localShare: number[], pieces: number[], lightReads: number }} per
  *   Gaussian: the share of query points where it was kept local, and the pieces summed
  */
@@ -189,7 +191,7 @@ export function surfaceTruth({ triangles, lightAt, queryMm, queryLight, queryPix
   const grids = scaled.map((g) => {
     const members = [];
     for (let q = 0; q < queries; q++) {
-      if (g.sigma >= (LOCAL_SIGMA_PER_PIXEL * queryPixelMm[q]) / Math.sqrt(density) || !(queryPixelMm[q] > 0)) { members.push(q); continue; }
+      if (g.sigma >= LOCAL_SIGMA_PER_PIXEL * queryPixelMm[q] || !(queryPixelMm[q] > 0)) { members.push(q); continue; }
       for (let c = 0; c < 3; c++) light[3 * q + c] += g.w[c] * queryLight[3 * q + c];
     }
     localShare.push(1 - members.length / queries);
