@@ -116,35 +116,44 @@ async function measureConfiguration(page, name, options, settingNames, withCost 
 const onlyArgument = process.argv.find((a) => a.startsWith('--only='));
 const only = onlyArgument ? onlyArgument.slice('--only='.length).split(',') : null;
 const wanted = (key) => !only || only.includes(key);
+/**
+ * Writes the results so far (after each configuration: a part cut short keeps what it measured),
+ * merged into those there when only some parts run; the markdown once the plane and a view are in.
+ */
+async function save() {
+  results.seconds = (Date.now() - started) / 1000;
+  if (quick) return;
+  let merged = results;
+  if (only) { // the configurations in the order of a whole run
+    const before = JSON.parse(await readFile(resultsPath, 'utf8').catch(() => 'null'));
+    if (before?.views) {
+      const order = VIEWS.flatMap((v) => LIGHTS.map((l) => `${v.name}, ${l.name} light`));
+      const byName = new Map([...before.views, ...results.views].map((c) => [c.name, c]));
+      merged = { ...results, views: order.filter((n) => byName.has(n)).map((n) => byName.get(n)), plane: results.plane ?? before.plane };
+    }
+  }
+  await writeFile(resultsPath, `${JSON.stringify(merged, null, 1)}\n`);
+  if (merged.plane && merged.views.length) await writeFile(markdownPath, surfaceTruthMarkdown(merged));
+}
+
 try {
   const page = await openReadyPage(session.browser, `${session.baseUrl}/bench/surfaceTruth/index.html`,
     { width: view.width, height: view.height, readyExpr: 'window.surfaceTruthBench' });
-  if (wanted('plane')) results.plane = await measureConfiguration(page, 'plane', { scene: 'slab', ...PLANE_VIEW }, PLANE_SETTINGS);
+  if (wanted('plane')) {
+    results.plane = await measureConfiguration(page, 'plane', { scene: 'slab', ...PLANE_VIEW }, PLANE_SETTINGS);
+    await save();
+  }
   for (const v of quick ? VIEWS.slice(0, 1) : VIEWS) {
     for (const light of quick ? LIGHTS.slice(0, 1) : LIGHTS) {
       if (!wanted(`${v.key}-${light.name}`)) continue;
       const settingNames = quick ? QUICK_SETTINGS : SETTINGS.map(([n]) => n);
       // The cost in the same page and rounds, once per view (the light hardly changes it).
       results.views.push(await measureConfiguration(page, `${v.name}, ${light.name} light`, { view: v.view, viewName: v.name, lightName: light.name, ...light }, settingNames, light === LIGHTS[0]));
+      await save();
     }
   }
   if (page.problems.length) throw new Error(`the page reported problems:\n${page.problems.join('\n')}`);
 } finally {
   await session.close();
-}
-results.seconds = (Date.now() - started) / 1000;
-if (!quick) {
-  if (only) { // merged into the results there, the configurations in the order of a whole run
-    const before = JSON.parse(await readFile(resultsPath, 'utf8').catch(() => 'null'));
-    if (before?.views) {
-      const order = VIEWS.flatMap((v) => LIGHTS.map((l) => `${v.name}, ${l.name} light`));
-      const byName = new Map([...before.views, ...results.views].map((c) => [c.name, c]));
-      results.views = order.filter((n) => byName.has(n)).map((n) => byName.get(n));
-      results.plane ??= before.plane;
-      results.seconds += before.seconds ?? 0;
-    }
-  }
-  await writeFile(resultsPath, `${JSON.stringify(results, null, 1)}\n`);
-  if (results.plane && results.views.length) await writeFile(markdownPath, surfaceTruthMarkdown(results));
 }
 console.log(`${results.seconds.toFixed(0)} s${quick ? ' (quick: nothing written but the images)' : ''}`);
