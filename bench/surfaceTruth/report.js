@@ -26,12 +26,18 @@ function configurationTable(configuration, regions = REGIONS) {
   return table(['setting', ...regions.map((r) => `${r} (${pixels(r)} px)`), ...(cost ? ['SSS ms'] : [])], rows);
 }
 
-/** How the truth was made for one configuration, in a sentence. */
+/** How the truth was made for one configuration, in a sentence (a truth kept from an earlier run of the same code says less). */
 function truthSentence(c) {
-  const reads = Object.entries(c.readShares).map(([k, v]) => `${k} ${(100 * v).toFixed(1)} %`).join(', ');
-  return `Truth in ${(c.truthMs / 1000).toFixed(1)} s from ${c.lightReads.toLocaleString('en')} light reads on pieces of at most ${c.lightEdgeMm.toFixed(2)} mm (${reads}); `
-    + `Gaussians kept local at ${c.localShare.map((v) => `${(100 * v).toFixed(0)} %`).join(', ')} of the pixels (narrowest first); `
-    + `truth over unscattered light, R G B: ${c.truthOverUnscattered.map((v) => v.toFixed(4)).join(', ')}.`;
+  const parts = [];
+  if (c.truthMs != null) {
+    const reads = c.readShares ? ` (${Object.entries(c.readShares).map(([k, v]) => `${k} ${(100 * v).toFixed(1)} %`).join(', ')})` : '';
+    const edge = c.lightEdgeMm != null ? ` on pieces of at most ${c.lightEdgeMm.toFixed(2)} mm` : '';
+    parts.push(`Truth in ${(c.truthMs / 1000).toFixed(1)} s${c.cachedTruth ? ' (in an earlier run of the same code, kept)' : ''} from ${c.lightReads.toLocaleString('en')} light reads${edge}${reads}`);
+  }
+  if (c.localShare) parts.push(`Gaussians kept local at ${c.localShare.map((v) => `${(100 * v).toFixed(0)} %`).join(', ')} of the pixels (narrowest first)`);
+  parts.push(`truth over unscattered light, R G B: ${c.truthOverUnscattered.map((v) => v.toFixed(4)).join(', ')}`);
+  if (!c.convergence.length) parts.push('its convergence checks not run for this view (time on a shared machine); see the other views');
+  return `${parts.join('; ')}.`;
 }
 
 /**
@@ -45,7 +51,7 @@ export function surfaceTruthSummary(results) {
   const rows = results.views.flatMap((c) => [
     ...['default', 'dense', 'reference17'].map((name) => c.settings.find((s) => s.name === name)).filter(Boolean)
       .map((s) => [c.name, s.name, ...regions.map((r) => number(s.relative[r]))]),
-    [c.name, '*the truth\'s own convergence (most moved)*', ...regions.map((r) => `*${number(Math.max(...c.convergence.map((k) => k.relative[r] ?? 0)))}*`)],
+    ...(c.convergence.length ? [[c.name, '*the truth\'s own convergence (most moved)*', ...regions.map((r) => `*${number(Math.max(...c.convergence.map((k) => k.relative[r] ?? 0)))}*`)]] : []),
   ]);
   return table(['view, light', 'setting', ...regions], rows);
 }
@@ -80,7 +86,7 @@ ${truthSentence(c)}
 
 ${configurationTable(c)}
 
-The default misses ${number(by.default.all)} of the effect over all pixels, the dense screen-space reference ${number(by.dense?.all)}; the truth's own convergence moved it by at most ${number(worstMove(c))} (goal ≤ 0.05).
+The default misses ${number(by.default.all)} of the effect over all pixels, the dense screen-space reference ${number(by.dense?.all)}${c.convergence.length ? `; the truth's own convergence moved it by at most ${number(worstMove(c))} (goal ≤ 0.05)` : ''}.
 
 | truth | default | unscattered |
 |---|---|---|

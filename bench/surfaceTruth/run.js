@@ -74,17 +74,22 @@ const line = (relative) => Object.entries(relative).map(([k, v]) => `${k} ${v ==
 
 /** Opens one configuration, checks its truth's convergence and measures `settings` against it. */
 async function measureConfiguration(page, name, options, settingNames, withCost = false) {
-  const info = await page.evaluate((o) => window.surfaceTruthBench.open(o), { ...view, atlasSize: ATLAS, ...options });
+  const cachePath = join(truthDirectory, `${fileName(name)}.json`);
+  const cached = useCache ? JSON.parse(await readFile(cachePath, 'utf8').catch(() => 'null')) : null;
+  const info = await page.evaluate((o) => window.surfaceTruthBench.open(o), { ...view, atlasSize: ATLAS, ...options, truthLight: cached?.light ?? null });
   info.view = { width: options.width ?? view.width, height: options.height ?? view.height };
-  // The truth kept for measuring other settings against it later (bench/surfaceTruth/variants.js).
-  if (!quick) {
+  if (cached) {
+    Object.assign(info, cached.info ?? {}, { cachedTruth: true });
+    console.log(`${name}: the truth kept from an earlier run (${cachePath})`);
+  } else if (!quick) { // kept for measuring other settings against it later (bench/surfaceTruth/variants.js)
     await mkdir(truthDirectory, { recursive: true });
-    await writeFile(join(truthDirectory, `${fileName(name)}.json`), JSON.stringify({ name, options: { ...view, atlasSize: ATLAS, ...options }, light: await page.evaluate(() => window.surfaceTruthBench.truthLight()) }));
+    const { webgl: _, ...kept } = info;
+    await writeFile(cachePath, JSON.stringify({ name, options: { ...view, atlasSize: ATLAS, ...options }, info: kept, light: await page.evaluate(() => window.surfaceTruthBench.truthLight()) }));
   }
   results.webgl ??= info.webgl;
   console.log(`${name}: truth in ${(info.truthMs / 1000).toFixed(1)} s (${info.lightReads} light reads: ${Object.entries(info.readShares).map(([k, v]) => `${k} ${(100 * v).toFixed(1)} %`).join(', ')}); truth / unscattered ${info.truthOverUnscattered.map((v) => v.toFixed(4)).join(', ')}`);
   const convergence = [];
-  for (const check of quick ? CHECKS.slice(0, 1) : CHECKS) {
+  for (const check of quick ? CHECKS.slice(0, 1) : CHECKS.filter((c) => checks.includes(c.name))) {
     const moved = await page.evaluate((o) => window.surfaceTruthBench.truthUncertainty(o), check);
     convergence.push({ ...check, relative: moved.relative, truthMs: moved.truthMs });
     console.log(`  truth at ${check.name} ×2 against it: ${line(moved.relative)}`);
@@ -116,6 +121,11 @@ async function measureConfiguration(page, name, options, settingNames, withCost 
 const onlyArgument = process.argv.find((a) => a.startsWith('--only='));
 const only = onlyArgument ? onlyArgument.slice('--only='.length).split(',') : null;
 const wanted = (key) => !only || only.includes(key);
+// `--cached`: a configuration's truth from an earlier run where one was kept (its convergence
+// checks are computed again); `--checks=density,atlas` (the default): which checks run.
+const useCache = process.argv.includes('--cached');
+const checksArgument = process.argv.find((a) => a.startsWith('--checks='));
+const checks = checksArgument ? checksArgument.slice('--checks='.length).split(',') : CHECKS.map((c) => c.name);
 /**
  * Writes the results so far (after each configuration: a part cut short keeps what it measured),
  * merged into those there when only some parts run; the markdown once the plane and a view are in.
