@@ -5,20 +5,9 @@
 import { describe, it, expect } from 'vitest';
 import { forEachPiece, surfaceTruth, triangleArea, LOCAL_SIGMA_PER_PIXEL } from '../../bench/surfaceTruth/scatter.js';
 import { GAUSSIANS, erfc } from '../oracle/closedForms.js';
+import { mulberry32 } from '../../demo/seededRandom.js';
 
 const SKIN = GAUSSIANS.skin;
-
-/** A seeded uniform generator in [0, 1) (mulberry32). */
-function random(seed) {
-  let a = seed >>> 0;
-  return () => {
-    a = (a + 0x6d2b79f5) >>> 0;
-    let t = a;
-    t = Math.imul(t ^ (t >>> 15), t | 1);
-    t ^= t + Math.imul(t ^ (t >>> 7), t | 61);
-    return ((t ^ (t >>> 14)) >>> 0) / 4294967296;
-  };
-}
 
 /**
  * A plane z = 0 from −half to half mm, in cells of `cellMm` split in two triangles, inner corners
@@ -26,7 +15,7 @@ function random(seed) {
  */
 function jitteredPlane(cellMm, halfMm, seed = 1) {
   const n = Math.round((2 * halfMm) / cellMm);
-  const next = random(seed);
+  const next = mulberry32(seed);
   const corner = [];
   for (let j = 0; j <= n; j++) for (let i = 0; i <= n; i++) {
     const inner = i > 0 && j > 0 && i < n && j < n;
