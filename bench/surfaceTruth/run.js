@@ -1,8 +1,11 @@
 // `npm run bench:truth`: each method's blurred light against the surface-space truth (the head's
-// scattering summed over its own surface in float64, bench/surfaceTruth/scatter.js), front-lit and
-// back-lit, per region; writes bench/results/surface-truth.json, heat maps and images under
-// docs/surface-truth/ and docs/SURFACE-TRUTH.md (`--report`: the markdown again from the JSON). About 2 minutes per light on SwiftShader (the
-// truth itself is ~20 s of float64 in the page); `--quick`: the front light and three settings.
+// scattering summed over its own surface in float64, bench/surfaceTruth/scatter.js), at the head
+// view and an eye close-up, front-lit and back-lit, per region, beside the truth's convergence, and
+// on a flat plane against the exact convolution; writes bench/results/surface-truth.json, heat maps
+// and images under docs/surface-truth/ and docs/SURFACE-TRUTH.md (`--report`: the markdown again
+// from the JSON). Each truth is 3-6 minutes of float64 in the page on a shared 2-core machine (its
+// density check twice that), the whole run about an hour there: `--only`, `--cached` and
+// `--checks` (below) run it in parts; `--quick`: the plane and the head front-lit at 320×180.
 import { mkdir, readFile, writeFile } from 'node:fs/promises';
 import { join, dirname } from 'node:path';
 import { fileURLToPath } from 'node:url';
@@ -62,6 +65,20 @@ const COST_ROUNDS = { rounds: 3, reruns: 1 };
 const PLANE_SETTINGS = ['default', 'dense', 'none'];
 const PLANE_VIEW = QUICK_VIEW;
 
+if (process.argv.includes('--assemble')) { // the results from the parts' own copies (bench/results/tmp/surface-truth/*.result.json)
+  const { readdir } = await import('node:fs/promises');
+  const base = JSON.parse(await readFile(resultsPath, 'utf8'));
+  const parts = await Promise.all((await readdir(truthDirectory)).filter((f) => f.endsWith('.result.json')).map(async (f) => JSON.parse(await readFile(join(truthDirectory, f), 'utf8'))));
+  const order = VIEWS.flatMap((v) => LIGHTS.map((l) => `${v.name}, ${l.name} light`));
+  const named = parts.map((c) => (c.viewName ? { ...c, name: `${c.viewName}, ${c.lightName} light` } : c)); // parts written before the name fix
+  const byName = new Map([...(base.views ?? []), ...named].map((c) => [c.name, c]));
+  const assembled = { ...base, plane: byName.get('plane') ?? base.plane, views: order.filter((n) => byName.has(n)).map((n) => byName.get(n)) };
+  await writeFile(resultsPath, `${JSON.stringify(assembled, null, 1)}\n`);
+  await writeFile(markdownPath, surfaceTruthMarkdown(assembled));
+  console.log(`assembled: the plane ${assembled.plane ? 'and ' : 'missing, '}${assembled.views.map((c) => c.name).join('; ')}`);
+  process.exit(0);
+}
+
 const session = await startBrowser({ protocolTimeout: 1_800_000 });
 const out = join(root, 'docs/surface-truth');
 await mkdir(out, { recursive: true });
@@ -113,7 +130,9 @@ async function measureConfiguration(page, name, options, settingNames, withCost 
   const images = await page.evaluate(() => window.surfaceTruthBench.images({}));
   for (const [k, v] of Object.entries(images)) await png(`image-${fileName(name)}-${k}`, v);
   const { webgl: _, ...kept } = info;
-  return { name, ...options, ...kept, convergence, settings, cost };
+  const configuration = { ...options, ...kept, name, convergence, settings, cost }; // name last: a light's options have one too
+  if (!quick) await writeFile(join(truthDirectory, `${fileName(name)}.result.json`), JSON.stringify(configuration)); // the part's own copy
+  return configuration;
 }
 
 // `--only a,b`: only the configurations named (plane, head-front, head-back, eye-front, eye-back),
@@ -143,6 +162,7 @@ async function save() {
     }
   }
   await writeFile(resultsPath, `${JSON.stringify(merged, null, 1)}\n`);
+  console.log(`  results: the plane ${merged.plane ? 'and ' : 'not yet, '}${merged.views.map((c) => c.name).join('; ')}`);
   if (merged.plane && merged.views.length) await writeFile(markdownPath, surfaceTruthMarkdown(merged));
 }
 
