@@ -65,12 +65,19 @@ const COST_ROUNDS = { rounds: 3, reruns: 1 };
 const PLANE_SETTINGS = ['default', 'dense', 'none'];
 const PLANE_VIEW = QUICK_VIEW;
 
+const fileName = (text) => text.replace(/[^a-z0-9]+/gi, '-');
 if (process.argv.includes('--assemble')) { // the results from the parts' own copies (bench/results/tmp/surface-truth/*.result.json)
   const { readdir } = await import('node:fs/promises');
   const base = JSON.parse(await readFile(resultsPath, 'utf8'));
   const parts = await Promise.all((await readdir(truthDirectory)).filter((f) => f.endsWith('.result.json')).map(async (f) => JSON.parse(await readFile(join(truthDirectory, f), 'utf8'))));
   const order = VIEWS.flatMap((v) => LIGHTS.map((l) => `${v.name}, ${l.name} light`));
   const named = parts.map((c) => (c.viewName ? { ...c, name: `${c.viewName}, ${c.lightName} light` } : c)); // parts written before the name fix
+  // A part's convergence checks run apart (<view>.convergence.json: [{ name, density, atlasSize, relative }]) where it ran none.
+  for (const c of named) {
+    if (c.convergence?.length) continue;
+    const apart = JSON.parse(await readFile(join(truthDirectory, `${fileName(c.name)}.convergence.json`), 'utf8').catch(() => 'null'));
+    if (apart) c.convergence = apart;
+  }
   const byName = new Map([...(base.views ?? []), ...named].map((c) => [c.name, c]));
   const assembled = { ...base, plane: byName.get('plane') ?? base.plane, views: order.filter((n) => byName.has(n)).map((n) => byName.get(n)) };
   await writeFile(resultsPath, `${JSON.stringify(assembled, null, 1)}\n`);
@@ -83,7 +90,6 @@ const session = await startBrowser({ protocolTimeout: 1_800_000 });
 const out = join(root, 'docs/surface-truth');
 await mkdir(out, { recursive: true });
 const png = (name, data) => writeFile(join(out, `${name}.png`), Buffer.from(data, 'base64'));
-const fileName = (text) => text.replace(/[^a-z0-9]+/gi, '-');
 const view = quick ? QUICK_VIEW : VIEW;
 const started = Date.now();
 const results = { view, views: [], plane: null, webgl: null, date: new Date().toISOString() };
