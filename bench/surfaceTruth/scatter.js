@@ -187,7 +187,7 @@ export function surfaceTruth({ triangles, lightAt, queryMm, queryLight, queryPix
   const queries = queryMm.length / 3;
   const light = new Float64Array(3 * queries);
   const localShare = [];
-  // Per Gaussian: the query points that sum it (a grid whose 27 cells hold all within reach).
+  // Per Gaussian: the query points that sum it (a grid of them), the others keeping it local.
   const grids = scaled.map((g) => {
     const members = [];
     for (let q = 0; q < queries; q++) {
@@ -197,22 +197,36 @@ export function surfaceTruth({ triangles, lightAt, queryMm, queryLight, queryPix
     localShare.push(1 - members.length / queries);
     return members.length ? pointGrid(queryMm, members, g.radiusMm / 2) : null;
   });
-  const summed = scaled.map((g, m) => m).filter((m) => grids[m]);
-  const lightEdge = lightEdgeMm / Math.sqrt(density);
-  const pieces = scaled.map(() => 0);
-  let lightReads = 0;
-  // Whether a point summing Gaussian m may lie within its radius + 2 edges of the piece's centroid
-  // (a child's centroid lies within one edge of its parent's: a piece reached is never missed),
-  // asked of this Gaussian's grid or, for a large piece, of the first coarser one (its points
-  // include these) whose cells are at least a third of the reach.
+  const { pieces, lightReads } = sumOverPieces({ triangles, lightAt, queryMm, scaled, grids, light, lightEdge: lightEdgeMm / Math.sqrt(density) });
+  return { light, localShare, pieces, lightReads };
+}
+
+/**
+ * near(m, piece): whether a point summing Gaussian m may lie within its radius + 2 edges of the
+ * piece's centroid (a child's centroid lies within one edge of its parent's: a piece reached is
+ * never missed), asked of this Gaussian's grid or, for a large piece, of the first coarser one
+ * (its points include these) whose cells are at least a third of the reach.
+ */
+function nearTest(scaled, grids, summed) {
   const askers = scaled.map((g) => summed.filter((k) => scaled[k].sigma >= g.sigma).map((k) => grids[k]));
-  const near = (m, piece) => {
+  return (m, piece) => {
     const reach = scaled[m].radiusMm + 2 * piece.edgeMm;
     const list = askers[m];
     let grid = list[list.length - 1];
     for (const candidate of list) if (candidate.cellMm * 3 >= reach) { grid = candidate; break; }
     return grid.any(piece.centroid[0], piece.centroid[1], piece.centroid[2], reach);
   };
+}
+
+/**
+ * Adds each summed Gaussian's sum over the mesh's pieces to `light` at the query points that sum
+ * it (`grids[m]`, null where none does); returns the pieces summed per Gaussian and the light reads.
+ */
+function sumOverPieces({ triangles, lightAt, queryMm, scaled, grids, light, lightEdge }) {
+  const summed = scaled.map((g, m) => m).filter((m) => grids[m]);
+  const pieces = scaled.map(() => 0);
+  let lightReads = 0;
+  const near = nearTest(scaled, grids, summed);
   const uv = [0, 0];
   const none = [0, 0, 0];
   // One splat: the piece's light e at (x, y, z) into the points within Gaussian m's radius.
@@ -275,5 +289,5 @@ export function surfaceTruth({ triangles, lightAt, queryMm, queryLight, queryPix
       }
     },
   });
-  return { light, localShare, pieces, lightReads };
+  return { pieces, lightReads };
 }
