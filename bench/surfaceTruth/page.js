@@ -7,7 +7,7 @@
 // see. That light leaves the pipeline's transmittance out: the truth makes its own, light entering
 // the far side of a thin part reaching the near side through it (3D distances), so a method's
 // transmittance is measured against it, not built into it. Everything goes through the library's
-// public API.
+// public API. (One file over 300 lines: open, the truth, measure, costs and images share one session.)
 import {
   FloatType, NearestFilter, ShaderMaterial, WebGLRenderer, WebGLRenderTarget,
 } from 'three';
