@@ -17,7 +17,7 @@ import { AUTO_SAMPLES, footprintTable } from '/src/internals.js';
 import { ATTACHMENTS } from '/src/2-scene-split/subsurfaceTarget.js';
 import { AUTO_STEP_ERROR, footprintRowOf } from '/src/profiles/footprints.js';
 import { readRenderTargetFloats } from '/dev/readback.js';
-import { GpuStageTimer } from '/dev/gpuTimer.js';
+import { GpuStageTimer, sssStageTimes } from '/dev/gpuTimer.js';
 import { radianceErrors, maskedSsim } from '/dev/metrics.js';
 import { buildScene } from './scenes.js';
 import { drawChart } from './chart.js';
@@ -211,18 +211,6 @@ function timeSssStage(count) {
   return ms;
 }
 
-/** The SSS stage's GPU time of each frame or re-run: blurH + blurV, or dense. */
-function sssTimes(times) {
-  const out = [];
-  let horizontal = 0;
-  for (const { stage, ms } of times) {
-    if (stage === 'blurH') horizontal = ms;
-    else if (stage === 'blurV') out.push(horizontal + ms);
-    else if (stage === 'dense') out.push(ms);
-  }
-  return out;
-}
-
 /**
  * Sets the pipeline to one setting and measures it: its error against the reference of its
  * profile (when `errors`), then its times. Returns the raw times so that the runner can pool the
@@ -270,7 +258,7 @@ async function measure({ kind, profile, method, samples, coverage, frames, sssFr
     const frameMs = timeFrames(frames);
     const sssWallMs = timeSssStage(sssFrames);
     await nextTask();
-    row.times = { frameMs, sssWallMs, gpuMs: sssTimes(await timer.collect()) };
+    row.times = { frameMs, sssWallMs, gpuMs: sssStageTimes(await timer.collect()) };
   } finally {
     timer.recording = false;
   }
@@ -288,7 +276,7 @@ async function timeSss({ count }) {
   try {
     const sssWallMs = timeSssStage(count);
     await nextTask();
-    return { gpuMs: sssTimes(await timer.collect()), sssWallMs };
+    return { gpuMs: sssStageTimes(await timer.collect()), sssWallMs };
   } finally {
     timer.recording = false;
   }

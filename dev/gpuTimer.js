@@ -98,6 +98,18 @@ export class GpuStageTimer {
   }
 }
 
+/** The SSS stage's GPU time of each frame or re-run, from collect()'s times: blurH + blurV, or dense. */
+export function sssStageTimes(times) {
+  const out = [];
+  let horizontal = 0;
+  for (const { stage, ms } of times) {
+    if (stage === 'blurH') horizontal = ms;
+    else if (stage === 'blurV') out.push(horizontal + ms);
+    else if (stage === 'dense') out.push(ms);
+  }
+  return out;
+}
+
 /** The median of a list (NaN when empty). */
 export function median(values) {
   const sorted = [...values].sort((a, b) => a - b);

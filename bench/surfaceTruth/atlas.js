@@ -1,26 +1,16 @@
-// The head's surface in its UV atlas (browser side): every texel of the atlas is one surface
-// sample with its world position, area and diffuse light, whether the camera sees it or not.
-// The light is the pipeline's own: the mesh's material made subsurface by a pipeline of its own,
-// drawn with its vertices placed at their uv instead of their projection, so each texel holds the
-// diffuse light (the shading, shadows and transmittance of the screen pixels) of its surface point.
-import {
-  DoubleSide, FloatType, NearestFilter, ShaderChunk, ShaderMaterial, WebGLRenderTarget,
-} from 'three';
+// The head's diffuse light in its UV atlas (browser side), for the surface points the camera does
+// not see (bench/surfaceTruth/page.js reads the camera's own pixels where it does). The light is
+// the pipeline's own: the mesh's material made subsurface by a pipeline of its own, drawn with its
+// vertices placed at their uv instead of their projection, so each texel holds the diffuse light
+// (the shading and shadows of the screen pixels; transmittance left out, as in the camera's light
+// the truth reads: bench/surfaceTruth/page.js) of its surface point.
+import { DoubleSide, FloatType, ShaderChunk, WebGLRenderTarget } from 'three';
 import { EffectComposer } from 'three/addons/postprocessing/EffectComposer.js';
 import { SubsurfaceScattering } from '/src/index.js';
 import { readRenderTargetFloats } from '/dev/readback.js';
 
 /** Vertices drawn at their uv: the atlas, texel (u, v) ↔ clip (2u − 1, 2v − 1). */
 const AT_UV = 'gl_Position = vec4( uv * 2.0 - 1.0, 0.0, 1.0 );';
-
-/** Position (world units) and area (world units² per texel, from the derivatives of position). */
-const geometryMaterial = () => new ShaderMaterial({
-  side: DoubleSide,
-  vertexShader: `varying vec3 vWorld;
-    void main() { vWorld = ( modelMatrix * vec4( position, 1.0 ) ).xyz; ${AT_UV} }`,
-  fragmentShader: `varying vec3 vWorld;
-    void main() { gl_FragColor = vec4( vWorld, length( cross( dFdx( vWorld ), dFdy( vWorld ) ) ) ); }`,
-});
 
 /**
  * Makes `material` (a clone the caller owns) draw at uv, both faces (a mirrored uv island winds the
@@ -60,8 +50,11 @@ void main() {
   material.customProgramCacheKey = () => 'surface-truth-atlas';
 }
 
+/** A covered texel this many texels away at most stands in for an uncovered one (island borders). */
+const SEARCH_TEXELS = 2;
+
 /**
- * Renders `mesh`'s surface into a size × size atlas.
+ * Renders `mesh`'s diffuse light into a size × size atlas.
  * @param {object} o
  * @param {import('three').WebGLRenderer} o.renderer
  * @param {{ scene, camera, light, worldUnitInMm: number }} o.built the scene as the bench builds it
@@ -69,58 +62,47 @@ void main() {
  * @param {number} o.widthMm
  * @param {number} o.viewHeight the camera's image height, pixels (the textures are read at its mip levels)
  * @param {number} [o.size=2048]
- * @returns {Promise<import('./scatter.js').SurfaceSamples & { texel: Uint32Array }>} covered texels only
- *   (millimetres), each with its index in the atlas
+ * @returns {Promise<{ lightAt: (u: number, v: number, out: number[]) => boolean, size: number }>} the
+ *   light at a uv into out: its texel's, or the nearest covered texel's within SEARCH_TEXELS; false beyond
  */
 export async function renderSurfaceAtlas({ renderer, built, mesh, widthMm, viewHeight, size = 2048 }) {
   const { scene, camera, light, worldUnitInMm } = built;
   const own = { material: mesh.material, frustumCulled: mesh.frustumCulled };
-  const target = new WebGLRenderTarget(size, size, { type: FloatType, minFilter: NearestFilter, magFilter: NearestFilter });
-  const geometry = geometryMaterial();
   const material = own.material.clone();
   // Perspective camera: a pixel spans 2 tan(fov / 2) / height world units per unit of depth.
   drawAtUv(material, { pixelWorldPerDepth: 2 / (camera.projectionMatrix.elements[5] * viewHeight), size });
   const sss = new SubsurfaceScattering({ scene, camera, light, worldUnitInMm, type: FloatType });
   sss.makeSubsurface(material, { widthMm });
   sss.scattering = false; // only the scene split's diffuse light is wanted
+  if (sss.transmittance) sss.transmittance = false;
   const composer = new EffectComposer(renderer, new WebGLRenderTarget(size, size, { type: FloatType }));
   composer.renderToScreen = false;
   composer.addPass(sss);
+  let diffuse;
   try {
     mesh.frustumCulled = false;
-    mesh.material = geometry;
-    renderer.setRenderTarget(target);
-    renderer.setClearColor(0x000000, 0);
-    renderer.clear();
-    renderer.render(mesh, camera);
-    renderer.setRenderTarget(null);
-    const surface = await readRenderTargetFloats(renderer, target);
     mesh.material = material;
     composer.render();
-    const diffuse = await readRenderTargetFloats(renderer, sss.scenePass.renderTarget, 1);
-    let texels = 0;
-    for (let i = 0; i < size * size; i++) if (surface[4 * i + 3] > 0 && diffuse[4 * i + 3] > 0) texels++;
-    const positionMm = new Float64Array(3 * texels);
-    const areaMm2 = new Float64Array(texels);
-    const lightOut = new Float64Array(3 * texels);
-    const texel = new Uint32Array(texels);
-    for (let i = 0, n = 0; i < size * size; i++) {
-      if (!(surface[4 * i + 3] > 0 && diffuse[4 * i + 3] > 0)) continue;
-      for (let a = 0; a < 3; a++) {
-        positionMm[3 * n + a] = surface[4 * i + a] * worldUnitInMm;
-        lightOut[3 * n + a] = diffuse[4 * i + a];
-      }
-      areaMm2[n] = surface[4 * i + 3] * worldUnitInMm * worldUnitInMm;
-      texel[n] = i;
-      n++;
-    }
-    return { positionMm, areaMm2, light: lightOut, texel };
+    diffuse = await readRenderTargetFloats(renderer, sss.scenePass.renderTarget, 1);
   } finally {
     Object.assign(mesh, own);
     sss.dispose();
     composer.dispose();
-    geometry.dispose();
     material.dispose();
-    target.dispose();
   }
+  const covered = (i, j) => i >= 0 && j >= 0 && i < size && j < size && diffuse[4 * (j * size + i) + 3] > 0;
+  const lightAt = (u, v, out) => {
+    const i = Math.min(Math.max(Math.floor(u * size), 0), size - 1);
+    const j = Math.min(Math.max(Math.floor(v * size), 0), size - 1); // GL rows: v up, as the atlas was drawn
+    for (let r = 0; r <= SEARCH_TEXELS; r++) {
+      for (let dj = -r; dj <= r; dj++) for (let di = -r; di <= r; di++) {
+        if (Math.max(Math.abs(di), Math.abs(dj)) !== r || !covered(i + di, j + dj)) continue;
+        const k = 4 * ((j + dj) * size + i + di);
+        out[0] = diffuse[k]; out[1] = diffuse[k + 1]; out[2] = diffuse[k + 2];
+        return true;
+      }
+    }
+    return false;
+  };
+  return { lightAt, size };
 }

@@ -6,30 +6,73 @@ import { deviceName } from '../analysis.js';
 const table = (header, rows) => [header, header.map(() => '---'), ...rows].map((r) => `| ${r.join(' | ')} |`).join('\n');
 
 const REGIONS = ['all', 'silhouettes', 'creases', 'ears', 'eyes', 'lips', 'rest'];
+const number = (v) => (v == null || Number.isNaN(v) ? '—' : v.toFixed(3));
+const CHECK_LABEL = {
+  density: (c) => `*the truth at ${c.density}× the samples per area, against the truth*`,
+  atlas: (c) => `*the truth from a ${c.atlasSize}² atlas, against the truth*`,
+};
+const settingLabel = (name) => (name === 'default' ? "**default** (footprint, samples 'auto')" : name);
 
-/** One light's table: each screen-space setting's error by region. */
-function lightTable(light) {
-  const measured = light.settings.filter((s) => s.name !== 'none');
-  const rows = measured.map((s) => [s.name === 'default' ? "**default** (footprint, samples 'auto')" : s.name,
-    ...REGIONS.map((r) => s.relative[r].toFixed(3))]);
-  const { uncertainty } = light;
-  rows.push([`*the truth itself: from a ${uncertainty.atlasSize}² atlas instead of ${light.atlasSize}²*`, ...REGIONS.map((r) => `*${uncertainty.relative[r].toFixed(3)}*`)]);
-  return table(['setting', ...REGIONS.map((r) => `${r} (${r === 'all' ? light.pixels : light.regionPixels[r]} px)`)], rows);
+/** The largest amount a convergence check moved the truth by, over the regions with pixels. */
+const worstMove = (configuration) => Math.max(...configuration.convergence.flatMap((c) => REGIONS.map((r) => c.relative[r] ?? 0)));
+
+/** One configuration's table: each setting's error by region, then the truth's convergence. */
+function configurationTable(configuration, regions = REGIONS) {
+  const { cost } = configuration;
+  const costOf = (name) => (cost ? [cost[name] == null ? '—' : cost[name].toFixed(1)] : []);
+  const rows = configuration.settings.filter((s) => s.name !== 'none').map((s) => [settingLabel(s.name), ...regions.map((r) => number(s.relative[r])), ...costOf(s.name)]);
+  for (const check of configuration.convergence) rows.push([CHECK_LABEL[check.name](check), ...regions.map((r) => `*${number(check.relative[r])}*`), ...(cost ? [''] : [])]);
+  const pixels = (r) => (r === 'all' ? configuration.pixels : configuration.regionPixels[r]);
+  return table(['setting', ...regions.map((r) => `${r} (${pixels(r)} px)`), ...(cost ? ['SSS ms'] : [])], rows);
+}
+
+/** How the truth was made for one configuration, in a sentence (a truth kept from an earlier run of the same code says less). */
+function truthSentence(c) {
+  const parts = [];
+  if (c.truthMs != null) {
+    const reads = c.readShares ? ` (${Object.entries(c.readShares).map(([k, v]) => `${k} ${(100 * v).toFixed(1)} %`).join(', ')})` : '';
+    const edge = c.lightEdgeMm != null ? ` on pieces of at most ${c.lightEdgeMm.toFixed(2)} mm` : '';
+    parts.push(`Truth in ${(c.truthMs / 1000).toFixed(1)} s${c.cachedTruth ? ' (in an earlier run of the same code, kept)' : ''} from ${c.lightReads.toLocaleString('en')} light reads${edge}${reads}`);
+  }
+  if (c.localShare) parts.push(`Gaussians kept local at ${c.localShare.map((v) => `${(100 * v).toFixed(0)} %`).join(', ')} of the pixels (narrowest first)`);
+  parts.push(`truth over unscattered light, R G B: ${c.truthOverUnscattered.map((v) => v.toFixed(4)).join(', ')}`);
+  if (!c.convergence.length) parts.push('its convergence checks not run for this view (time on a shared machine); see the other views');
+  return `${parts.join('; ')}.`;
 }
 
 /**
  * The short form for docs/BENCH.md: the default, the dense reference and the reference kernel per
- * light, over all pixels and the regions where screen space fails, beside the truth's resolution.
+ * view and light, over all pixels and the regions where screen space fails, beside the truth's
+ * convergence (the most either check moved it).
  * @param {object} results bench/results/surface-truth.json
  */
 export function surfaceTruthSummary(results) {
   const regions = ['all', 'silhouettes', 'creases', 'rest'];
-  const rows = results.lights.flatMap((light) => [
-    ...['default', 'dense', 'reference17'].map((name) => light.settings.find((s) => s.name === name)).filter(Boolean)
-      .map((s) => [light.name, s.name, ...regions.map((r) => s.relative[r].toFixed(3))]),
-    [light.name, '*the truth from a finer atlas*', ...regions.map((r) => `*${light.uncertainty.relative[r].toFixed(3)}*`)],
+  const rows = results.views.flatMap((c) => [
+    ...['default', 'dense', 'reference17'].map((name) => c.settings.find((s) => s.name === name)).filter(Boolean)
+      .map((s) => [c.name, s.name, ...regions.map((r) => number(s.relative[r]))]),
+    ...(c.convergence.length ? [[c.name, '*the truth\'s own convergence (most moved)*', ...regions.map((r) => `*${number(Math.max(...c.convergence.map((k) => k.relative[r] ?? 0)))}*`)]] : []),
   ]);
-  return table(['light', 'setting', ...regions], rows);
+  return table(['view, light', 'setting', ...regions], rows);
+}
+
+/** Part 2's goals, per configuration: what the default meets. */
+function goalsTable(results) {
+  const rows = results.views.map((c) => {
+    const by = Object.fromEntries(c.settings.map((s) => [s.name, s.relative]));
+    const d = by.default;
+    const present = REGIONS.filter((r) => d[r] != null);
+    const worst = present.reduce((a, r) => (d[r] > d[a] ? r : a), present[0]);
+    const noT = by['default, no transmittance'];
+    const worse = noT ? present.filter((r) => d[r] > noT[r] + 1e-3) : [];
+    const bias = Object.fromEntries(c.settings.map((x) => [x.name, x.bias?.creases]));
+    const red = (name) => (bias[name] ? `${(100 * bias[name][0]).toFixed(1)} %` : '—');
+    return [c.name, `${number(d[worst])} (${worst})`, number(d.all), by.dense ? number(by.dense.all) : '—',
+      noT ? (worse.length ? `worse in ${worse.map((r) => `${r} ${number(noT[r])} → ${number(d[r])}`).join(', ')}` : 'never worse') : '—',
+      `${red('none')} → ${red('default')}`];
+  });
+  return table(['view, light', 'default: worst region (goal ≤ 1.0)', 'default: all pixels (goal front ≤ 0.35)', 'dense: all pixels', 'transmittance (default against default without it)',
+    'creases: red against the truth\'s, no scattering → default'], rows);
 }
 
 /**
@@ -37,61 +80,92 @@ export function surfaceTruthSummary(results) {
  * @returns {string} markdown
  */
 export function surfaceTruthMarkdown(results) {
-  const { view } = results;
-  const sections = results.lights.map((light) => {
-    const byName = Object.fromEntries(light.settings.map((s) => [s.name, s]));
-    const floor = light.uncertainty.relative.all;
-    const verdict = byName.default && byName.dense
-      ? `The default's error over all pixels is ${byName.default.relative.all.toFixed(3)} of the effect, the dense screen-space reference's ${byName.dense.relative.all.toFixed(3)}; `
-        + `the truth itself moves by ${floor.toFixed(3)} of the effect with its atlas's resolution.`
-      : '';
-    return `## ${light.name[0].toUpperCase()}${light.name.slice(1)} light (azimuth ${light.lightAzimuthDeg}°, elevation ${light.lightElevationDeg}°)
+  const { view, plane } = results;
+  const sections = results.views.map((c) => {
+    const slug = c.name.replace(/[^a-z0-9]+/gi, '-');
+    const by = Object.fromEntries(c.settings.map((s) => [s.name, s.relative]));
+    return `## ${c.name[0].toUpperCase()}${c.name.slice(1)} (light azimuth ${c.lightAzimuthDeg}°, elevation ${c.lightElevationDeg}°)
 
-Truth from ${light.atlasTexels.toLocaleString('en')} atlas texels (fine spacing ${light.spacingsMm[0].toFixed(2)} mm, coarse ${light.spacingsMm[1].toFixed(2)} mm) in ${(light.truthMs / 1000).toFixed(1)} s; truth over unscattered light, R G B: ${light.truthOverUnscattered.map((v) => v.toFixed(4)).join(', ')} (scattering moves light, it does not make it).
+${truthSentence(c)}
 
-${lightTable(light)}
+${configurationTable(c)}
 
-${verdict}
+The default misses ${number(by.default.all)} of the effect over all pixels, the dense screen-space reference ${number(by.dense?.all)}${c.convergence.length ? `; the truth's own convergence moved it by at most ${number(worstMove(c))} (goal ≤ 0.05)` : ''}.
 
 | truth | default | unscattered |
 |---|---|---|
-| ![truth](surface-truth/image-${light.name}-truth.png) | ![default](surface-truth/image-${light.name}-setting.png) | ![unscattered](surface-truth/image-${light.name}-unscattered.png) |
+| ![truth](surface-truth/image-${slug}-truth.png) | ![default](surface-truth/image-${slug}-setting.png) | ![unscattered](surface-truth/image-${slug}-unscattered.png) |
 
-Heat maps of |setting − truth| (sum of RGB; white at 0.05): ![default](surface-truth/heat-${light.name}-default.png) ![dense](surface-truth/heat-${light.name}-dense.png)
+Heat maps of |setting − truth| (sum of RGB; white at 0.05): ![default](surface-truth/heat-${slug}-default.png) ![dense](surface-truth/heat-${slug}-dense.png)
 `;
   });
+  const planeBy = Object.fromEntries(plane.settings.map((s) => [s.name, s.relative]));
   return `# Against a surface-space truth
 
 Generated by \`npm run bench:truth\` (bench/surfaceTruth/run.js) on ${deviceName(results.webgl)}, ${results.date.slice(0, 10)}, in ${results.seconds.toFixed(0)} s.
 
-The screen-space methods see only the pixels the camera sees. The truth here does not: the head's
-diffuse light (the pipeline's own, transmittance included) is rendered into its UV atlas with each
-texel's world position and area, and at every pixel the camera sees, the scattered light is the
-float64 sum over the surface, Σⱼ R(|x − xⱼ|) Eⱼ Aⱼ, with d'Eon's six Gaussians of the skin profile
-(widthMm ${view.widthMm}), summed with 3D distances (bench/surfaceTruth/scatter.js; unit tests in
-test/node/bench/surfaceTruth.test.js against closed forms on planes and a sphere). Head at
-${view.width}×${view.height}, the speed-accuracy bench's camera, float targets.
+The screen-space methods see only the pixels the camera sees. The truth here does not, and it
+scatters the light the pipeline blurs (bench/surfaceTruth/page.js):
+
+- **Its light.** Where the camera sees the surface, the camera pixels' own diffuse light: the
+  pipeline's diffuse attachment of the same frame, at the same ${view.width}×${view.height}, float targets. Only
+  where the camera does not see it (behind silhouettes, inside folds, the back of the head), the
+  same material's light rendered into the head's UV atlas (bench/surfaceTruth/atlas.js). A surface
+  point is the camera's when it projects onto a subsurface pixel whose surface lies at its distance
+  within 0.5 mm plus that pixel's own depth span. The pipeline's transmittance is left out of this
+  light: the truth makes its own (light entering the far side of an ear reaches the near side
+  through it), so a method's transmittance is measured against it, not built into it.
+- **Its samples.** The mesh's own triangles, each split at its edges' midpoints into four
+  congruent pieces of exactly a quarter of its area, recursively (bench/surfaceTruth/scatter.js):
+  the pieces' areas sum to the mesh's, so nothing is renormalised. Each of d'Eon's six Gaussians of
+  the skin profile (widthMm ${view.widthMm}) is summed over pieces no longer than its σ, each carrying the mean
+  light of its sub-pieces; one narrower than a quarter of a pixel's footprint is kept local (the
+  light is one value across the pixel).
+- **Its distance.** R(r) at the straight 3D distance, through the material: the dipole's BSSRDF
+  is a function of |x − y| (Jensen et al. 2001); on the head's gentle curves it equals the
+  distance along the surface within (σ/ρ)², and through an ear's rim or a lip light does cross the
+  tissue. (Across the air of an eyelid slit it overestimates.)
+
+Unit tests (test/node/bench/surfaceTruth.test.js, Node): the pieces' areas sum to the mesh's within
+1e-9; a step of light on an irregularly triangulated plane is within 2e-3 of the closed form
+(erfc per Gaussian); uniform light on a sphere keeps Σ wᵢ (1 − exp(−2ρ²/vᵢ)), the closed form at
+3D distances, within 5e-4.
 
 Error: ‖setting − truth‖ / ‖no scattering − truth‖ over each region's pixels (RGB), i.e. the part of
-the effect a setting misses: 0 is the truth, 1 no better than no scattering. Regions
-(bench/surfaceTruth/regions.js): silhouettes (surface within 2 px of a non-subsurface pixel or seen
-at a cosine below 0.3), creases (a valley in the view's depth: farther than the pixels 2 px away on
-both sides by 0.5 mm, along x or y: eyelid slits, the lip line, nostrils, ear folds), ears, eyes and
-lips (boxes on the scan), the rest.
+the effect a setting misses: 0 is the truth, 1 no better than no scattering ("no scattering": no
+blur and no transmittance, the light the truth scatters). Regions (bench/surfaceTruth/regions.js):
+silhouettes (surface within 2 px of a non-subsurface pixel or seen at a cosine below 0.3), creases
+(a valley in the view's depth: farther than the pixels 2 px away on both sides by 0.5 mm, along x
+or y: eyelid slits, the lip line, nostrils, ear folds), ears, eyes and lips (boxes on the scan), the
+rest. SSS ms: the blur's (or the dense pass's) time from timer queries, CPU time on SwiftShader on
+a shared machine, the median of interleaved rounds in the same page (front light only): compare
+within a table, not across runs. Beside every table, in italics, the truth's convergence: the truth at twice the samples per
+area, and from an atlas of twice the side, against the truth, in the same measure (goal ≤ 0.05).
+
+## A flat plane: the truth against the exact convolution
+
+The bench's slab (bench/scenes.js) at ${plane.view.width}×${plane.view.height}: a plane facing the camera, a hard-edged disc of light on it.
+There the truth is the exact convolution of the pixels' light, which the dense screen-space
+reference computes too (pixel-exact energies): the dense reference misses ${number(planeBy.dense?.all)} of
+the effect (goal ≤ 0.05), the default ${number(planeBy.default?.all)}. (Its "silhouettes" are the image's
+border, where no screen-space method sees the light beyond the frame; "ears" a patch of the plane
+inside the head's ear boxes.)
+
+${truthSentence(plane)}
+
+${configurationTable(plane, ['all', 'silhouettes', 'rest'])}
+
+## Part 2's goals
+
+Per view and light, against the goals of issue 21's part 2. The last column is the mean of
+(setting − truth) over the mean truth in the crease pixels, red channel: negative is darker in
+red than the truth.
+
+${goalsTable(results)}
 
 ${sections.join('\n')}
-The last three settings before the truth's own row are the default with other depth rules, the
-ideas for creases tried here: letting light cross depth steps helps the creases (lips, eyes) and
-costs more at silhouettes, where it brings light across real depth edges; none helps both.
-
-The truth's own row is the resolution of this measure: the same truth from a finer atlas differs
-from it by that much of the effect, so differences between settings smaller than that are not
-resolved. (Before each Gaussian was divided by its own sampled weight, bench/surfaceTruth/scatter.js,
-the atlas's uneven lattice at uv seams moved the truth by about half of the effect.)
-
 What no screen-space method can see: light entering surfaces hidden from the camera (behind a
 silhouette, inside an ear fold) and the true surface area of walls seen edge-on (eyelid slits,
-nostrils). Under a back light nearly all of the effect is of that kind, so every screen-space
-method stays near 1 there.
+nostrils).
 `;
 }

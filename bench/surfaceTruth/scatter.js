@@ -1,255 +1,293 @@
 // The surface-space truth of subsurface scattering (pure float64, runs in Node and in the page):
-// the light leaving each query point x is Σⱼ R(|x − xⱼ|) Eⱼ Aⱼ over surface samples j of the whole
-// mesh (its UV atlas texels: world position xⱼ, area Aⱼ, diffuse light Eⱼ), with the 3D distance,
-// as the diffusion approximation on a surface does (d'Eon & Luebke 2007, Jensen et al. 2001).
-// Screen-space methods see only what the camera sees, along the screen; this sees the surface.
+// the light leaving each query point x is Σᵢ wᵢ ∫ Gᵢ(|x − y|) E(y) dA(y) over the whole mesh, with
+// R(r) = Σᵢ wᵢ Gᵢ(r), Gᵢ(r) = exp(−r²/2vᵢ)/(2πvᵢ), the profile's 2D radial diffusion (d'Eon &
+// Luebke 2007's Gaussians, test/oracle/closedForms.js) and E the diffuse light entering at y.
 //
-// R is a sum of normalised 2D Gaussians, R(r) = Σᵢ wᵢ exp(−r²/2vᵢ)/(2πvᵢ) (d'Eon's skin: written out
-// in test/oracle/closedForms.js's GAUSSIANS, not taken from the library). A Gaussian much narrower than the
-// samples' spacing cannot be summed over them (it would alias on the lattice); it keeps its energy
-// where the light arrived: wᵢ · E(x), E(x) the query point's own diffuse light. Wider ones are
-// summed: on a locally regular lattice of spacing h the sum of a Gaussian of σ ≥ 0.6 h matches its
-// integral within 2 exp(−2π²σ²/h²) ≈ 1e-3 (the trapezoid rule's aliasing term). Wide Gaussians
-// are summed over a coarser set of samples (the atlas merged 4 × 4), which holds the same light
-// and area: each Gaussian takes the coarsest set it is at least 0.6 spacings wide on. An atlas's
-// spacing varies over the mesh (0.14-0.47 mm on the head: the face gets more of the uv square than
-// the shoulders), so the choice is made per query point from the spacing around it; with the
-// spacing of the whole atlas, the shoulders' light came out striped by ±8 %.
+// r is the straight 3D distance, through the material: the dipole's BSSRDF is a function of
+// |x − y| (Jensen et al. 2001), and where the surface curves gently (radius ≫ σ) it equals the
+// distance along the surface within (σ/ρ)²; where it does not (an ear's rim, a lip), light does
+// cross the tissue rather than run round it. (Across air, in an eyelid slit, it overestimates.)
 //
-// Each summed Gaussian is divided by its own sampled weight there, Σⱼ G(|x − xⱼ|) Aⱼ (a Shepard
-// estimate): the atlas's lattice is not regular (uv distortion, seams, the merged blocks' edges),
-// and on the head that weight was off by 3-8 % at the 1st and 99th percentiles of the face's
-// points, changing with the atlas's resolution by as much as the whole effect at 640x360. The
-// exact weight of a Gaussian over a surface curved as gently as the head (radius ≫ σ) is 1 within
-// 0.3 %: light lost round a curve is below that, light lost at a cut of the mesh is left out.
+// The integral is a sum over sub-triangles of the mesh: each triangle is split in four at its
+// edges' midpoints, recursively, into congruent pieces of exactly a quarter of its area, so the
+// samples' areas sum to the mesh's area and no per-Gaussian renormalisation is needed (the UV
+// atlas's texels, the previous samples, had areas estimated from derivatives, and their uneven
+// lattice at seams moved the truth by half the effect until each Gaussian was renormalised).
+// Each Gaussian is summed over pieces no longer than EDGE_PER_SIGMA · σ along their longest edge
+// (the midpoint rule's error for a piece of edge h is about h²/(24σ²) of its term and cancels to
+// higher order over a smooth Gaussian), each piece carrying the mean of E over its area, E read at
+// the centroids of its sub-pieces no longer than `lightEdgeMm` (finer than the light's own detail:
+// the camera's pixels). A Gaussian narrower than LOCAL_SIGMA_PER_PIXEL of a query point's pixel
+// footprint is kept local there, wᵢ E(x): the light is one value across that pixel, and the
+// Gaussian's mass outside the pixel is below 4 · erfc(2/√2)/2 ≈ 9 % of its weight (half a pixel
+// is 2σ), a share of the light of the pixel's neighbours that the pixel keeps instead. (At 0.2
+// the eye close-up's narrowest Gaussian would be summed over pieces of 0.08 mm: 12 million.) The
+// rule does not change with the samples' density: the bench's density check moves the sums only.
+//
+// The sums run piece by piece (streamed, nothing stored): each piece at a Gaussian's size is
+// splatted to the query points within the Gaussian's cut-off radius.
 
-/** Summed Gaussians need σ ≥ SUMMED_SIGMA_PER_SPACING × the samples' spacing (error ≈ 1e-3, above). */
-export const SUMMED_SIGMA_PER_SPACING = 0.6;
+/** A Gaussian is summed over pieces whose longest edge is at most this times its σ. */
+export const EDGE_PER_SIGMA = 1;
 
-/** The gather stops where the widest summed Gaussian falls below this fraction of its peak. */
+/** A Gaussian with σ below this fraction of a query point's pixel footprint is kept local there. */
+export const LOCAL_SIGMA_PER_PIXEL = 0.25;
+
+/** Each Gaussian's sum stops where it falls below this fraction of its peak (4.8 σ). */
 export const GATHER_CUTOFF = 1e-5;
 
 /**
- * @typedef {object} SurfaceSamples
- * @property {Float64Array} positionMm xyz per sample, millimetres
- * @property {Float64Array} areaMm2 per sample, mm²
- * @property {Float64Array} light rgb per sample: the diffuse light leaving it before scattering
+ * @typedef {object} Triangles
+ * @property {Float64Array} positionMm 9 per triangle: its corners, millimetres
+ * @property {Float64Array} uv 6 per triangle: its corners' texture coordinates
  */
 
-/**
- * The sample set each Gaussian is summed over at a point where the sets' spacings are `spacingsMm`,
- * or −1: kept local (narrower than the finest set allows).
- * @param {[number, number[]][]} gaussians [varianceMm2, rgb weights] pairs
- * @param {number[]} spacingsMm each sample set's spacing there, finest first
- * @returns {number[]} a level per Gaussian
- */
-export function levelsOf(gaussians, spacingsMm) {
-  return gaussians.map(([v]) => {
-    let level = -1;
-    spacingsMm.forEach((h, l) => { if (Math.sqrt(v) >= SUMMED_SIGMA_PER_SPACING * h) level = l; });
-    return level;
+/** Each Gaussian's σ, sample edge and cut-off radius (mm), at a profile scale `widthMm`. */
+function scaledGaussians(gaussians, widthMm, density) {
+  return gaussians.map(([v, w]) => {
+    const variance = v * widthMm * widthMm;
+    const sigma = Math.sqrt(variance);
+    return { variance, sigma, w, edgeMm: (EDGE_PER_SIGMA * sigma) / Math.sqrt(density), radiusMm: Math.sqrt(2 * variance * Math.log(1 / GATHER_CUTOFF)) };
   });
 }
 
-/** A sample set's typical spacing, mm: √ of its median area. */
-export const spacingOf = (samples) => Math.sqrt(medianOf(samples.areaMm2));
-
-/** Around each query point, the samples' spacing, mm: √ of their mean area within `radiusMm`. */
-export function localSpacing(samples, queryMm, radiusMm = 0.75) {
-  const fallback = spacingOf(samples);
-  const area = new Float64Array(queryMm.length / 3);
-  const count = new Float64Array(queryMm.length / 3);
-  forEachNeighbour(samples, queryMm, radiusMm, (q, n) => { area[q] += samples.areaMm2[n]; count[q]++; });
-  return area.map((a, q) => (count[q] ? Math.sqrt(a / count[q]) : fallback));
-}
-
-/** The median of a typed array (a copy is sorted). */
-export function medianOf(values) {
-  const sorted = Float64Array.from(values).sort();
-  const n = sorted.length;
-  return n % 2 ? sorted[(n - 1) / 2] : (sorted[n / 2 - 1] + sorted[n / 2]) / 2;
-}
-
 /**
- * Merges an atlas's samples block × block texels at a time into a coarser set holding the same
- * light and area: each merged sample sits at the area-weighted mean position with the area-weighted
- * mean light. Texels of a block lying more than `joinMm` from its first texel (another uv island:
- * neighbours in the atlas, apart on the mesh) are kept as samples of their own.
- * @param {import('./scatter.js').SurfaceSamples & { texel: Uint32Array }} samples texel: each sample's index in the atlas
- * @param {number} size the atlas's side, texels
- * @param {number} [block=4]
- * @param {number} [joinMm]
- * @returns {SurfaceSamples}
+ * A uniform grid over points, cells of `cellMm`, each cell's points contiguous.
+ * @param {Float64Array} pointsMm xyz per point
+ * @param {number[]} members the indices of the points it holds
  */
-export function coarsen(samples, size, block = 4, joinMm = 2 * block * spacingOf(samples)) {
-  const blocksPerSide = Math.ceil(size / block);
-  const members = new Map();
-  samples.texel.forEach((t, n) => {
-    const key = Math.floor((t / size) / block) * blocksPerSide + Math.floor((t % size) / block);
-    if (!members.has(key)) members.set(key, []);
-    members.get(key).push(n);
-  });
-  const out = { positionMm: [], areaMm2: [], light: [] };
-  const p = samples.positionMm;
-  const emit = (group) => {
-    let area = 0;
-    const pos = [0, 0, 0];
-    const light = [0, 0, 0];
-    for (const n of group) {
-      const a = samples.areaMm2[n];
-      area += a;
-      for (let c = 0; c < 3; c++) { pos[c] += a * p[3 * n + c]; light[c] += a * samples.light[3 * n + c]; }
-    }
-    out.positionMm.push(...pos.map((x) => x / area));
-    out.light.push(...light.map((x) => x / area));
-    out.areaMm2.push(area);
-  };
-  const j2 = joinMm * joinMm;
-  for (const group of members.values()) {
-    const seed = group[0];
-    const near = [];
-    for (const n of group) {
-      const d2 = (p[3 * n] - p[3 * seed]) ** 2 + (p[3 * n + 1] - p[3 * seed + 1]) ** 2 + (p[3 * n + 2] - p[3 * seed + 2]) ** 2;
-      if (d2 <= j2) near.push(n);
-      else emit([n]);
-    }
-    emit(near);
-  }
-  return { positionMm: Float64Array.from(out.positionMm), areaMm2: Float64Array.from(out.areaMm2), light: Float64Array.from(out.light) };
-}
-
-/** A uniform grid over sample positions, cells of `cellMm`: the samples of each cell, contiguous. */
-function buildGrid(positionMm, cellMm) {
-  const n = positionMm.length / 3;
+export function pointGrid(pointsMm, members, cellMm) {
   const min = [Infinity, Infinity, Infinity];
-  for (let i = 0; i < n; i++) for (let a = 0; a < 3; a++) min[a] = Math.min(min[a], positionMm[3 * i + a]);
-  const cellOf = (x, a) => Math.floor((x - min[a]) / cellMm);
-  let dims = [0, 0, 0];
-  for (let i = 0; i < n; i++) for (let a = 0; a < 3; a++) dims[a] = Math.max(dims[a], cellOf(positionMm[3 * i + a], a) + 1);
-  const key = (cx, cy, cz) => (cz * dims[1] + cy) * dims[0] + cx;
-  const counts = new Uint32Array(dims[0] * dims[1] * dims[2] + 1);
-  const keys = new Uint32Array(n);
-  for (let i = 0; i < n; i++) {
-    keys[i] = key(cellOf(positionMm[3 * i], 0), cellOf(positionMm[3 * i + 1], 1), cellOf(positionMm[3 * i + 2], 2));
-    counts[keys[i] + 1]++;
-  }
-  for (let k = 1; k < counts.length; k++) counts[k] += counts[k - 1]; // start of each cell
-  const order = new Uint32Array(n);
-  const fill = counts.slice(0, -1);
-  for (let i = 0; i < n; i++) order[fill[keys[i]]++] = i;
-  return { min, dims, cellMm, starts: counts, order, cellOf, key };
-}
-
-/**
- * Calls visit(query, sample, squaredDistanceMm2) for every sample within radiusMm of each query point.
- * @param {SurfaceSamples} samples @param {Float64Array} queryMm @param {number} radiusMm
- * @param {(q: number, n: number, d2: number) => void} visit
- */
-function forEachNeighbour(samples, queryMm, radiusMm, visit) {
-  const grid = buildGrid(samples.positionMm, radiusMm);
-  const p = samples.positionMm;
-  const r2max = radiusMm * radiusMm;
-  const [dx, dy, dz] = grid.dims;
-  for (let q = 0; q < queryMm.length / 3; q++) {
-    const x = queryMm[3 * q];
-    const y = queryMm[3 * q + 1];
-    const z = queryMm[3 * q + 2];
-    const cx = grid.cellOf(x, 0);
-    const cy = grid.cellOf(y, 1);
-    const cz = grid.cellOf(z, 2);
-    for (let k = Math.max(cz - 1, 0); k <= Math.min(cz + 1, dz - 1); k++) {
-      for (let j = Math.max(cy - 1, 0); j <= Math.min(cy + 1, dy - 1); j++) {
-        for (let i = Math.max(cx - 1, 0); i <= Math.min(cx + 1, dx - 1); i++) {
-          const cell = grid.key(i, j, k);
-          for (let s = grid.starts[cell]; s < grid.starts[cell + 1]; s++) {
-            const n = grid.order[s];
-            const ex = p[3 * n] - x;
-            const ey = p[3 * n + 1] - y;
-            const ez = p[3 * n + 2] - z;
-            const d2 = ex * ex + ey * ey + ez * ez;
-            if (d2 <= r2max) visit(q, n, d2);
-          }
-        }
+  const max = [-Infinity, -Infinity, -Infinity];
+  for (const q of members) for (let a = 0; a < 3; a++) { min[a] = Math.min(min[a], pointsMm[3 * q + a]); max[a] = Math.max(max[a], pointsMm[3 * q + a]); }
+  const dims = members.length ? min.map((m, a) => Math.floor((max[a] - m) / cellMm) + 1) : [0, 0, 0];
+  const key = (i, j, k) => (k * dims[1] + j) * dims[0] + i;
+  const cell = (x, a) => Math.floor((x - min[a]) / cellMm);
+  const starts = new Uint32Array(dims[0] * dims[1] * dims[2] + 1);
+  const keys = members.map((q) => key(cell(pointsMm[3 * q], 0), cell(pointsMm[3 * q + 1], 1), cell(pointsMm[3 * q + 2], 2)));
+  for (const k of keys) starts[k + 1]++;
+  for (let k = 1; k < starts.length; k++) starts[k] += starts[k - 1];
+  const order = new Uint32Array(members.length);
+  const fill = starts.slice(0, -1);
+  keys.forEach((k, n) => { order[fill[k]++] = members[n]; });
+  /**
+   * Calls visit(point) for the points in the cells that the box of half-side r around (x, y, z)
+   * touches: all within r of it (and some farther); stops when visit returns true, returning true.
+   */
+  const within = (x, y, z, r, visit) => {
+    const i0 = Math.max(cell(x - r, 0), 0);
+    const i1 = Math.min(cell(x + r, 0), dims[0] - 1);
+    if (i0 > i1) return false;
+    const j1 = Math.min(cell(y + r, 1), dims[1] - 1);
+    const k1 = Math.min(cell(z + r, 2), dims[2] - 1);
+    for (let k = Math.max(cell(z - r, 2), 0); k <= k1; k++) {
+      for (let j = Math.max(cell(y - r, 1), 0); j <= j1; j++) {
+        const to = starts[key(i1, j, k) + 1]; // the cells i0..i1 of a row are contiguous
+        for (let s = starts[key(i0, j, k)]; s < to; s++) if (visit(order[s]) === true) return true;
       }
     }
+    return false;
+  };
+  const stop = () => true;
+  return { cellMm, within, any: (x, y, z, r) => within(x, y, z, r, stop) };
+}
+
+/**
+ * Visits the mesh's pieces: each triangle split in four at its edges' midpoints, recursively, while
+ * `split(piece)` says so. `leaf(piece)` returns the light of a piece that is not split; a split
+ * piece's light is its four children's mean (equal areas). `emit(piece, light)` is called for every
+ * piece, after its light. A piece (one object per depth, reused: read it in the call) has corners
+ * a, b, c (mm, [x, y, z]) and their uvs ua, ub, uc, its area (mm²), longest edge (mm), centroid,
+ * depth (0: a triangle of the mesh) and parent (null at depth 0); fields set on it by `split` stay
+ * until its children are visited.
+ * @param {Triangles} triangles
+ * @param {{ split: (p: object) => boolean, leaf: (p: object) => ArrayLike<number>, emit: (p: object, light: Float64Array) => void }} visitor
+ */
+export function forEachPiece(triangles, { split, leaf, emit }) {
+  const { positionMm: p, uv } = triangles;
+  const stack = [];
+  const at = (depth) => {
+    while (stack.length <= depth) {
+      const parent = stack.length ? stack[stack.length - 1] : null;
+      stack.push({
+        a: new Float64Array(3), b: new Float64Array(3), c: new Float64Array(3), ua: new Float64Array(2), ub: new Float64Array(2), uc: new Float64Array(2),
+        centroid: new Float64Array(3), light: new Float64Array(3), areaMm2: 0, edgeMm: 0, depth: stack.length, parent,
+      });
+    }
+    return stack[depth];
+  };
+  // Sets the piece at `depth` to the triangle (corners x, y, z of a, b, c and their uvs) and visits it.
+  const visit = (depth, ax, ay, az, bx, by, bz, cx, cy, cz, uax, uay, ubx, uby, ucx, ucy, areaMm2) => {
+    const piece = at(depth);
+    piece.a[0] = ax; piece.a[1] = ay; piece.a[2] = az;
+    piece.b[0] = bx; piece.b[1] = by; piece.b[2] = bz;
+    piece.c[0] = cx; piece.c[1] = cy; piece.c[2] = cz;
+    piece.ua[0] = uax; piece.ua[1] = uay; piece.ub[0] = ubx; piece.ub[1] = uby; piece.uc[0] = ucx; piece.uc[1] = ucy;
+    piece.centroid[0] = (ax + bx + cx) / 3; piece.centroid[1] = (ay + by + cy) / 3; piece.centroid[2] = (az + bz + cz) / 3;
+    piece.areaMm2 = areaMm2;
+    piece.edgeMm = Math.sqrt(Math.max((ax - bx) ** 2 + (ay - by) ** 2 + (az - bz) ** 2, (bx - cx) ** 2 + (by - cy) ** 2 + (bz - cz) ** 2, (cx - ax) ** 2 + (cy - ay) ** 2 + (cz - az) ** 2));
+    const { light } = piece;
+    if (split(piece)) {
+      // Midpoints (ab, bc, ca) in locals: the children reuse the next depth's piece.
+      const abx = (ax + bx) / 2; const aby = (ay + by) / 2; const abz = (az + bz) / 2;
+      const bcx = (bx + cx) / 2; const bcy = (by + cy) / 2; const bcz = (bz + cz) / 2;
+      const cax = (cx + ax) / 2; const cay = (cy + ay) / 2; const caz = (cz + az) / 2;
+      const uabx = (uax + ubx) / 2; const uaby = (uay + uby) / 2; const ubcx = (ubx + ucx) / 2;
+      const ubcy = (uby + ucy) / 2; const ucax = (ucx + uax) / 2; const ucay = (ucy + uay) / 2;
+      const q = areaMm2 / 4;
+      let e = visit(depth + 1, ax, ay, az, abx, aby, abz, cax, cay, caz, uax, uay, uabx, uaby, ucax, ucay, q);
+      let r = e[0]; let g = e[1]; let b = e[2];
+      e = visit(depth + 1, abx, aby, abz, bx, by, bz, bcx, bcy, bcz, uabx, uaby, ubx, uby, ubcx, ubcy, q);
+      r += e[0]; g += e[1]; b += e[2];
+      e = visit(depth + 1, cax, cay, caz, bcx, bcy, bcz, cx, cy, cz, ucax, ucay, ubcx, ubcy, ucx, ucy, q);
+      r += e[0]; g += e[1]; b += e[2];
+      e = visit(depth + 1, abx, aby, abz, bcx, bcy, bcz, cax, cay, caz, uabx, uaby, ubcx, ubcy, ucax, ucay, q);
+      r += e[0]; g += e[1]; b += e[2];
+      light[0] = r / 4; light[1] = g / 4; light[2] = b / 4;
+    } else {
+      const e = leaf(piece);
+      light[0] = e[0]; light[1] = e[1]; light[2] = e[2];
+    }
+    emit(piece, light);
+    return light;
+  };
+  for (let t = 0; t < p.length / 9; t++) {
+    const k = 9 * t;
+    const u = 6 * t;
+    const area = triangleArea([p[k], p[k + 1], p[k + 2]], [p[k + 3], p[k + 4], p[k + 5]], [p[k + 6], p[k + 7], p[k + 8]]);
+    visit(0, p[k], p[k + 1], p[k + 2], p[k + 3], p[k + 4], p[k + 5], p[k + 6], p[k + 7], p[k + 8], uv[u], uv[u + 1], uv[u + 2], uv[u + 3], uv[u + 4], uv[u + 5], area);
   }
+}
+
+/** The area of the triangle a, b, c (mm²). */
+export function triangleArea(a, b, c) {
+  const e = [b[0] - a[0], b[1] - a[1], b[2] - a[2]];
+  const f = [c[0] - a[0], c[1] - a[1], c[2] - a[2]];
+  return Math.hypot(e[1] * f[2] - e[2] * f[1], e[2] * f[0] - e[0] * f[2], e[0] * f[1] - e[1] * f[0]) / 2;
 }
 
 /**
  * The surface truth at each query point.
  * @param {object} o
- * @param {SurfaceSamples[]} o.levels the whole surface, finest first (each set covers all of it)
+ * @param {Triangles} o.triangles the whole subsurface mesh, world millimetres
+ * @param {(x: number[], uv: number[]) => number[]} o.lightAt the diffuse light entering at a surface point
  * @param {Float64Array} o.queryMm xyz per query point, millimetres
- * @param {Float64Array} o.queryLight rgb per query point: its own diffuse light (for the local Gaussians)
+ * @param {Float64Array} o.queryLight rgb per query point: its own light (for the local Gaussians)
+ * @param {Float64Array} o.queryPixelMm per query point: its pixel's footprint, mm (the local rule)
  * @param {[number, number[]][]} o.gaussians the profile, [varianceMm2, rgb weights]
- * @param {number} [o.widthMm=1] millimetres of material per profile millimetre (variances scale by its square)
- * @returns {{ light: Float64Array, spacingsMm: number[], localShare: number[] }} localShare: per
- *   Gaussian, the fraction of query points where it was kept local
+ * @param {number} [o.widthMm=1] millimetres of material per profile millimetre
+ * @param {number} [o.lightEdgeMm] the longest edge of a piece whose light is read at its centroid
+ * @param {number} [o.density=1] samples per area relative to the rule above (2: √2 shorter edges,
+ *   twice the samples); the local rule does not change with it (the pixels' light is what it is)
+ * @returns {{ light: Float64Array, localShare: number[], pieces: number[], lightReads: number }} per
+ *   Gaussian: the share of query points where it was kept local, and the pieces summed
  */
-export function surfaceTruth({ levels, queryMm, queryLight, gaussians, widthMm = 1 }) {
-  const scaled = gaussians.map(([v, w]) => [v * widthMm * widthMm, w]);
-  const spacingsMm = levels.map(spacingOf);
+export function surfaceTruth({ triangles, lightAt, queryMm, queryLight, queryPixelMm, gaussians, widthMm = 1, lightEdgeMm = Infinity, density = 1 }) {
+  const scaled = scaledGaussians(gaussians, widthMm, density);
   const queries = queryMm.length / 3;
-  // Each point's spacings: its fine spacing, times how much coarser each set is overall.
-  const fine = localSpacing(levels[0], queryMm);
-  const assigned = new Int8Array(queries * scaled.length);
-  const localCount = new Float64Array(scaled.length);
   const light = new Float64Array(3 * queries);
-  for (let q = 0; q < queries; q++) {
-    const at = levelsOf(scaled, spacingsMm.map((h) => (fine[q] * h) / spacingsMm[0]));
-    at.forEach((level, m) => {
-      assigned[q * scaled.length + m] = level;
-      if (level >= 0) return;
-      localCount[m]++;
-      for (let c = 0; c < 3; c++) light[3 * q + c] += scaled[m][1][c] * queryLight[3 * q + c];
-    });
-  }
-  levels.forEach((samples, l) => {
-    const here = scaled.map((_, m) => m).filter((m) => assigned.some((level, k) => k % scaled.length === m && level === l));
-    if (here.length) gather(samples, scaled, here, (q, m) => assigned[q * scaled.length + m] === l, queryMm, light);
+  const localShare = [];
+  // Per Gaussian: the query points that sum it (a grid of them), the others keeping it local.
+  const grids = scaled.map((g) => {
+    const members = [];
+    for (let q = 0; q < queries; q++) {
+      if (g.sigma >= LOCAL_SIGMA_PER_PIXEL * queryPixelMm[q] || !(queryPixelMm[q] > 0)) { members.push(q); continue; }
+      for (let c = 0; c < 3; c++) light[3 * q + c] += g.w[c] * queryLight[3 * q + c];
+    }
+    localShare.push(1 - members.length / queries);
+    return members.length ? pointGrid(queryMm, members, g.radiusMm / 2) : null;
   });
-  return { light, spacingsMm, localShare: Array.from(localCount, (n) => n / queries) };
+  const { pieces, lightReads } = sumOverPieces({ triangles, lightAt, queryMm, scaled, grids, light, lightEdge: lightEdgeMm / Math.sqrt(density) });
+  return { light, localShare, pieces, lightReads };
 }
 
 /**
- * Adds Σᵢ wᵢ Σⱼ Gᵢ(|x − xⱼ|) Eⱼ Aⱼ / Σⱼ Gᵢ(|x − xⱼ|) Aⱼ over `samples` to `light` at each query
- * point, for the Gaussians `indices` that `uses(query, index)` assigns to this set there.
+ * near(m, piece): whether a point summing Gaussian m may lie within its radius + 2 edges of the
+ * piece's centroid (a child's centroid lies within one edge of its parent's: a piece reached is
+ * never missed), asked of this Gaussian's grid or, for a large piece, of the first coarser one
+ * (its points include these) whose cells are at least a third of the reach.
  */
-function gather(samples, gaussians, indices, uses, queryMm, light) {
-  const widest = Math.max(...indices.map((m) => gaussians[m][0]));
-  const radiusMm = Math.sqrt(2 * widest * Math.log(1 / GATHER_CUTOFF));
-  const inverse = gaussians.map(([v]) => -1 / (2 * v));
-  const { areaMm2: area, light: e } = samples;
-  const k = indices.length;
-  // Per query point and Gaussian: Σ G A, and Σ G E A per channel.
-  const weight = new Float64Array(k);
-  const sums = new Float64Array(3 * k);
-  let current = -1;
-  let active = [];
-  const flush = () => {
-    if (current < 0) return;
-    for (const j of active) {
-      if (!(weight[j] > 0)) continue;
-      const w = gaussians[indices[j]][1];
-      for (let c = 0; c < 3; c++) light[3 * current + c] += (w[c] * sums[3 * j + c]) / weight[j];
-    }
-    weight.fill(0);
-    sums.fill(0);
+function nearTest(scaled, grids, summed) {
+  const askers = scaled.map((g) => summed.filter((k) => scaled[k].sigma >= g.sigma).map((k) => grids[k]));
+  return (m, piece) => {
+    const reach = scaled[m].radiusMm + 2 * piece.edgeMm;
+    const list = askers[m];
+    let grid = list[list.length - 1];
+    for (const candidate of list) if (candidate.cellMm * 3 >= reach) { grid = candidate; break; }
+    return grid.any(piece.centroid[0], piece.centroid[1], piece.centroid[2], reach);
   };
-  forEachNeighbour(samples, queryMm, radiusMm, (q, n, d2) => {
-    if (q !== current) {
-      flush();
-      current = q;
-      active = indices.map((m, j) => (uses(q, m) ? j : -1)).filter((j) => j >= 0);
-    }
-    const a = area[n];
-    for (const j of active) {
-      const ga = Math.exp(d2 * inverse[indices[j]]) * a; // the norm 1/(2πv) cancels in the ratio
-      weight[j] += ga;
-      sums[3 * j] += ga * e[3 * n];
-      sums[3 * j + 1] += ga * e[3 * n + 1];
-      sums[3 * j + 2] += ga * e[3 * n + 2];
-    }
+}
+
+/**
+ * Adds each summed Gaussian's sum over the mesh's pieces to `light` at the query points that sum
+ * it (`grids[m]`, null where none does); returns the pieces summed per Gaussian and the light reads.
+ */
+function sumOverPieces({ triangles, lightAt, queryMm, scaled, grids, light, lightEdge }) {
+  const summed = scaled.map((g, m) => m).filter((m) => grids[m]);
+  const pieces = scaled.map(() => 0);
+  let lightReads = 0;
+  const near = nearTest(scaled, grids, summed);
+  const uv = [0, 0];
+  const none = [0, 0, 0];
+  // One splat: the piece's light e at (x, y, z) into the points within Gaussian m's radius.
+  let sx = 0; let sy = 0; let sz = 0; let sr = 0; let sg = 0; let sb = 0; let sVariance = 1; let sR2 = 0; let sNorm = 0; let sw = none;
+  const splat = (q) => {
+    const d2 = (queryMm[3 * q] - sx) ** 2 + (queryMm[3 * q + 1] - sy) ** 2 + (queryMm[3 * q + 2] - sz) ** 2;
+    if (d2 > sR2) return;
+    const g = sNorm * Math.exp(-d2 / (2 * sVariance));
+    light[3 * q] += sw[0] * g * sr;
+    light[3 * q + 1] += sw[1] * g * sg;
+    light[3 * q + 2] += sw[2] * g * sb;
+  };
+  const readAt = (piece, out) => {
+    lightReads++;
+    const { ua, ub, uc } = piece;
+    uv[0] = (ua[0] + ub[0] + uc[0]) / 3;
+    uv[1] = (ua[1] + ub[1] + uc[1]) / 3;
+    const e = lightAt(piece.centroid, uv);
+    out[0] = e[0]; out[1] = e[1]; out[2] = e[2];
+    return out;
+  };
+  forEachPiece(triangles, {
+    // A piece is summed for the Gaussians at its size in reach. It is split while it is larger
+    // than a Gaussian in reach, or while its light is wanted (it or a parent is summed) and it is
+    // larger than the light's edge for the finest Gaussian summed there (half that Gaussian's
+    // edge, never below lightEdgeMm). At the light's edge its light is read once: smaller pieces
+    // (split for a fine Gaussian) share it, the light having no detail below that.
+    split(piece) {
+      const { edgeMm, parent } = piece;
+      piece.sums = piece.sums ?? [];
+      piece.sums.length = 0;
+      piece.needEdgeMm = parent ? parent.needEdgeMm : Infinity;
+      for (const m of summed) {
+        const h = scaled[m].edgeMm;
+        if (edgeMm <= h && (piece.depth === 0 || edgeMm > h / 2) && near(m, piece)) {
+          piece.sums.push(m);
+          piece.needEdgeMm = Math.min(piece.needEdgeMm, Math.max(lightEdge, h / 2));
+        }
+      }
+      piece.wanted = piece.sums.length > 0 || (parent !== null && parent.wanted);
+      piece.shared = parent !== null && parent.shared !== null ? parent.shared : null;
+      let split = piece.wanted && edgeMm > piece.needEdgeMm;
+      if (!split) for (const m of summed) if (scaled[m].edgeMm < edgeMm && near(m, piece)) { split = true; break; }
+      if (split && piece.shared === null && edgeMm <= lightEdge) piece.shared = readAt(piece, piece.read ??= new Float64Array(3));
+      return split;
+    },
+    leaf(piece) {
+      if (piece.shared !== null) return piece.shared;
+      return piece.wanted ? readAt(piece, piece.read ??= new Float64Array(3)) : none;
+    },
+    emit(piece, e) {
+      for (const m of piece.sums) {
+        pieces[m]++;
+        ({ variance: sVariance, w: sw } = scaled[m]);
+        sR2 = scaled[m].radiusMm ** 2;
+        sNorm = piece.areaMm2 / (2 * Math.PI * sVariance);
+        sx = piece.centroid[0]; sy = piece.centroid[1]; sz = piece.centroid[2];
+        sr = e[0]; sg = e[1]; sb = e[2];
+        grids[m].within(sx, sy, sz, scaled[m].radiusMm, splat);
+      }
+    },
   });
-  flush();
+  return { pieces, lightReads };
 }

@@ -1,165 +1,144 @@
-// The bench's surface-space truth (bench/surfaceTruth/scatter.js) against closed forms: a step of
-// light on a plane (each Gaussian's share beyond the line: erfc), on lattices of different and
-// overlapping spacings, and uniform light on a sphere.
+// The bench's surface-space truth (bench/surfaceTruth/scatter.js) against closed forms: its pieces'
+// areas against the mesh's, a step of light on an irregularly triangulated plane (each Gaussian's
+// share beyond the line: erfc), uniform light on a sphere (the 3D distance through it: each
+// Gaussian keeps 1 − exp(−2ρ²/v)), and the profile's scale.
 import { describe, it, expect } from 'vitest';
-import { surfaceTruth, levelsOf, coarsen, SUMMED_SIGMA_PER_SPACING } from '../../../bench/surfaceTruth/scatter.js';
+import { forEachPiece, surfaceTruth, triangleArea, LOCAL_SIGMA_PER_PIXEL } from '../../../bench/surfaceTruth/scatter.js';
 import { GAUSSIANS, erfc } from '../../oracle/closedForms.js';
+import { mulberry32 } from '../../../demo/seededRandom.js';
 
 const SKIN = GAUSSIANS.skin;
 
-function plane(spacingMm, halfMm, lightAt) {
-  const n = Math.round((2 * halfMm) / spacingMm);
-  const positionMm = new Float64Array(3 * n * n);
-  const light = new Float64Array(3 * n * n);
-  const areaMm2 = new Float64Array(n * n).fill(spacingMm * spacingMm);
-  const texel = Uint32Array.from({ length: n * n }, (_, k) => k);
-  for (let j = 0; j < n; j++) for (let i = 0; i < n; i++) {
-    const k = j * n + i;
-    const x = -halfMm + (i + 0.5) * spacingMm;
-    positionMm.set([x, -halfMm + (j + 0.5) * spacingMm, 0], 3 * k);
-    light.fill(lightAt(x), 3 * k, 3 * k + 3);
+/**
+ * A plane z = 0 from −half to half mm, in cells of `cellMm` split in two triangles, inner corners
+ * moved by up to 30 % of a cell (corners on x = 0 only along y: the line stays an edge).
+ */
+function jitteredPlane(cellMm, halfMm, seed = 1) {
+  const n = Math.round((2 * halfMm) / cellMm);
+  const next = mulberry32(seed);
+  const corner = [];
+  for (let j = 0; j <= n; j++) for (let i = 0; i <= n; i++) {
+    const inner = i > 0 && j > 0 && i < n && j < n;
+    const x = -halfMm + i * cellMm;
+    const dx = inner && Math.abs(x) > 1e-9 ? (next() - 0.5) * 0.6 * cellMm : 0;
+    const dy = inner ? (next() - 0.5) * 0.6 * cellMm : 0;
+    corner.push([x + dx, -halfMm + j * cellMm + dy, 0]);
   }
-  return { positionMm, areaMm2, light, texel, size: n };
+  const positions = [];
+  const at = (i, j) => corner[j * (n + 1) + i];
+  for (let j = 0; j < n; j++) for (let i = 0; i < n; i++) {
+    positions.push(...at(i, j), ...at(i + 1, j), ...at(i + 1, j + 1), ...at(i, j), ...at(i + 1, j + 1), ...at(i, j + 1));
+  }
+  return { positionMm: Float64Array.from(positions), uv: new Float64Array((positions.length / 9) * 6) };
 }
 
+/** An icosphere of radius rho mm, `levels` times split (its corners on the sphere). */
+function icosphere(rho, levels) {
+  const t = (1 + Math.sqrt(5)) / 2;
+  let vertices = [[-1, t, 0], [1, t, 0], [-1, -t, 0], [1, -t, 0], [0, -1, t], [0, 1, t], [0, -1, -t], [0, 1, -t], [t, 0, -1], [t, 0, 1], [-t, 0, -1], [-t, 0, 1]];
+  let faces = [[0, 11, 5], [0, 5, 1], [0, 1, 7], [0, 7, 10], [0, 10, 11], [1, 5, 9], [5, 11, 4], [11, 10, 2], [10, 7, 6], [7, 1, 8],
+    [3, 9, 4], [3, 4, 2], [3, 2, 6], [3, 6, 8], [3, 8, 9], [4, 9, 5], [2, 4, 11], [6, 2, 10], [8, 6, 7], [9, 8, 1]];
+  const unit = (v) => { const l = Math.hypot(...v); return v.map((x) => x / l); };
+  vertices = vertices.map(unit);
+  for (let l = 0; l < levels; l++) {
+    const cache = new Map();
+    const middle = (a, b) => {
+      const key = a < b ? `${a},${b}` : `${b},${a}`;
+      if (!cache.has(key)) { vertices.push(unit(vertices[a].map((x, k) => (x + vertices[b][k]) / 2))); cache.set(key, vertices.length - 1); }
+      return cache.get(key);
+    };
+    faces = faces.flatMap(([a, b, c]) => { const [ab, bc, ca] = [middle(a, b), middle(b, c), middle(c, a)]; return [[a, ab, ca], [b, bc, ab], [c, ca, bc], [ab, bc, ca]]; });
+  }
+  const positionMm = Float64Array.from(faces.flatMap((f) => f.flatMap((v) => vertices[v].map((x) => x * rho))));
+  return { positionMm, uv: new Float64Array(faces.length * 6) };
+}
+
+const meshArea = ({ positionMm: p }) => {
+  let sum = 0;
+  for (let t = 0; t < p.length / 9; t++) sum += triangleArea(...[0, 1, 2].map((k) => [p[9 * t + 3 * k], p[9 * t + 3 * k + 1], p[9 * t + 3 * k + 2]]));
+  return sum;
+};
+
 describe('surface truth', () => {
-  it('a step of light on a plane: within 3e-3 of the closed form, off the samples\' lattice too (a discontinuity is the lattice sum\'s worst case: its error is first order in the spacing)', () => {
-    const spacing = 0.2;
+  it('the pieces a mesh is split into (to 0.3 mm, from triangles of 4 mm) are no longer than that, and their areas sum to the mesh\'s (1e-9)', () => {
+    for (const mesh of [jitteredPlane(4, 10), icosphere(10, 2)]) {
+      let leaves = 0;
+      let area = 0;
+      let longest = 0;
+      forEachPiece(mesh, {
+        split: (p) => p.edgeMm > 0.3,
+        leaf: (p) => { leaves++; area += p.areaMm2; longest = Math.max(longest, p.edgeMm); return [0, 0, 0]; },
+        emit: () => {},
+      });
+      expect(Math.abs(area / meshArea(mesh) - 1)).toBeLessThan(1e-9);
+      expect(longest).toBeLessThanOrEqual(0.3);
+      expect(leaves).toBeGreaterThan(meshArea(mesh) / 0.3 ** 2);
+    }
+  });
+
+  it('a split piece\'s light is the area mean of its leaves\' (a linear light is read exactly at the centroids)', () => {
+    const mesh = jitteredPlane(4, 4, 3);
+    let total = 0;
+    let rootSum = 0;
+    forEachPiece(mesh, {
+      split: (p) => p.depth < 3,
+      leaf: (p) => [p.centroid[0], 0, 0],
+      emit: (p, light) => {
+        if (p.depth === 3) total += p.areaMm2 * p.centroid[0];
+        if (p.depth === 0) { rootSum += p.areaMm2 * light[0]; expect(light[0]).toBeCloseTo(p.centroid[0], 9); }
+      },
+    });
+    expect(rootSum).toBeCloseTo(total, 9);
+  });
+
+  it('a step of light on an irregularly triangulated plane (triangles of 4 mm): within 2e-3 of the closed form (1.4e-3 measured), the narrowest Gaussian kept local (σ below 0.25 of a 0.5 mm pixel)', () => {
+    const mesh = jitteredPlane(4, 28);
     const step = (x) => (x < 0 ? 1 : 0);
-    const samples = plane(spacing, 20, step);
     const xs = [-3, -1, -0.31, -0.07, 0.13, 0.5, 1.7, 4];
-    const queryMm = Float64Array.from(xs.flatMap((x) => [x, 0.037, 0]));
+    const queryMm = Float64Array.from(xs.flatMap((x) => [x, 0.37, 0]));
     const queryLight = Float64Array.from(xs.flatMap((x) => [step(x), step(x), step(x)]));
-    const truth = surfaceTruth({ levels: [samples], queryMm, queryLight, gaussians: SKIN });
-    expect(levelsOf(SKIN, [spacing])).toEqual([-1, 0, 0, 0, 0, 0]); // all but the narrowest (σ 0.08 mm < 0.6 × 0.2 mm)
+    const pixelMm = 0.5;
+    const truth = surfaceTruth({
+      triangles: mesh, lightAt: ([x]) => [step(x), step(x), step(x)], queryMm, queryLight,
+      queryPixelMm: new Float64Array(xs.length).fill(pixelMm), gaussians: SKIN,
+    });
+    const local = SKIN.map(([v]) => Math.sqrt(v) < LOCAL_SIGMA_PER_PIXEL * pixelMm);
+    expect(local).toEqual([true, false, false, false, false, false]);
     expect(truth.localShare).toEqual([1, 0, 0, 0, 0, 0]);
-    const local = SKIN[0][1];
+    let worst = 0;
     xs.forEach((x, q) => {
       for (let c = 0; c < 3; c++) {
-        const expected = SKIN.reduce((s, [v, w]) => s + (Math.sqrt(v) >= SUMMED_SIGMA_PER_SPACING * spacing ? w[c] * erfc(x / Math.sqrt(2 * v)) / 2 : 0), local[c] * step(x));
-        expect(Math.abs(truth.light[3 * q + c] - expected), `x ${x} mm, channel ${c}`).toBeLessThan(3e-3);
+        const expected = SKIN.reduce((s, [v, w], m) => s + w[c] * (local[m] ? step(x) : erfc(x / Math.sqrt(2 * v)) / 2), 0);
+        worst = Math.max(worst, Math.abs(truth.light[3 * q + c] - expected));
       }
     });
+    expect(worst).toBeLessThan(2e-3);
   });
 
-  it('wide Gaussians summed over the atlas merged 4 × 4 give the same step within 3e-3, and the merge keeps light and area', () => {
-    const step = (x) => (x < 0 ? 1 : 0);
-    const fine = plane(0.2, 20, step);
-    const coarse = coarsen(fine, fine.size);
-    const sum = (a) => a.reduce((s, x) => s + x, 0);
-    expect(coarse.areaMm2.length).toBe(fine.areaMm2.length / 16);
-    expect(sum(coarse.areaMm2)).toBeCloseTo(sum(fine.areaMm2), 6);
-    expect(sum(coarse.light.filter((_, i) => i % 3 === 0).map((e, n) => e * coarse.areaMm2[n]))).toBeCloseTo(sum(fine.light.filter((_, i) => i % 3 === 0).map((e, n) => e * fine.areaMm2[n])), 6);
-    const xs = [-2, -0.45, 0.2, 1.3];
-    const queryMm = Float64Array.from(xs.flatMap((x) => [x, 0.11, 0]));
-    const queryLight = Float64Array.from(xs.flatMap((x) => [step(x), step(x), step(x)]));
-    const one = surfaceTruth({ levels: [fine], queryMm, queryLight, gaussians: SKIN });
-    const two = surfaceTruth({ levels: [fine, coarse], queryMm, queryLight, gaussians: SKIN });
-    expect(levelsOf(SKIN, [0.2, 0.8])).toEqual([-1, 0, 0, 1, 1, 1]); // σ ≥ 0.6 × 0.8 mm: the three widest
-    for (let i = 0; i < one.light.length; i++) expect(Math.abs(two.light[i] - one.light[i])).toBeLessThan(3e-3);
-  });
-
-  it('where the samples are sparser (half the plane at 0.5 mm, half at 0.1 mm) uniform light stays uniform within 2e-3: each point chooses by the spacing around it', () => {
-    const dense = plane(0.1, 20, () => 1); // 20 mm from the edges: the widest Gaussian (2.7 mm) sees none
-    const sparse = plane(0.5, 20, () => 1);
-    const keep = (set, side) => {
-      const take = [];
-      for (let k = 0; k < set.areaMm2.length; k++) if (side(set.positionMm[3 * k])) take.push(k);
-      return {
-        positionMm: Float64Array.from(take.flatMap((k) => [...set.positionMm.subarray(3 * k, 3 * k + 3)])),
-        areaMm2: Float64Array.from(take.map((k) => set.areaMm2[k])),
-        light: new Float64Array(3 * take.length).fill(1),
-      };
-    };
-    const a = keep(dense, (x) => x < 0);
-    const b = keep(sparse, (x) => x >= 0);
-    const samples = {
-      positionMm: Float64Array.from([...a.positionMm, ...b.positionMm]),
-      areaMm2: Float64Array.from([...a.areaMm2, ...b.areaMm2]),
-      light: Float64Array.from([...a.light, ...b.light]),
-    };
-    const xs = [-5, -2, 2.13, 3.37, 5.05, 6.81];
-    const queryMm = Float64Array.from(xs.flatMap((x) => [x, 0.21 * x, 0]));
-    const truth = surfaceTruth({ levels: [samples], queryMm, queryLight: new Float64Array(3 * xs.length).fill(1), gaussians: SKIN });
-    for (let i = 0; i < truth.light.length; i++) expect(Math.abs(truth.light[i] - 1), `point ${Math.floor(i / 3)}`).toBeLessThan(2e-3);
-    // With the whole set's spacing (the median, 0.1 mm) σ 0.22 mm would be summed over 0.5 mm samples too: off by several %.
-    expect(levelsOf(SKIN, [0.5])).toEqual([-1, -1, 0, 0, 0, 0]);
-  });
-
-  it('a merge keeps texels of another uv island apart (two sheets 50 mm apart side by side in the atlas)', () => {
-    const sheet = plane(0.25, 2.25, () => 1); // 18 × 18 texels: the atlas block of columns 16-19 holds both islands
-    const n = sheet.size;
-    const size = 2 * n;
-    const positionMm = new Float64Array(2 * sheet.positionMm.length);
-    const texel = new Uint32Array(2 * n * n);
-    for (let k = 0; k < n * n; k++) {
-      const [i, j] = [k % n, Math.floor(k / n)];
-      positionMm.set(sheet.positionMm.subarray(3 * k, 3 * k + 3), 3 * k);
-      positionMm.set([sheet.positionMm[3 * k] + 50, sheet.positionMm[3 * k + 1], 0], 3 * (n * n + k));
-      texel[k] = j * size + i;
-      texel[n * n + k] = j * size + i + n;
-    }
-    const samples = { positionMm, texel, areaMm2: new Float64Array(2 * n * n).fill(0.0625), light: new Float64Array(6 * n * n).fill(1) };
-    const merged = coarsen(samples, size);
-    const xs = Array.from(merged.positionMm.filter((_, i) => i % 3 === 0));
-    expect(xs.every((x) => x < 2.5 || x > 47.5)).toBe(true); // no sample between the sheets
-    expect(merged.areaMm2.length).toBeGreaterThan((2 * n * n) / 16); // the shared blocks split in two
-  });
-
-  it('where two uv islands overlap or part by half a texel (as rasterised borders do), a step of light stays within 0.015 of the closed form, though the samples\' own weight Σ G A is off by more than 10 % there (summed without dividing by it: 0.08)', () => {
-    const spacing = 0.2;
-    const step = (x) => (x < 0.5 ? 1 : 0); // the seam at x = 0 lies in the light
-    for (const shift of [spacing / 2, -spacing / 2]) {
-      // Left island: texel centres at x = −0.1, −0.3, …; right island: at x = 0.1 − shift, 0.3 − shift, ….
-      const sheet = plane(spacing, 20, step);
-      const ks = [...sheet.areaMm2.keys()];
-      const positionMm = Float64Array.from(ks.flatMap((k) => {
-        const [x, y, z] = sheet.positionMm.subarray(3 * k, 3 * k + 3);
-        return [x > 0 ? x - shift : x, y, z];
-      }));
-      const light = Float64Array.from(ks.flatMap((k) => new Array(3).fill(step(positionMm[3 * k]))));
-      const samples = { positionMm, areaMm2: sheet.areaMm2, light };
-      const [v1] = SKIN[1];
-      const ownWeight = (x) => samples.areaMm2.reduce((sum, area, k) => {
-        const d2 = (positionMm[3 * k] - x) ** 2 + (positionMm[3 * k + 1] - 0.05) ** 2;
-        return sum + (area * Math.exp(-d2 / (2 * v1))) / (2 * Math.PI * v1);
-      }, 0);
-      expect(Math.abs(ownWeight(0) - 1)).toBeGreaterThan(0.1);
-      const xs = [-0.8, -0.3, -0.05, 0.1, 0.4, 0.9, 1.6];
-      const queryMm = Float64Array.from(xs.flatMap((x) => [x, 0.05, 0]));
-      const queryLight = Float64Array.from(xs.flatMap((x) => [step(x), step(x), step(x)]));
-      const truth = surfaceTruth({ levels: [samples], queryMm, queryLight, gaussians: SKIN });
-      const local = SKIN[0][1];
-      xs.forEach((x, q) => {
-        for (let c = 0; c < 3; c++) {
-          const expected = SKIN.reduce((sum, [v, w], m) => sum + (m > 0 ? w[c] * erfc((x - 0.5) / Math.sqrt(2 * v)) / 2 : 0), local[c] * step(x));
-          expect(Math.abs(truth.light[3 * q + c] - expected), `shift ${shift}, x ${x} mm, channel ${c}`).toBeLessThan(0.015);
-        }
-      });
-    }
-  });
-
-  it('uniform light on a sphere of radius 3 mm stays uniform (1 within 1e-9): each Gaussian is divided by its own weight over the samples', () => {
+  it('uniform light on a sphere of radius 3 mm: each Gaussian keeps 1 − exp(−2ρ²/v) of it (the 3D distance, through the sphere), within 5e-4 (1.6e-4 measured)', () => {
     const rho = 3;
-    // A Fibonacci lattice: equal areas, locally near-regular (spacing about 0.075 mm).
-    const n = 20000;
-    const positions = [];
-    const areas = new Array(n).fill((4 * Math.PI * rho * rho) / n);
-    for (let i = 0; i < n; i++) {
-      const z = 1 - (2 * (i + 0.5)) / n;
-      const phi = i * Math.PI * (3 - Math.sqrt(5));
-      const r = Math.sqrt(1 - z * z);
-      positions.push(rho * r * Math.cos(phi), rho * r * Math.sin(phi), rho * z);
-    }
-    const samples = { positionMm: Float64Array.from(positions), areaMm2: Float64Array.from(areas), light: new Float64Array(positions.length).fill(1) };
+    const mesh = icosphere(rho, 5); // 20480 facets, edge 0.1 mm: the facets' area is 2e-4 below the sphere's
     const queryMm = Float64Array.from([0, 0, rho, rho, 0, 0, 0, -rho * Math.SQRT1_2, rho * Math.SQRT1_2]);
-    const truth = surfaceTruth({ levels: [samples], queryMm, queryLight: new Float64Array(9).fill(1), gaussians: SKIN });
-    for (let i = 0; i < 9; i++) expect(Math.abs(truth.light[i] - 1)).toBeLessThan(1e-9);
+    const truth = surfaceTruth({
+      triangles: mesh, lightAt: () => [1, 1, 1], queryMm, queryLight: new Float64Array(9).fill(1),
+      queryPixelMm: new Float64Array(3), gaussians: SKIN,
+    });
+    expect(truth.localShare).toEqual([0, 0, 0, 0, 0, 0]);
+    for (let q = 0; q < 3; q++) {
+      for (let c = 0; c < 3; c++) {
+        const expected = SKIN.reduce((s, [v, w]) => s + w[c] * (1 - Math.exp((-2 * rho * rho) / v)), 0);
+        expect(Math.abs(truth.light[3 * q + c] - expected), `point ${q}, channel ${c}`).toBeLessThan(5e-4);
+      }
+    }
   });
 
-  it('widthMm scales the profile: at width 2 a step reads as the width-1 step at half the distance', () => {
-    const samples = plane(0.2, 30, (x) => (x < 0 ? 1 : 0));
-    const at = (x, widthMm) => surfaceTruth({ levels: [samples], queryMm: Float64Array.from([x, 0, 0]), queryLight: Float64Array.from([0, 0, 0]), gaussians: SKIN, widthMm }).light[0];
+  it('widthMm scales the profile: at width 2 a step reads as the width-1 step at half the distance; twice the density moves it by < 1e-3', () => {
+    const mesh = jitteredPlane(4, 40, 2);
+    const at = (x, widthMm, density = 1) => surfaceTruth({
+      triangles: mesh, lightAt: ([px]) => [px < 0 ? 1 : 0, 0, 0], queryMm: Float64Array.from([x, 0.21, 0]), queryLight: Float64Array.from([0, 0, 0]),
+      queryPixelMm: Float64Array.from([0.5]), gaussians: SKIN, widthMm, density,
+    }).light[0];
     expect(Math.abs(at(1.0, 2) - at(0.5, 1))).toBeLessThan(2e-3);
+    expect(Math.abs(at(0.5, 1, 2) - at(0.5, 1))).toBeLessThan(1e-3);
   });
 });
