@@ -5,14 +5,11 @@
 // every saving on, float read-backs, and the ordinary pixels against a plain three.js frame (the
 // shadows cast by and onto subsurface objects kept).
 import { describe, it, expect, beforeAll, afterAll } from 'vitest';
-import { openPage, evaluateFloats } from '../harness/page.js';
+import { openPage, evaluateFloats, closeCheckedPage } from '../harness/page.js';
 
 let page;
 beforeAll(async () => { page = await openPage('/test/pages/lab.html'); });
-afterAll(async () => {
-  expect(page.problems).toEqual([]);
-  await page.close();
-});
+afterAll(() => closeCheckedPage(page));
 
 /**
  * In the page: a subsurface sphere (noise albedo) over an ordinary floor, a second subsurface
