@@ -228,6 +228,11 @@ export class SubsurfaceScatteringNode extends Node {
     return this._materials;
   }
 
+  /**
+   * Stage 3 before the frame (three calls it once a frame: updateBeforeType FRAME).
+   * @param {import('three/webgpu').NodeFrame} frame
+   * @returns {undefined}
+   */
   updateBefore(frame) {
     const { renderer } = frame;
     const { scenePass } = this;
@@ -247,7 +252,7 @@ export class SubsurfaceScatteringNode extends Node {
     const diffuse = scenePass.getTexture(ATTACHMENT_NAMES.DIFFUSE);
     if (!this.plan.blur) {
       this._scatteredNode.value = diffuse; // the compose reads the unblurred light: the output equals no SSS
-      return;
+      return undefined;
     }
     this._scatteredNode.value = this._scatteredTarget.texture;
     const projection = camera.projectionMatrix.elements;
