@@ -1,0 +1,214 @@
+// The isotropic blur's groups (src/3-blur/kernelGroups.js) and the Gaussian fits they split
+// (src/profiles/gaussianFit.js), against closed forms written out here and in
+// test/oracle/closedForms.js: the transfer of a grouped separable blur at angle θ is
+// Σ_g A_g(f cos θ) A_g(f sin θ) / W_g, the radial answer M(f); Burley's M(f) is its own closed form.
+import { describe, it, expect } from 'vitest';
+import { DEON, GAUSSIANS, transferOf, erfc } from '../../oracle/closedForms.js';
+import { profiles } from '../../../src/profiles/presets.js';
+import { gaussianSumOf, nonNegativeLeastSquares } from '../../../src/profiles/gaussianFit.js';
+import { ISOTROPY_ERROR, MAX_KERNEL_GROUPS, autoKernelGroups, checkKernelGroups, groupUniforms, kernelGroups } from '../../../src/3-blur/kernelGroups.js';
+
+const ANGLES_DEG = [0, 11.25, 22.5, 33.75, 45];
+const FREQUENCIES = Array.from({ length: 151 }, (_, k) => k * 0.01); // 0..1.5 cycles/mm
+
+/**
+ * [variance, rgb] pairs → the grouped separable transfer in channel c (the oracle's own sum); a
+ * group is a list of Gaussian indices, or of fractions per Gaussian (`fractions: true`).
+ */
+function oracleTransfer(pairs, groups, c, f, angleDeg, fractions = false) {
+  const t = (angleDeg * Math.PI) / 180;
+  const share = (group, i) => (fractions ? group[i] : group.includes(i) ? 1 : 0);
+  const A = (group, ff) => pairs.reduce((s, [v, w], i) => s + share(group, i) * w[c] * Math.exp(-2 * Math.PI ** 2 * v * ff * ff), 0);
+  return groups.reduce((s, g) => (A(g, 0) > 0 ? s + (A(g, f * Math.cos(t)) * A(g, f * Math.sin(t))) / A(g, 0) : s), 0);
+}
+
+/** Worst |grouped − M| over the angles and 0..fmax, per channel; M from `radial(f)`. */
+function worstError(pairs, groupsOf, radial, fmax = 1.5, fractions = false) {
+  const step = fmax / 150;
+  return [0, 1, 2].map((c) => {
+    let worst = 0;
+    for (let k = 0; k <= 150; k++) {
+      const f = k * step;
+      for (const a of ANGLES_DEG) worst = Math.max(worst, Math.abs(oracleTransfer(pairs, groupsOf(c), c, f, a, fractions) - radial(f)[c]));
+    }
+    return worst;
+  });
+}
+
+/** Φ, the standard normal distribution. */
+const Phi = (x) => 1 - 0.5 * erfc(x / Math.SQRT2);
+
+/**
+ * The exact response, at pixel (0, m) from the edge, of the pixel image of a step at 45° (pixel
+ * (i, j) lit where i + j ≥ 0) to the separable kernel N(va)(x)·N(vb)(y) (mm², s px/mm): the
+ * energy of each pixel column dx times that of the lit pixels of its row, Σ_dx P_a(dx) (1 − Φ((−m − dx − ½) / σ_b)).
+ */
+function diagonalPairResponse(va, vb, s, m) {
+  const sa = Math.sqrt(va) * s;
+  const sb = Math.sqrt(vb) * s;
+  const reach = Math.ceil(8 * sa) + 2;
+  let r = 0;
+  for (let dx = -reach; dx <= reach; dx++) r += (Phi((dx + 0.5) / sa) - Phi((dx - 0.5) / sa)) * (1 - Phi((-m - dx - 0.5) / sb));
+  return r;
+}
+
+/** The worst difference, over the pixels near the edge, between a grouping's and the radial profile's 45° step response. */
+function diagonalStepWorst(grouping, s) {
+  const G = grouping.gaussians;
+  let worst = 0;
+  for (let m = -Math.ceil(8 * s); m <= Math.ceil(8 * s); m++) {
+    for (let c = 0; c < 3; c++) {
+      let difference = -G.reduce((sum, g) => sum + g.weights[c] * diagonalPairResponse(g.varianceMm2, g.varianceMm2, s, m), 0);
+      for (const member of grouping.members[c]) {
+        const w = G.map((g, i) => member[i] * g.weights[c]);
+        const W = w.reduce((a, b) => a + b, 0);
+        if (!(W > 0)) continue;
+        G.forEach((gi, i) => G.forEach((gj, j) => { if (w[i] * w[j] > 0) difference += ((w[i] * w[j]) / W) * diagonalPairResponse(gi.varianceMm2, gj.varianceMm2, s, m); }));
+      }
+      worst = Math.max(worst, Math.abs(difference));
+    }
+  }
+  return worst;
+}
+
+const pairsOf = (gaussians) => gaussians.map((g) => [g.varianceMm2, g.weights]);
+
+describe('the separable error and the groups that remove it (closed form)', () => {
+  const skin = GAUSSIANS.skin;
+  const M = (f) => transferOf('skin', f);
+
+  it("one separable blur of d'Eon skin is up to 0.18 off M(f) on the diagonal (red; 0.167 at 0.8 cycles/mm)", () => {
+    const all = [[0, 1, 2, 3, 4, 5]];
+    const worst = worstError(skin, () => all, M);
+    expect(worst[0]).toBeGreaterThan(0.17);
+    expect(worst[0]).toBeLessThan(0.19);
+    expect(Math.abs(oracleTransfer(skin, all, 0, 0.8, 45) - M(0.8)[0])).toBeGreaterThan(0.16);
+    expect(Math.abs(oracleTransfer(skin, all, 0, 0.8, 0) - M(0.8)[0])).toBeLessThan(1e-12); // exact on the axes
+  });
+
+  it("the issue's groups {1}, {2, 3}, {4, 5, 6} stay within 0.027 of M(f) at every angle up to 1.5 cycles/mm", () => {
+    const issue = [[0], [1, 2], [3, 4, 5]];
+    for (const e of worstError(skin, () => issue, M)) expect(e).toBeLessThan(0.027);
+  });
+
+  for (const name of ['skin', 'marble']) {
+    it(`${name}: the library's groupings (6 px/mm) have the error they report, and fall with every group added`, () => {
+      let last = Infinity;
+      for (let count = 1; count <= MAX_KERNEL_GROUPS; count++) {
+        const g = kernelGroups(profiles[name], count, 6);
+        const measured = worstError(pairsOf(g.gaussians), (c) => g.members[c], (f) => transferOf(name, f), 1.5, true);
+        measured.forEach((e, c) => expect(Math.abs(e - g.error[c])).toBeLessThan(2e-3)); // the library's frequency grid is coarser
+        expect(Math.max(...measured)).toBeLessThanOrEqual(last + 1e-9);
+        last = Math.max(...measured);
+      }
+      expect(last).toBeLessThan(0.014);
+    });
+  }
+
+  it('skin in 3 groups per channel (fractions of Gaussians at the boundaries) is within 0.02 of M(f), a ninth of one group\'s', () => {
+    const g = kernelGroups(profiles.skin, 3, 6);
+    const e = worstError(GAUSSIANS.skin, (c) => g.members[c], M, 1.5, true);
+    expect(e[0]).toBeLessThan(0.02);
+    expect(Math.max(e[1], e[2])).toBeLessThan(0.003);
+    g.members.forEach((members) => members[0].forEach((_, i) => expect(members.reduce((sum, m) => sum + m[i], 0)).toBeCloseTo(1, 12)));
+  });
+
+  for (const name of ['skin', 'marble']) {
+    it(`${name}: 'auto' groups answer a 45° step edge of pixels like the radial profile within 1 % (exact pixel sums, 1-8 px/mm)`, () => {
+      for (const s of [1, 2, 4, 8]) {
+        const one = diagonalStepWorst(kernelGroups(profiles[name], 1, s), s);
+        const auto = diagonalStepWorst(autoKernelGroups(profiles[name], s), s);
+        expect(one, `${s} px/mm, one group`).toBeGreaterThan(0.03);
+        expect(auto, `${s} px/mm, 'auto'`).toBeLessThan(0.01);
+      }
+    });
+  }
+});
+
+describe('Gaussian fits of the profiles without Gaussians', () => {
+  it("Gaussian profiles are their own sum, sorted by variance", () => {
+    const { gaussians, stepError, exact } = gaussianSumOf(profiles.skin);
+    expect(exact).toBe(true);
+    expect(stepError).toEqual([0, 0, 0]);
+    expect(gaussians.map((g) => g.varianceMm2)).toEqual(DEON.map(([v]) => v));
+  });
+
+  for (const name of ['skinBurley', 'milk']) {
+    it(`${name}: the fit's marginal energy is within its stated step error (≤ 0.2 %) of the profile's, unit energy`, () => {
+      const { gaussians, stepError, exact } = gaussianSumOf(profiles[name]);
+      expect(exact).toBe(false);
+      expect(Math.max(...stepError)).toBeLessThan(0.002);
+      for (let c = 0; c < 3; c++) expect(Math.abs(gaussians.reduce((s, g) => s + g.weights[c], 0) - 1)).toBeLessThan(1e-4);
+      const erfHalf = (x, v) => 0.5 * Math.sign(x) * (1 - erfc(Math.abs(x) / Math.sqrt(2 * v)));
+      for (const x of [0.01, 0.05, 0.2, 0.7, 2, 6]) {
+        const exactEnergy = profiles[name].marginalIntegral(0, x);
+        for (let c = 0; c < 3; c++) {
+          const fit = gaussians.reduce((s, g) => s + g.weights[c] * erfHalf(x, g.varianceMm2), 0);
+          expect(Math.abs(fit - exactEnergy[c])).toBeLessThanOrEqual(stepError[c] + 1e-9);
+        }
+      }
+    });
+  }
+
+  it("skinBurley's fit has Burley's transfer (closed form) within 0.01 up to 1.5 cycles/mm", () => {
+    const pairs = pairsOf(gaussianSumOf(profiles.skinBurley).gaussians);
+    const worst = worstError(pairs, () => [pairs.map((_, i) => i)], (f) => transferOf('skinBurley', f));
+    // along the axis one group's transfer is the fit's own A(f)
+    for (const f of FREQUENCIES) {
+      const m = transferOf('skinBurley', f);
+      for (let c = 0; c < 3; c++) expect(Math.abs(oracleTransfer(pairs, [pairs.map((_, i) => i)], c, f, 0) - m[c])).toBeLessThan(0.01);
+    }
+    expect(worst[0]).toBeGreaterThan(0.1); // and one separable blur of it is far from isotropic
+  });
+
+  it('non-negative least squares: the known answer of a small problem with an active bound', () => {
+    // min (w0 − 1)² + (w1 + 1)² over w ≥ 0: w = (1, 0)
+    const w = nonNegativeLeastSquares([[1, 0], [0, 1]], [1, -1]);
+    expect(w[0]).toBeCloseTo(1, 12);
+    expect(w[1]).toBe(0);
+  });
+});
+
+describe("'auto' groups follow the on-screen scale", () => {
+  for (const name of ['skin', 'skinBurley', 'marble']) {
+    it(`${name}: one group for a far head (0.125 px/mm), more as the scale grows, each within ISOTROPY_ERROR of the radial transfer`, () => {
+      expect(autoKernelGroups(profiles[name], 0.125).count).toBe(1);
+      let last = 0;
+      for (const s of [0.25, 0.5, 1, 2, 3, 5, 10]) {
+        const g = autoKernelGroups(profiles[name], s);
+        expect(g.count).toBeGreaterThanOrEqual(last);
+        last = g.count;
+        // the oracle's error at the gratings this scale shows (≥ 4 px per cycle), against the true M(f)
+        const e = worstError(pairsOf(g.gaussians), (c) => g.members[c], (f) => transferOf(name, f), s / 4, true);
+        expect(Math.max(...e), `${s} px/mm`).toBeLessThan(ISOTROPY_ERROR + Math.max(...g.fitStepError) + 2e-3);
+      }
+    });
+  }
+
+  it('refuses a group count outside 1..4, naming it', () => {
+    expect(() => kernelGroups(profiles.skin, 0, 1)).toThrow(RangeError);
+    expect(() => checkKernelGroups('some')).toThrow(/kernelGroups must be 'auto' or an integer in 1\.\.4, got 'some'/);
+    expect(checkKernelGroups('auto')).toBe('auto');
+    expect(() => kernelGroups(profiles.skin, 5, 1)).toThrow(/kernelGroups must be an integer in 1\.\.4/);
+    expect(() => kernelGroups(profiles.skin, '2', 1)).toThrow(TypeError);
+  });
+});
+
+describe('the shader uniforms of a grouping', () => {
+  it("each Gaussian's weight is shared out over the groups per channel; group energies sum to 1", () => {
+    for (const name of ['skin', 'skinBurley']) {
+      const g = kernelGroups(profiles[name], 3, 4);
+      const { erfScales, weights, energies } = groupUniforms(g);
+      expect(erfScales.length).toBe(g.gaussians.length);
+      g.gaussians.forEach((gaussian, i) => {
+        expect(erfScales[i]).toBeCloseTo(1 / Math.sqrt(2 * gaussian.varianceMm2), 4);
+        for (let c = 0; c < 3; c++) {
+          const inGroups = [0, 1, 2].map((k) => weights[(i * 3 + k) * 3 + c]);
+          expect(inGroups.filter((w) => w > 0).length).toBeLessThanOrEqual(2); // a boundary splits one Gaussian in two at most
+          expect(inGroups.reduce((s, w) => s + w, 0)).toBeCloseTo(gaussian.weights[c], 6);
+        }
+      });
+      for (let c = 0; c < 3; c++) expect(energies[c] + energies[3 + c] + energies[6 + c]).toBeCloseTo(1, 4);
+    }
+  });
+});
