@@ -55,9 +55,12 @@ void addTap( const in float offsetPx, const in vec3 weight, const in ivec2 pixel
 	ivec2 texel1 = pixel;
 	texel0[ AXIS ] = clamp( int( below ), 0, last );
 	texel1[ AXIS ] = clamp( int( below ) + 1, 0, last );
-	vec3 colour0, colour1;
+	vec3 colour0, colour1 = vec3( 0.0 );
 	float weight0 = ( 1.0 - fraction ) * sssTapWeight( texel0, centreDepth + slope * float( texel0[ AXIS ] - pixel[ AXIS ] ), centre, colour0 );
-	float weight1 = fraction * sssTapWeight( texel1, centreDepth + slope * float( texel1[ AXIS ] - pixel[ AXIS ] ), centre, colour1 );
+	float weight1 = 0.0;
+	// A tap on a texel centre (every footprint one pixel wide: most of them at small scales) weighs
+	// its second texel 0: not fetching it gives the same sums (SSS_SKIP_EMPTY_TEXELS 0: fetched).
+	if ( SSS_SKIP_EMPTY_TEXELS == 0 || fraction > 0.0 ) weight1 = fraction * sssTapWeight( texel1, centreDepth + slope * float( texel1[ AXIS ] - pixel[ AXIS ] ), centre, colour1 );
 	float kept = weight0 + weight1;
 	if ( kept <= 0.0 ) return;
 	sum += weight * ( colour0 * weight0 + colour1 * weight1 );

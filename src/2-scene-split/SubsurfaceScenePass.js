@@ -87,6 +87,13 @@ export class SubsurfaceScenePass extends Pass {
      * them there, so each is rasterised once. The image is the same.
      */
     this.depthPrepass = false;
+    /**
+     * Documented-internal switch (issue 19; the bench undoes it for one measure): with MSAA, true
+     * (default) leaves the depth of call 1 unresolved (call 2 draws on into the same samples and
+     * three resolves them after it); false lets three resolve it after call 1 as well, three
+     * times over (it blits the depth with each of the three attachments). The image is the same.
+     */
+    this.resolvesDepthOnce = true;
     /** The multi-target (see subsurfaceTarget.js for what each attachment holds). */
     this.renderTarget = createSubsurfaceTarget(type);
 
@@ -225,7 +232,14 @@ export class SubsurfaceScenePass extends Pass {
         gl.clearBufferfv(gl.COLOR, ATTACHMENTS.DIFFUSE, ZERO);
         gl.clearBufferfv(gl.COLOR, ATTACHMENTS.SURFACE, ZERO);
         // 1. opaque ordinary materials (+ subsurface depth with the prepass); background and shadow maps.
-        this._draw(renderer, this.depthPrepass ? DRAW_PHASES.DEPTH : DRAW_PHASES.HIDDEN, DRAW_BUFFERS.COLOR_ONLY);
+        // With MSAA three resolves the target after every render() into it, the depth once per
+        // attachment: after call 1 the depth is not resolved when call 2 follows and resolves it.
+        target.resolveDepthBuffer = !(this.resolvesDepthOnce && target.samples > 0 && this.subsurfaceMeshes.length > 0);
+        try {
+          this._draw(renderer, this.depthPrepass ? DRAW_PHASES.DEPTH : DRAW_PHASES.HIDDEN, DRAW_BUFFERS.COLOR_ONLY);
+        } finally {
+          target.resolveDepthBuffer = true;
+        }
         // 2. subsurface materials into every attachment (no background: a Color one would clear).
         scene.background = null;
         renderer.shadowMap.autoUpdate = false;
@@ -270,4 +284,4 @@ export class SubsurfaceScenePass extends Pass {
   }
 }
 
-booleanFields(SubsurfaceScenePass.prototype, [...PASS_BOOLEANS, 'depthPrepass']);
+booleanFields(SubsurfaceScenePass.prototype, [...PASS_BOOLEANS, 'depthPrepass', 'resolvesDepthOnce']);

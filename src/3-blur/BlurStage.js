@@ -10,6 +10,8 @@ import { getProfile } from '../profiles/presets.js';
 import { AUTO_SAMPLES, METHOD_TABLE, PIPELINE_SCHEMA, checkOption } from '../options.js';
 import { blurModeOf, planBlur } from './blurPlan.js';
 import { booleanFields } from '../support/booleanFields.js';
+import { checkBoolean } from '../support/parameterChecks.js';
+import { setDefines } from '../support/glsl.js';
 import { SubsurfaceBlurPass } from './SubsurfaceBlurPass.js';
 import { DenseSubsurfacePass } from './DenseSubsurfacePass.js';
 
@@ -61,6 +63,7 @@ export class BlurStage {
      * scissored to the subsurface pixels' screen box (render's `box`). false: the whole frame.
      */
     this.confineToSubsurface = true;
+    this._skipsEmptyTexels = true;
     this._scissorKey = null; // the box the targets were last scissored to ('full' or x,y,w,h)
     /** The kernel the separable passes hold (computeKernel's layout). */
     this.kernel = firstKernel;
@@ -82,6 +85,19 @@ export class BlurStage {
   get kernelOptions() {
     const { profile, strength, falloff } = this._settings;
     return { profile, samples: this.kernel.length / 4, strength, falloff };
+  }
+
+  /**
+   * Documented-internal switch (issue 19; the bench undoes it for one measure): true (default)
+   * fetches only the texels a tap weighs (a tap on a texel centre weighs one, not two); false
+   * fetches both, as before. The sums, and so the image, are the same.
+   * @type {boolean}
+   */
+  get skipsEmptyTexels() { return this._skipsEmptyTexels; }
+
+  set skipsEmptyTexels(enabled) {
+    this._skipsEmptyTexels = checkBoolean('BlurStage.skipsEmptyTexels', enabled);
+    for (const pass of [this.horizontalPass, this.verticalPass]) setDefines(pass.material, { SSS_SKIP_EMPTY_TEXELS: enabled ? 1 : 0 });
   }
 
   /** The dense 2D reference (method 'dense'), built on first use. */

@@ -88,7 +88,7 @@ export class SubsurfaceBlurPass extends SurfacePass {
       name: `SubsurfaceBlurPass(${direction})`,
       fragmentShader: blurGlsl,
       chunks: CHUNKS,
-      defines: { AXIS: DIRECTIONS.indexOf(direction), SAMPLES: 1, ...FOOTPRINT_DEFINES, ...enumDefines('KERNEL_MODE', KERNEL_MODES, mode) },
+      defines: { AXIS: DIRECTIONS.indexOf(direction), SAMPLES: 1, SSS_SKIP_EMPTY_TEXELS: 1, ...FOOTPRINT_DEFINES, ...enumDefines('KERNEL_MODE', KERNEL_MODES, mode) },
       uniforms: {
         kernel: { value: new Float32Array(4) },
         tapCount: { value: 1 },
