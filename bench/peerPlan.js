@@ -30,9 +30,12 @@ export const ADDITIONS = Object.freeze(['msaa4', 'transparent', 'noDepthWrite'])
  * compose shader as it was before it fetched less (the scattered light at every pixel, the
  * surface attachment always); depthPrepass draws the subsurface materials' depth in the scene
  * split's first call, as before each was drawn once; fullFrameBlur runs both blur passes over the
- * whole frame, as before they were scissored to the subsurface pixels' screen box.
+ * whole frame, as before they were scissored to the subsurface pixels' screen box;
+ * bothTexelsFetched has the blur fetch both texels around every tap, as before it skipped the one
+ * a tap on a texel centre weighs 0; msaaDepthResolvedTwice (with MSAA 4, against msaa4) lets three
+ * resolve the scene split's depth after its first call too, as before.
  */
-export const UNDONE_OPTIMIZATIONS = Object.freeze(['lightDepthEveryFrame', 'composeAsBefore', 'depthPrepass', 'fullFrameBlur']);
+export const UNDONE_OPTIMIZATIONS = Object.freeze(['lightDepthEveryFrame', 'composeAsBefore', 'depthPrepass', 'fullFrameBlur', 'bothTexelsFetched', 'msaaDepthResolvedTwice']);
 
 /** Everything the features block switches, one at a time. */
 export const FEATURES = Object.freeze([...ADDITIONS, ...UNDONE_OPTIMIZATIONS]);

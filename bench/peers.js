@@ -40,7 +40,7 @@ export async function openPeers(session) {
   const babylonTimer = new GpuStageTimer({ getContext: () => babylon.gl });
   const floor = new FetchFloor(session.sss);
   const draw = {
-    threePlain: () => (peers.feature === 'msaa4' ? plainMsaa : plain).render(),
+    threePlain: () => (MSAA_FEATURES.includes(peers.feature) ? plainMsaa : plain).render(),
     ours: () => composer.render(),
     babylonPlain: () => babylon.plain.scene.render(),
     babylonSss: () => babylon.sss.scene.render(),
@@ -75,7 +75,12 @@ const UNDO_SWITCHES = Object.freeze({
   composeAsBefore: (sss) => [sss.composePass, 'fetchesEverywhere', true],
   depthPrepass: (sss) => [sss.scenePass, 'depthPrepass', true],
   fullFrameBlur: (sss) => [sss.blur, 'confineToSubsurface', false],
+  bothTexelsFetched: (sss) => [sss.blur, 'skipsEmptyTexels', false],
+  msaaDepthResolvedTwice: (sss) => [sss.scenePass, 'resolvesDepthOnce', false],
 });
+
+/** The features measured with MSAA 4 in the scene split (and the plain frame in a 4-sample buffer). */
+const MSAA_FEATURES = Object.freeze(['msaa4', 'msaaDepthResolvedTwice']);
 
 /**
  * Turns `feature` on for the session's head (FEATURES) and returns what turns it off again.
@@ -90,10 +95,9 @@ function applyFeature(peers, session, feature) {
   const off = () => { peers.feature = null; };
   if (feature === null) return off;
   if (!FEATURES.includes(feature)) throw new RangeError(`peerMeasure: feature must be one of ${FEATURES.join(', ')}, got ${feature}`);
-  if (feature === 'msaa4') {
-    sss.multisampling = 4;
-    return () => { sss.multisampling = 'auto'; off(); };
-  }
+  if (MSAA_FEATURES.includes(feature)) sss.multisampling = 4;
+  const msaaOff = MSAA_FEATURES.includes(feature) ? () => { sss.multisampling = 'auto'; off(); } : off;
+  if (feature === 'msaa4') return msaaOff;
   if (feature === 'transparent') {
     built.scene.add(peers.pane);
     return () => { built.scene.remove(peers.pane); off(); };
@@ -101,7 +105,7 @@ function applyFeature(peers, session, feature) {
   const [object, field, value] = feature === 'noDepthWrite' ? [sss.composePass, 'writesDepth', false] : UNDO_SWITCHES[feature](sss);
   const before = object[field];
   object[field] = value;
-  return () => { object[field] = before; off(); };
+  return () => { object[field] = before; msaaOff(); };
 }
 
 /** Renders `variant` once with one timer query around the whole frame. */
@@ -168,7 +172,7 @@ function fence(peers, session, measure) {
     gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, new Uint8Array(4));
     return;
   }
-  const target = measure === 'threePlain' ? (peers.feature === 'msaa4' ? peers.plainMsaa : peers.plain).readBuffer
+  const target = measure === 'threePlain' ? (MSAA_FEATURES.includes(peers.feature) ? peers.plainMsaa : peers.plain).readBuffer
     : measure === 'blur' ? session.sss.scatteredTarget
       : measure === 'floor' ? peers.floor.targets[1] : session.composer.readBuffer;
   session.renderer.readRenderTargetPixels(target, 0, 0, 1, 1, new Uint16Array(4)); // half-float targets

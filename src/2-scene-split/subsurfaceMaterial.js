@@ -109,8 +109,7 @@ function patch(material) {
     fs = inject(fs, '#include <dithering_fragment>', `#include <dithering_fragment>\n${outputGlsl}`);
     shader.fragmentShader = fs;
     let vs = shader.vertexShader;
-    vs = inject(vs, 'void main() {', 'uniform bool sssHidden; // true in the scene split\'s first call without the depth prepass\nvoid main() {');
-    vs = inject(vs, '#include <fog_vertex>', `#include <fog_vertex>\n${hiddenGlsl}`);
+    vs = inject(vs, 'void main() {', `uniform bool sssHidden; // true in the scene split's first call without the depth prepass\nvoid main() {\n${hiddenGlsl}`);
     shader.vertexShader = vs;
   };
 
