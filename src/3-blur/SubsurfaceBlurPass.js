@@ -8,9 +8,11 @@ import profileLookupGlsl from '../../shaders/common/profileLookup.glsl?raw';
 import { kernelRadiusMm } from '../profiles/kernel.js';
 import { ProfileLookup } from '../profiles/ProfileLookup.js';
 import { FootprintTable } from '../profiles/FootprintTable.js';
+import { ProfileStack } from '../profiles/ProfileStack.js';
+import { MAX_PROFILES } from '../profiles/profileSlots.js';
 import { FOOTPRINT_ROWS, FOOTPRINT_SCALES } from '../profiles/footprints.js';
 import { enumDefines, glslFloat, setDefines } from '../support/glsl.js';
-import { checkBoolean, checkOneOf, checkOptions, checkRgb } from '../support/parameterChecks.js';
+import { checkBoolean, checkInteger, checkOneOf, checkOptions, checkRgb } from '../support/parameterChecks.js';
 import { describe } from '../support/rendererSupport.js';
 import { FOLLOW_SURFACE_MODES } from '../options.js';
 import { SurfacePass } from './SurfacePass.js';
@@ -96,15 +98,17 @@ export class SubsurfaceBlurPass extends SurfacePass {
         strength: { value: new Vector3(1, 1, 1) },
         tProfile: { value: null },
         marginalRangeMm: { value: 1 },
+        marginalRangesMm: { value: new Float32Array(1) },
         tFootprints: { value: null },
       },
     }, surface);
     this.direction = direction;
     this.mode = mode;
-    this.profileLookup = profileLookup;
-    this.uniforms.tProfile.value = profileLookup?.texture ?? null;
     /** The footprint allocation for the profile and the kernel's tap count ('footprint' mode). */
     this.footprintTable = profileLookup ? new FootprintTable(profileLookup) : null;
+    /** Several profiles' tables, stacked ('footprint' mode with more than one profile). */
+    this.profileStack = new ProfileStack();
+    this.setProfiles(profileLookup ? [profileLookup] : []);
     /** 'footprint' mode: taps chosen per pixel for its scale ('auto'), or the kernel's count everywhere. */
     this.autoFootprints = autoFootprints;
     this.setKernel(kernel);
@@ -117,11 +121,28 @@ export class SubsurfaceBlurPass extends SurfacePass {
   }
 
   /**
+   * The profiles blurred, by slot (src/profiles/profileSlots.js): one is the pass as without this
+   * feature (PROFILE_COUNT 1, the lookup's own tables); several (up to MAX_PROFILES) recompile it
+   * once with PROFILE_COUNT, each pixel then reading its slot's tables from the ProfileStack.
+   * @param {readonly ProfileLookup[]} lookups
+   */
+  setProfiles(lookups) {
+    if (lookups.length > 0) checkInteger('profiles', lookups.length, 1, MAX_PROFILES, 'profiles');
+    /** The profiles' tables, by slot (empty: none, 'taps' mode only). */
+    this.profileLookups = [...lookups];
+    this.profileLookup = lookups[0] ?? null;
+    if (this.footprintTable) this.footprintTable.lookup = this.profileLookup;
+    this.uniforms.tProfile.value = this.profileLookup?.texture ?? null;
+    setDefines(this.material, { PROFILE_COUNT: Math.max(lookups.length, 1) });
+  }
+
+  /**
    * The reach of the kernel, mm: below half a pixel of it a pixel does no work. 'taps': the outermost
-   * tap; 'footprint': the radius holding 99 % of the marginal (its tail is sampled at least a pixel out).
+   * tap; 'footprint': the radius holding 99 % of the marginal (its tail is sampled at least a pixel
+   * out), the widest profile's.
    */
   get radiusMm() {
-    return this.mode === 'footprint' ? this.profileLookup.marginalRadiusMm : kernelRadiusMm(this.kernel);
+    return this.mode === 'footprint' ? Math.max(...this.profileLookups.map((lookup) => lookup.marginalRadiusMm)) : kernelRadiusMm(this.kernel);
   }
 
   /** What the footprint table is built for: 'auto', or the kernel's tap count. */
@@ -164,7 +185,15 @@ export class SubsurfaceBlurPass extends SurfacePass {
 
   render(renderer, writeBuffer, readBuffer, deltaTime, maskActive) {
     if (this.profileLookup) this.uniforms.marginalRangeMm.value = this.profileLookup.marginalRangeMm;
-    if (this.mode === 'footprint') this.uniforms.tFootprints.value = this.footprintTable.update(this.footprintSamples);
+    if (this.mode === 'footprint' && this.profileLookups.length > 1) {
+      this.profileStack.update(this.profileLookups, this.footprintSamples);
+      this.uniforms.tProfile.value = this.profileStack.profileTexture;
+      this.uniforms.tFootprints.value = this.profileStack.footprintTexture;
+      this.uniforms.marginalRangesMm.value = this.profileStack.marginalRangesMm;
+    } else if (this.mode === 'footprint') {
+      this.uniforms.tProfile.value = this.profileLookup.texture;
+      this.uniforms.tFootprints.value = this.footprintTable.update(this.footprintSamples);
+    }
     this.uniforms.kernelRadiusMm.value = this.radiusMm;
     super.render(renderer, writeBuffer, readBuffer, deltaTime, maskActive);
   }
@@ -172,5 +201,6 @@ export class SubsurfaceBlurPass extends SurfacePass {
   dispose() {
     super.dispose();
     this.footprintTable?.dispose();
+    this.profileStack.dispose();
   }
 }

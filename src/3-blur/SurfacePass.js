@@ -63,7 +63,7 @@ export class SurfacePass extends ShaderPass {
     }
     super({
       name,
-      defines: { ...SAMPLING_DEFINES, ...enumDefines('FOLLOW_SURFACE', FOLLOW_SURFACE_MODES, 'drop'), FORESHORTEN: 1, SSS_COVERAGE: 0, ...defines },
+      defines: { ...SAMPLING_DEFINES, ...enumDefines('FOLLOW_SURFACE', FOLLOW_SURFACE_MODES, 'drop'), FORESHORTEN: 1, SSS_COVERAGE: 0, PROFILE_COUNT: 1, ...defines },
       uniforms: {
         tDiffuse: { value: null },
         tSurface: { value: null },
