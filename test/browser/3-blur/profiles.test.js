@@ -72,6 +72,16 @@ describe('skin and marble in one pipeline', () => {
     expect(worstIn(two, msaa.output, two.output, 0, two.width)).toBeLessThan(2e-3);
   });
 
+  it("shines through with the material's own profile (its transmittance table)", async () => {
+    // A 3 mm slab lit from behind: the transmitted light is T(thickness) of the material's profile.
+    const backlit = (o) => runLab(page, { scene: 'backlit', thicknessMm: 3, transmittance: true, reads: ['output'], ...o });
+    const named = await backlit({ material: { profile: 'marble' } });
+    const byPipeline = await backlit({ sss: { profile: 'marble' } });
+    const skin = await backlit({});
+    expect(worstIn(named, named.output, byPipeline.output, 0, named.width)).toBe(0);
+    expect(worstIn(named, named.output, skin.output, 0, named.width)).toBeGreaterThan(0.01); // measured 0.086
+  });
+
   it('keeps a frame of one profile as before: PROFILE_COUNT 1, a two-channel surface, the same pixels whichever way the profile is named', async () => {
     expect([skinAlone.profileCount, skinAlone.surfaceChannels, marbleAlone.profileCount, marbleAlone.surfaceChannels]).toEqual([1, 2, 1, 2]);
     // The marble half named by its material (the pipeline's profile skin) and by the pipeline.
