@@ -36,14 +36,14 @@ uniform bool perspective;       // false for an orthographic camera: the step do
 		uniform float marginalRangeMm;              // ProfileLookup.marginalRangeMm
 		#define SSS_MARGINAL_ROW 1
 		#define SSS_MARGINAL_RANGE_MM marginalRangeMm
-		#define SSS_FOOTPRINT_ROW_OFFSET 0
+		#define SSS_FOOTPRINT_ROW( row ) row
 	#else
 		// Several profiles: tProfile and tFootprints are ProfileStack's, slot p's rows at 2p + 1 and
 		// from p * SSS_FOOTPRINT_ROWS; the pixel reads its own slot's (sssSlot).
 		uniform float marginalRangesMm[ PROFILE_COUNT ]; // ProfileStack.marginalRangesMm
 		#define SSS_MARGINAL_ROW ( 2 * sssSlot + 1 )
 		#define SSS_MARGINAL_RANGE_MM marginalRangesMm[ sssSlot ]
-		#define SSS_FOOTPRINT_ROW_OFFSET ( sssSlot * SSS_FOOTPRINT_ROWS )
+		#define SSS_FOOTPRINT_ROW( row ) ( sssSlot * SSS_FOOTPRINT_ROWS + row )
 	#endif
 	// FootprintTable.texture: row r is scale SSS_FOOTPRINT_SCALE_MIN * 2^(r / SSS_FOOTPRINT_PER_OCTAVE)
 	// px/mm; texel j holds footprint j's outer edge (infinite for the last one) and where it is
@@ -128,7 +128,7 @@ void main() {
 		int lastEdge = 0; // pixels; footprint j covers pixels lastEdge + 1 .. edge on each side
 		for ( int j = 0; j <= BLOCKS; j ++ ) {
 			if ( all( greaterThan( energyBelow, vec3( 0.5 - SSS_ENERGY_LEFT ) ) ) ) break; // nothing left
-			vec2 footprint = texelFetch( tFootprints, ivec2( j, row + SSS_FOOTPRINT_ROW_OFFSET ), 0 ).rg; // outer edge, sample offset (mm)
+			vec2 footprint = texelFetch( tFootprints, ivec2( j, SSS_FOOTPRINT_ROW( row ) ), 0 ).rg; // outer edge, sample offset (mm)
 			// The last footprint runs to the kernel's end and takes all the energy left.
 			bool last = j == BLOCKS || isinf( footprint.x );
 			int edge = last ? lastEdge + 1 : max( int( floor( footprint.x * stepPx + 0.5 ) ), lastEdge + 1 );
