@@ -1,7 +1,6 @@
 // How the demo's state (demo/state.js) reaches the scene and the pipeline: the state keys in groups,
 // and one applier per group (a group is applied whole when one of its keys changes).
 import { getProfile } from '../src/index.js';
-import { METHOD_TABLE } from '../src/internals.js';
 import { setLightDirection } from './headScene.js';
 import { shotCamera } from './framing.js';
 import { drawKernel } from './kernelPlot.js';
@@ -30,28 +29,23 @@ export function groupOf(key) {
 export function createAppliers(demo) {
   const { state, sss, material, marble, rig, light, camera, controls, kernelCanvas, shotButtons } = demo;
   const showDivider = () => demo.divider.show(state.split, dividerVisible(state));
-  // The marble piece has a profile of its own: shown (and subsurface) only with a method that
-  // blurs several profiles per frame; hidden, it is unbound, so the frame holds one profile.
-  const blursSeveral = () => METHOD_TABLE[state.method].profiles > 1;
-  const placeMarble = () => {
-    marble.visible = state.marble && blursSeveral();
-    if (marble.visible) sss.makeSubsurface(marble.material, { profile: 'marble' });
-    else sss.removeSubsurface(marble.material);
-  };
+
   return {
     sss: () => {
       sss.scattering = state.sss;
       showDivider();
     },
-    kernel: () => {
-      if (!blursSeveral()) sss.removeSubsurface(marble.material); // before a method of one profile refuses it
-      Object.assign(sss, {
-        profile: state.profile, method: state.method, samples: state.samples,
-        strength: [...state.strength], falloff: [...state.falloff],
-      });
-      placeMarble();
+    kernel: () => Object.assign(sss, {
+      profile: state.profile, method: state.method, samples: state.samples,
+      strength: [...state.strength], falloff: [...state.falloff],
+    }),
+    // The marble piece, with a profile of its own in the head's pipeline (every method of the
+    // demo blurs several per frame). Hidden, it is unbound: the frame holds one profile, as before.
+    marble: () => {
+      marble.visible = state.marble;
+      if (state.marble) sss.makeSubsurface(marble.material, { profile: 'marble' });
+      else sss.removeSubsurface(marble.material);
     },
-    marble: placeMarble,
     material: () => sss.makeSubsurface(material, { widthMm: state.width, translucency: state.translucency, shrinkMm: state.shrink }),
     followSurface: () => Object.assign(sss, { followSurface: state.followSurface, depthThresholdMm: state.depthThreshold }),
     transmittance: () => { sss.transmittance = state.transmittance; },

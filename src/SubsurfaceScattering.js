@@ -74,7 +74,7 @@ export { MIN_KERNEL_PIXELS } from './3-blur/samplingModel.js';
  * @property {boolean} [transmittance=true] light through thin parts (with the pipeline's light)
  * @property {number} [translucency=0] 0..1 (exclusive): light through regardless of thickness
  * @property {number} [shrinkMm=0.6] how far the light depth lookup moves inwards, mm (0..1000)
- * @property {import('./options.js').ProfileName|object} [profile] this material's diffusion profile, as the pipeline's `profile` (left out: the pipeline's); up to 8 per pipeline, with method 'footprint' or 'reference' when several
+ * @property {import('./options.js').ProfileName|object} [profile] this material's diffusion profile, as the pipeline's `profile` (left out: the pipeline's); up to 8 per pipeline, not with method 'dense'
  * @property {number} [strength] widthScale's old name
  */
 // </options-typedef>

@@ -18,8 +18,8 @@ import {
  * - blur: the blur stage's mode ('footprint' or 'taps' of SubsurfaceBlurPass, or 'dense' for
  *   DenseSubsurfacePass instead of the two separable passes); src/3-blur/blurPlan.js dispatches on it;
  * - profiles: how many profiles (materials' `profile`) it blurs in one frame: 'footprint' reads each
- *   pixel's own tables; 'reference' blurs every profile with its built-in kernel (the profile
- *   drives transmittance only); 'marginal' and 'dense' hold one profile's kernel.
+ *   pixel's own tables, 'marginal' its own kernel; 'reference' blurs every profile with its built-in
+ *   kernel (the profile drives transmittance only); 'dense' holds one profile's table.
  * 'footprint' (default): per pixel, footprints of whole pixels weighed exactly (the sampling model,
  * item 8, in docs/ARCHITECTURE.md, "Stage 3: the sampling model"); 'marginal' and 'reference':
  * computeKernel's fixed taps ('reference' is Jimenez 2012's kernel, its profile built in); 'dense':
@@ -28,7 +28,7 @@ import {
  */
 export const METHOD_TABLE = Object.freeze({
   footprint: Object.freeze({ kernel: 'marginal', blur: 'footprint', profiles: MAX_PROFILES }),
-  marginal: Object.freeze({ kernel: 'marginal', blur: 'taps', profiles: 1 }),
+  marginal: Object.freeze({ kernel: 'marginal', blur: 'taps', profiles: MAX_PROFILES }),
   reference: Object.freeze({ kernel: 'reference', blur: 'taps', profiles: MAX_PROFILES }),
   dense: Object.freeze({ kernel: 'marginal', blur: 'dense', profiles: 1 }), // the kernel only waits for a switch back
 });
@@ -239,7 +239,7 @@ export const MATERIAL_SCHEMA = Object.freeze({
   },
   profile: {
     default: undefined, type: "import('./options.js').ProfileName|object",
-    doc: `this material's diffusion profile, as the pipeline's \`profile\` (left out: the pipeline's); up to ${MAX_PROFILES} per pipeline, with method 'footprint' or 'reference' when several`,
+    doc: `this material's diffusion profile, as the pipeline's \`profile\` (left out: the pipeline's); up to ${MAX_PROFILES} per pipeline, not with method 'dense'`,
     check: checkProfile,
   },
 });

@@ -29,6 +29,14 @@ uniform bool perspective;       // false for an orthographic camera: the step do
 #include "common/surfaceSlope.glsl"
 #include "common/surfaceTap.glsl"
 
+#if KERNEL_MODE == KERNEL_MODE_TAPS && PROFILE_COUNT > 1
+	// Several profiles: row p holds slot p's kernel, laid out as `kernel` (SubsurfaceBlurPass.setKernel).
+	uniform sampler2D tKernels;
+	#define SSS_KERNEL_TAP( i ) texelFetch( tKernels, ivec2( i, sssSlot ), 0 )
+#else
+	#define SSS_KERNEL_TAP( i ) kernel[ i ]
+#endif
+
 #if KERNEL_MODE == KERNEL_MODE_FOOTPRINT
 	#define BLOCKS ( ( SAMPLES - 1 ) / 2 - 1 ) // footprints per side before the tail
 	uniform sampler2D tProfile;                 // ProfileLookup.texture, row 1: G(x) = ∫_0^x marginal
@@ -112,11 +120,11 @@ void main() {
 	vec3 weightSum;
 
 	#if KERNEL_MODE == KERNEL_MODE_TAPS
-		weightSum = kernel[ 0 ].rgb;
+		weightSum = SSS_KERNEL_TAP( 0 ).rgb;
 		sum = centre * weightSum;
 		for ( int i = 1; i < SAMPLES; i ++ ) {
 			if ( i >= tapCount ) break;
-			addTap( kernel[ i ].a * stepPx, kernel[ i ].rgb, pixel, surface.r, slope, centre, sum, weightSum );
+			addTap( SSS_KERNEL_TAP( i ).a * stepPx, SSS_KERNEL_TAP( i ).rgb, pixel, surface.r, slope, centre, sum, weightSum );
 		}
 	#else
 		// The table row nearest this pixel's scale (src/profiles/footprints.js's footprintRowOf).

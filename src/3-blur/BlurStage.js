@@ -47,7 +47,7 @@ export class BlurStage {
     /** false turns the blur off (the orchestrator's `scattering`). */
     this.scattering = true;
     this._settings = { profile: profileLookup.profile, method: checkOption(PIPELINE_SCHEMA, 'method', method), samples, strength, falloff };
-    this._kernels = new Map(); // computed kernels by their arguments: 'auto' switches between a few
+    this._kernels = new WeakMap(); // profile → computed kernels by their arguments: 'auto' switches between a few
     this._surface = surface;
     this._blurTarget = new WebGLRenderTarget(1, 1, { type, depthBuffer: false });
     this._blurTarget.texture.name = 'subsurface.horizontal';
@@ -128,13 +128,20 @@ export class BlurStage {
     return this.autoSamples ? blurModeOf(this.method).autoSamples(0) : this.samples;
   }
 
-  /** computeKernel for this method's kernel (METHOD_TABLE) with `samples` taps, cached. */
-  _kernelFor(samples) {
-    const { profile, method, strength, falloff } = this._settings;
+  /** computeKernel for this method's kernel (METHOD_TABLE) with `samples` taps, for `profile` (default: the first slot's), cached. */
+  _kernelFor(samples, profile = this._settings.profile) {
+    const { method, strength, falloff } = this._settings;
     const args = { profile, samples, strength, falloff, method: METHOD_TABLE[method].kernel };
-    const key = JSON.stringify([profile.name, args.method, samples, strength, falloff]);
-    if (!this._kernels.has(key)) this._kernels.set(key, computeKernel(args));
-    return this._kernels.get(key);
+    const key = JSON.stringify([args.method, samples, strength, falloff]);
+    if (!this._kernels.has(profile)) this._kernels.set(profile, new Map());
+    const kernels = this._kernels.get(profile);
+    if (!kernels.has(key)) kernels.set(key, computeKernel(args));
+    return kernels.get(key);
+  }
+
+  /** Every slot's kernel of `samples` taps (the first is `kernel`'s). */
+  _slotKernels(samples) {
+    return this.profileLookups.map((lookup) => this._kernelFor(samples, lookup.profile));
   }
 
   /**
@@ -145,7 +152,8 @@ export class BlurStage {
   get planSettings() {
     const counts = this.autoSamples ? AUTO_SAMPLES : [this.samples];
     const kernelReachMm = {};
-    for (const n of counts) Object.defineProperty(kernelReachMm, n, { enumerable: true, get: () => kernelRadiusMm(this._kernelFor(n)) });
+    const reachOf = (n) => Math.max(...this._slotKernels(n).map(kernelRadiusMm)); // the widest profile's
+    for (const n of counts) Object.defineProperty(kernelReachMm, n, { enumerable: true, get: () => reachOf(n) });
     return {
       method: this.method,
       samples: this.samples,
@@ -277,7 +285,8 @@ export class BlurStage {
   /** @param {Float32Array} kernel */
   _setPassKernels(kernel) {
     const capacity = blurModeOf(this.method).tapCapacity(kernel.length / 4, this.autoSamples);
-    for (const pass of [this.horizontalPass, this.verticalPass]) pass.setKernel(kernel, capacity);
+    const slotKernels = passModeOf(this.method) === 'taps' ? this._slotKernels(kernel.length / 4) : [kernel]; // footprints read the tables
+    for (const pass of [this.horizontalPass, this.verticalPass]) pass.setKernel(kernel, capacity, slotKernels);
     this.kernel = kernel;
   }
 

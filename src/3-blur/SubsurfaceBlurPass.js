@@ -2,7 +2,7 @@
 // them (horizontal, then vertical) make the paper's two screen-space passes. Only subsurface
 // pixels change; taps on other pixels, off screen or on another surface are dropped and the rest
 // renormalised per channel (or lerped back to the centre colour, as in the reference).
-import { Vector3 } from 'three';
+import { DataTexture, FloatType, NearestFilter, RGBAFormat, Vector3 } from 'three';
 import blurGlsl from '../../shaders/3-blur/subsurfaceBlur.frag.glsl?raw';
 import profileLookupGlsl from '../../shaders/common/profileLookup.glsl?raw';
 import { kernelRadiusMm } from '../profiles/kernel.js';
@@ -100,6 +100,7 @@ export class SubsurfaceBlurPass extends SurfacePass {
         marginalRangeMm: { value: 1 },
         marginalRangesMm: { value: new Float32Array(1) },
         tFootprints: { value: null },
+        tKernels: { value: null },
       },
     }, surface);
     this.direction = direction;
@@ -139,10 +140,10 @@ export class SubsurfaceBlurPass extends SurfacePass {
   /**
    * The reach of the kernel, mm: below half a pixel of it a pixel does no work. 'taps': the outermost
    * tap; 'footprint': the radius holding 99 % of the marginal (its tail is sampled at least a pixel
-   * out), the widest profile's.
+   * out); the widest profile's.
    */
   get radiusMm() {
-    return this.mode === 'footprint' ? Math.max(...this.profileLookups.map((lookup) => lookup.marginalRadiusMm)) : kernelRadiusMm(this.kernel);
+    return this.mode === 'footprint' ? Math.max(...this.profileLookups.map((lookup) => lookup.marginalRadiusMm)) : Math.max(...this.slotKernels.map(kernelRadiusMm));
   }
 
   /** What the footprint table is built for: 'auto', or the kernel's tap count. */
@@ -165,8 +166,11 @@ export class SubsurfaceBlurPass extends SurfacePass {
    * @param {number} [tapCapacity] 'taps' mode: the most taps the shader is compiled for (at least
    *   the kernel's); a kernel of fewer taps is then a uniform change, not a recompile, so 'auto'
    *   can change the count every frame. 'footprint' mode: ignored (the kernel's count is the budget).
+   * @param {readonly Float32Array[]} [slotKernels] 'taps' mode with several profiles (setProfiles):
+   *   each slot's kernel of the same count, `kernel` first; the shader reads slot p's from row p of
+   *   a float texture instead of the `kernel` uniform
    */
-  setKernel(kernel, tapCapacity = 0) {
+  setKernel(kernel, tapCapacity = 0, slotKernels = [kernel]) {
     if (!(kernel instanceof Float32Array) || kernel.length < 4 || kernel.length % 4 !== 0) {
       throw new TypeError('SubsurfaceBlurPass: kernel must be a Float32Array of 4 numbers per tap (see computeKernel)');
     }
@@ -181,6 +185,23 @@ export class SubsurfaceBlurPass extends SurfacePass {
     this.uniforms.kernelRadiusMm.value = kernelRadiusMm(kernel);
     setDefines(this.material, { SAMPLES: capacity });
     this.kernel = kernel;
+    this.slotKernels = slotKernels;
+    if (slotKernels.length > 1) this._writeSlotKernels(slotKernels, capacity);
+  }
+
+  /** Row p of `tKernels`: slot p's kernel, zero-padded to the capacity like the uniform. */
+  _writeSlotKernels(slotKernels, capacity) {
+    let texture = this.uniforms.tKernels.value;
+    if (!texture || texture.image.width !== capacity || texture.image.height !== slotKernels.length) {
+      texture?.dispose();
+      texture = new DataTexture(new Float32Array(capacity * 4 * slotKernels.length), capacity, slotKernels.length, RGBAFormat, FloatType);
+      texture.minFilter = texture.magFilter = NearestFilter;
+      texture.name = 'SubsurfaceBlurPass.slotKernels';
+      this.uniforms.tKernels.value = texture;
+    }
+    texture.image.data.fill(0);
+    slotKernels.forEach((k, slot) => texture.image.data.set(k, slot * capacity * 4));
+    texture.needsUpdate = true;
   }
 
   render(renderer, writeBuffer, readBuffer, deltaTime, maskActive) {
@@ -202,5 +223,6 @@ export class SubsurfaceBlurPass extends SurfacePass {
     super.dispose();
     this.footprintTable?.dispose();
     this.profileStack.dispose();
+    this.uniforms.tKernels.value?.dispose();
   }
 }

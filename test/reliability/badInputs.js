@@ -136,10 +136,10 @@ export const CALL_CASES = [
   ['nine material profiles in one pipeline', (t) => {
     for (let k = 1; k <= 9; k++) t.sss.makeSubsurface(new t.THREE.MeshStandardMaterial(), { profile: t.SSS.burleyProfile({ scatterDistanceMm: [k, k, k] }) });
   }, 'RangeError', /profile: at most 8 profiles per pipeline, got 9/],
-  ["a second profile with method 'marginal'", (t) => {
-    t.sss.method = 'marginal';
+  ["a second profile with method 'dense'", (t) => {
+    t.sss.method = 'dense';
     t.sss.makeSubsurface(new t.THREE.MeshStandardMaterial(), { profile: 'marble' });
-  }, 'RangeError', /method 'marginal' blurs 1 profile per frame and the materials use 2 \(their `profile`\); use method 'footprint' or 'reference'/],
+  }, 'RangeError', /method 'dense' blurs 1 profile per frame and the materials use 2 \(their `profile`\); use method 'footprint' or 'marginal' or 'reference'/],
   ["method 'dense' with two profiles", (t) => {
     t.sss.makeSubsurface(new t.THREE.MeshStandardMaterial(), { profile: 'marble' });
     t.sss.method = 'dense';

@@ -58,11 +58,15 @@ describe('skin and marble in one pipeline', () => {
     expect(worstIn(two, two.output, marbleAlone.output, ...near)).toBeLessThan(1e-3);
   });
 
-  it("parts them with method 'reference' too (its built-in kernel on both sides)", async () => {
-    const reference = { sss: { method: 'reference' } };
-    const twoReference = await frame([SKIN, MARBLE], reference);
-    expect(worstIn(two, twoReference.output, (await frame([null, MARBLE], reference)).output, seam, two.width)).toBeLessThan(1e-3);
-  });
+  for (const method of ['marginal', 'reference']) {
+    it(`gives each half its one-profile frame with method '${method}' too (fixed taps: each slot's kernel, 'reference''s built in)`, async () => {
+      const sss = { sss: { method } };
+      const both = await frame([SKIN, MARBLE], sss);
+      expect(both.glError).toBe(0);
+      expect(worstIn(two, both.output, (await frame([SKIN, null], sss)).output, 0, seam)).toBeLessThan(1e-3);
+      expect(worstIn(two, both.output, (await frame([null, MARBLE], sss)).output, seam, two.width)).toBeLessThan(1e-3);
+    });
+  }
 
   it('with MSAA (coverage-weighted slots) gives the same halves', async () => {
     // The seam lies on a pixel edge, so no pixel is shared: the resolved slots are whole numbers

@@ -31,14 +31,14 @@ describe('profileSlots', () => {
 });
 
 describe('checkProfileCount', () => {
-  it("lets 'footprint' and 'reference' blur several profiles and refuses 'marginal' and 'dense' more than one", () => {
+  it("lets 'footprint', 'marginal' and 'reference' blur several profiles and refuses 'dense' more than one", () => {
     const several = METHODS.filter((method) => { try { checkProfileCount(method, 2); return true; } catch { return false; } });
-    expect(several).toEqual(['footprint', 'reference']);
+    expect(several).toEqual(['footprint', 'marginal', 'reference']);
     for (const method of METHODS) expect(() => checkProfileCount(method, 1)).not.toThrow();
     expect(() => checkProfileCount('footprint', MAX_PROFILES + 1)).toThrow(RangeError);
   });
 
   it('names the method, the materials\' profile and the methods that would do', () => {
-    expect(() => checkProfileCount('marginal', 3)).toThrow(/method 'marginal' blurs 1 profile per frame and the materials use 3 \(their `profile`\); use method 'footprint' or 'reference'/);
+    expect(() => checkProfileCount('dense', 3)).toThrow(/method 'dense' blurs 1 profile per frame and the materials use 3 \(their `profile`\); use method 'footprint' or 'marginal' or 'reference'/);
   });
 });
