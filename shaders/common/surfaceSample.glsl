@@ -56,6 +56,9 @@ vec4 sssCovered( const in vec3 colour, const in float coverage ) {
 	// mean slot rounded to the nearest (a shared pixel is blurred with its majority's profile).
 	int sssSlot;
 
+	// A texel is on a slot when its mean slot is within SSS_SLOT_TOLERANCE of it (SurfacePass: half
+	// the smallest step a resolve of MAX_MULTISAMPLING samples makes between two slots).
+
 	float sssSlotAt( const in ivec2 texel, const in float coverage ) {
 		float slot = texelFetch( tSurface, texel, 0 ).b;
 		#if SSS_COVERAGE == 1
@@ -68,9 +71,9 @@ vec4 sssCovered( const in vec3 colour, const in float coverage ) {
 		return clamp( int( floor( sssSlotAt( pixel, coverage ) + 0.5 ) ), 0, PROFILE_COUNT - 1 );
 	}
 
-	// How much a texel is on the centre's profile: 1 on it, 0 on another; a shared texel by how
-	// near its mean slot is to the centre's (a half-and-half texel of slots 0 and 1 counts half).
+	// Whether a texel is on the centre's profile: 1 on it; 0 on another, and 0 for a texel two
+	// profiles share (its light is theirs mixed: it would carry one's light into the other).
 	float sssOnProfile( const in ivec2 texel, const in float coverage ) {
-		return max( 1.0 - abs( sssSlotAt( texel, coverage ) - float( sssSlot ) ), 0.0 );
+		return abs( sssSlotAt( texel, coverage ) - float( sssSlot ) ) < SSS_SLOT_TOLERANCE ? 1.0 : 0.0;
 	}
 #endif

@@ -105,7 +105,7 @@ const SCENES = {
   /**
    * Two half slabs side by side at the same depth, meeting at x = 0 (the centre column's edge):
    * `sides` = [left, right], each { albedo, pattern (optional), material: makeSubsurface options }
-   * or null (left out).
+   * or null (left out); `seamShiftWorld` moves both (half a pixel: the seam through a pixel's middle).
    */
   sideBySide(o) {
     const base = SCENES.slab({ ...o, pattern: 'uniform' });
@@ -117,7 +117,7 @@ const SCENES = {
       const map = PATTERNS[side.pattern ?? 'uniform'](o);
       const material = new THREE.MeshStandardMaterial({ color: new THREE.Color().setScalar(side.albedo), roughness: 1, metalness: 0, map });
       const half = new THREE.Mesh(new THREE.PlaneGeometry(o.slabSize / 2, o.slabSize), material);
-      half.position.x = (i === 0 ? -1 : 1) * (o.slabSize / 4);
+      half.position.x = (i === 0 ? -1 : 1) * (o.slabSize / 4) + (o.seamShiftWorld ?? 0);
       base.scene.add(half);
       base.subsurface.push(material);
       base.subsurfaceOptions.push(side.material ?? {});
