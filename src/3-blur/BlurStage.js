@@ -5,6 +5,8 @@
 // the orchestrator's frame calls `blur.plan(pixelsPerMm)` then `blur.render()`, and its setters
 // forward here. Which method does what is BLUR_MODES's (src/3-blur/blurPlan.js) and METHOD_TABLE's.
 // The profiles are the orchestrator's (one per slot, src/profiles/profileSlots.js): setProfiles.
+// Over 300 lines because it is the stage's one owner: its settings' setters, the kernels of every
+// method and profile, the plan, the scissor and the two targets (the passes are their own files).
 import { WebGLRenderTarget } from 'three';
 import { computeKernel, kernelRadiusMm } from '../profiles/kernel.js';
 import { getProfile } from '../profiles/presets.js';
