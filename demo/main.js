@@ -8,7 +8,7 @@ import { EffectComposer } from 'three/addons/postprocessing/EffectComposer.js';
 import { OutputPass } from 'three/addons/postprocessing/OutputPass.js';
 import { SubsurfaceScattering } from '../src/index.js';
 import { loadHead } from './headModel.js';
-import { createHeadScene, HEAD_WORLD_UNIT_IN_MM } from './headScene.js';
+import { createHeadScene, createMarblePiece, HEAD_WORLD_UNIT_IN_MM } from './headScene.js';
 import { SHOTS } from './framing.js';
 import { defaultState, parseHash, formatHash } from './state.js';
 import { figureState } from './figures.js';
@@ -99,6 +99,8 @@ function createPipeline(renderer, head) {
   // Skin at its physical scale (1 profile mm = 1 mm), light through the ears from the spot light.
   const sss = new SubsurfaceScattering({ scene, camera, light, worldUnitInMm: HEAD_WORLD_UNIT_IN_MM, samples: 'auto' });
   sss.makeSubsurface(material);
+  const marble = createMarblePiece(); // made subsurface, with its own profile, while shown (demo/appliers.js)
+  scene.add(marble);
 
   // Linear HDR all the way to OutputPass (tone mapping + sRGB last).
   // MSAA: the scene split follows the composer's samples, so silhouettes and creases are antialiased.
@@ -109,7 +111,7 @@ function createPipeline(renderer, head) {
 
   const timings = new PassTimings(renderer, sss);
   const hud = new TimingsHud(document.getElementById('hud'), timings);
-  return { renderer, head, rig, camera, light, material, controls, sss, composer, outputPass, timings, hud };
+  return { renderer, head, rig, camera, light, material, marble, controls, sss, composer, outputPass, timings, hud };
 }
 
 /** Follows the viewport's size and the pixel ratio (and the shot's framing, for the window's shape). */

@@ -20,7 +20,7 @@ import { Color, FloatType, HalfFloatType } from 'three';
 import { Pass } from 'three/addons/postprocessing/Pass.js';
 import { getSubsurface } from './subsurfaceMaterial.js';
 import { subsurfaceScreenBox } from './subsurfaceScreenBox.js';
-import { ATTACHMENTS, DRAW_BUFFERS, DRAW_PHASES, createSubsurfaceTarget, drawingInto } from './subsurfaceTarget.js';
+import { ATTACHMENTS, DRAW_BUFFERS, DRAW_PHASES, createSubsurfaceTarget, drawingInto, setSurfaceChannels } from './subsurfaceTarget.js';
 import { assertFloatRenderTargets, describe } from '../support/rendererSupport.js';
 import { checkOptions } from '../support/parameterChecks.js';
 import { PASS_BOOLEANS, booleanFields } from '../support/booleanFields.js';
@@ -129,6 +129,15 @@ export class SubsurfaceScenePass extends Pass {
     this.renderTarget.samples = samples;
     this.renderTarget.dispose(); // three rebuilds its buffers, multisampled or not, on the next use
     return true;
+  }
+
+  /**
+   * How many profiles the subsurface materials write (their slots): several grow the surface
+   * attachment by the slot channel (subsurfaceTarget.js's setSurfaceChannels).
+   * @param {number} count
+   */
+  setProfileCount(count) {
+    setSurfaceChannels(this.renderTarget, count);
   }
 
   /** 'subsurface', 'opaque' or 'transparent' for a material seen in the last render, else undefined. */

@@ -84,6 +84,7 @@ function patch(material) {
     sssWidthWorld: { value: 0 },
     sssWidthScale: { value: 1 },
     sssDebugOutput: { value: 0 },
+    sssProfileSlot: { value: 0 },
     sssTransmits: { value: false },
     sssLightType: { value: 0 },
     ...lightUniformSlots(),
@@ -156,6 +157,7 @@ function applyBinding(uniforms, binding, scene, camera) {
   uniforms.sssWidthWorld.value = options.widthMm / options.worldUnitInMm;
   uniforms.sssWidthScale.value = options.widthScale;
   uniforms.sssDebugOutput.value = MATERIAL_OUTPUTS.indexOf(binding.debugOutput);
+  uniforms.sssProfileSlot.value = binding.profileSlot;
   uniforms.sssTransmits.value = false;
   if (!transmittance || !scene || !camera) return;
   const { light, valid } = transmittance.lightDepth;
@@ -179,6 +181,8 @@ function withWidthScale(options) {
  * @property {Record<string, import('three').IUniform>} uniforms the hook's uniforms (shared by every binding of the material)
  * @property {{ widthMm: number, widthScale: number, worldUnitInMm: number, transmittance: object|null }} options
  * @property {'diffuse'|'transmittance'|'thickness'} debugOutput what the diffuse attachment receives
+ * @property {number} profileSlot the slot of the material's profile in the pipeline's frame
+ *   (src/profiles/profileSlots.js; 0 with one profile), written to the surface attachment's b
  * @property {number} widthWorld world units per profile millimetre (width × widthScale)
  * @property {(options?: { widthMm?: number, widthScale?: number, worldUnitInMm?: number, transmittance?: object|null }) => void} update
  * @property {() => void} dispose unbinds these settings; the material is restored once none is left
@@ -226,6 +230,8 @@ export function makeSubsurface(material, options = {}, owner = STANDALONE) {
     /** Checked transmittance settings, or null. */
     transmittance: null,
     _debugOutput: 'diffuse',
+    /** The profile's slot in this pipeline's frame (its pipeline sets it; 0: one profile). */
+    profileSlot: 0,
     /** What the diffuse attachment receives: one of MATERIAL_OUTPUTS ('diffuse' normally; the others for debug views). */
     set debugOutput(mode) {
       this._debugOutput = checkOneOf('debugOutput', mode, MATERIAL_OUTPUTS);
