@@ -17,10 +17,11 @@ export const PEER_MEASURES = Object.freeze([...VARIANTS, 'stages', 'blur', 'floo
 /**
  * What version 0.2 added to a frame, each measured against the frame without it: MSAA 4 in the
  * scene split (`multisampling`), a transparent object (drawn after the compose), and the compose's
- * depth write (the scene's depth handed on to later passes). Timed on ours frame by frame
- * ('stages') and on the plain three.js frame (`threePlain`) alike.
+ * depth write (the scene's depth handed on to later passes), and (issue 22) two balls beside
+ * the head in its profile (threeObjects) or in two more (threeProfiles: three profiles on screen).
+ * Timed on ours frame by frame ('stages') and on the plain three.js frame (`threePlain`) alike.
  */
-export const ADDITIONS = Object.freeze(['msaa4', 'transparent', 'noDepthWrite']);
+export const ADDITIONS = Object.freeze(['msaa4', 'transparent', 'noDepthWrite', 'threeObjects', 'threeProfiles']);
 
 /**
  * Issue 10's and issue 19's optimizations, each undone for the measure by a switch of the passes

@@ -291,7 +291,9 @@ function featuresSection(json) {
     ['MSAA 4 (`multisampling: 4`; the plain frame into a 4-sample buffer)', 'msaa4', ['scene', 'blurH', 'blurV', 'compose']],
     ['a transparent pane over the chin (drawn after the compose)', 'transparent', ['transparent']],
     ["the compose's depth write (measured by switching it off)", 'noDepthWrite', ['compose']],
-  ];
+    ['a marble and a milk ball beside the head, in the head\'s skin profile (one profile)', 'threeObjects', ['scene', 'blurH', 'blurV', 'compose']],
+    ['the same balls in their own profiles (three profiles on screen)', 'threeProfiles', ['scene', 'blurH', 'blurV', 'compose']],
+  ].filter(([, feature]) => rounds.every((r) => r[feature]));
   const lines = [`## What version 0.2's additions cost (head, ${block.resolution.replace('x', '×')}, ${rounds.length} rounds)`, ''];
   lines.push('| addition | ours: frame (sum of stages) with it − without | stages it touches, with / without | plain three.js frame with it − without |', '|---|---|---|---|');
   for (const [name, feature, stages] of rows) {
@@ -303,6 +305,13 @@ function featuresSection(json) {
       return `${k} ${w.toFixed(1)} / ${wo.toFixed(1)}`;
     }).join(', ');
     lines.push(`| ${name} | ${ours >= 0 ? '+' : ''}${ms(ours)} | ${touched} | ${feature === 'noDepthWrite' ? '— (no compose)' : `${plain >= 0 ? '+' : ''}${ms(plain)}`} |`);
+  }
+  if (rounds.every((r) => r.threeProfiles && r.threeObjects)) {
+    // The profiles' own cost: the same pixels, three profiles against one, per round.
+    const blur = (x) => (x.stages.blurH ?? 0) + (x.stages.blurV ?? 0);
+    const d = spread(rounds.map((r) => blur(r.threeProfiles) - blur(r.threeObjects)));
+    const ratio = spread(rounds.map((r) => blur(r.threeProfiles) / blur(r.threeObjects)));
+    lines.push('', `Three profiles against one on the same pixels (the last two rows, per round): both blurs ${d.median >= 0 ? '+' : ''}${ms(d.median)} (${ms(d.min)} to ${ms(d.max)}), ×${ratio.median.toFixed(2)} (${ratio.min.toFixed(2)}–${ratio.max.toFixed(2)}); a frame of one profile runs the blur compiled as before several profiles existed (PROFILE_COUNT 1).`);
   }
   lines.push('', 'Stage times in ms (stage timer, median over rounds); "with − without" from the same rounds. Noise: timer queries of identical frames spread by about ±25 % on this shared machine, so differences under a tenth of the frame are not resolved.');
   return lines.join('\n');

@@ -30,6 +30,7 @@ float sssTapWeight( const in ivec2 texel, const in float expectedDepth, const in
 		// Another profile's texel is off this profile's mask in every followSurface mode: where a
 		// marble hand touches skin their depths agree, so the depth rule cannot part them.
 		weight *= sssOnProfile( texel, light.a );
+		if ( weight == 0.0 ) return 0.0; // no depth to fetch for a texel that weighs nothing
 	#endif
 	#if FOLLOW_SURFACE != FOLLOW_SURFACE_OFF
 		float farness = clamp( abs( sssUncovered( texelFetch( tSurface, texel, 0 ).rg, light.a ).r - expectedDepth ) * depthFalloff, 0.0, 1.0 );
