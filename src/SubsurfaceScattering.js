@@ -74,7 +74,7 @@ export { MIN_KERNEL_PIXELS } from './3-blur/samplingModel.js';
  * @property {boolean} [transmittance=true] light through thin parts (with the pipeline's light)
  * @property {number} [translucency=0] 0..1 (exclusive): light through regardless of thickness
  * @property {number} [shrinkMm=0.6] how far the light depth lookup moves inwards, mm (0..1000)
- * @property {import('./options.js').ProfileName|object} [profile] this material's diffusion profile, as the pipeline's `profile` (left out: the pipeline's); up to 8 per pipeline, not with method 'dense'
+ * @property {import('./options.js').ProfileName|object|null} [profile] this material's diffusion profile, as the pipeline's `profile` (left out: as before, at first the pipeline's; null: back to the pipeline's); up to 8 per pipeline, not with method 'dense'
  * @property {number} [strength] widthScale's old name
  */
 // </options-typedef>
@@ -237,7 +237,7 @@ export class SubsurfaceScattering extends Pass {
   set profile(profile) {
     const next = getProfile(checkOption(PIPELINE_SCHEMA, 'profile', profile));
     if (next === this.profile) return;
-    checkProfileCount(this.method, profileSlots(this.subsurfaceMaterials.profiles(next), next).profiles.length);
+    checkProfileCount(this.method, profileSlots(this.subsurfaceMaterials.profiles(next), next, 'SubsurfaceScattering.profile').profiles.length);
     this.profileLookup.setProfile(next); // tens of ms: only on a change
     this.subsurfaceMaterials.rebindAll(); // a material naming this profile or the last one changes tables
     this._useProfiles();
@@ -526,6 +526,13 @@ export class SubsurfaceScattering extends Pass {
    */
   _useProfiles() {
     const { profiles, slots } = profileSlots(this.subsurfaceMaterials.profiles(), this.profile);
+    // The tables of profiles no material uses any more go (a material rebound with new profile
+    // objects would otherwise pile them up).
+    for (const [profile, lookup] of this._otherLookups) {
+      if (profiles.includes(profile)) continue;
+      lookup.dispose();
+      this._otherLookups.delete(profile);
+    }
     this.blur.setProfiles(profiles.map((profile) => this._lookupOf(profile)));
     this.scenePass.setProfileCount(profiles.length);
     [...this.subsurfaceMaterials.entries.values()].forEach(({ hook }, i) => { hook.profileSlot = slots[i]; });
@@ -580,8 +587,8 @@ export class SubsurfaceScattering extends Pass {
   get kernel() { return this.blur.kernel; }
   /** @internal Whether the taps are chosen for the on-screen scale (samples 'auto'). */
   get autoSamples() { return this.blur.autoSamples; }
-  /** @internal The kernel's current settings: { profile, samples, strength, falloff }, plus method. */
-  get kernelOptions() { return { ...this.blur.kernelOptions, method: this.method }; }
+  /** @internal The kernel's current settings: { profile (the pipeline's), samples, strength, falloff }, plus method. */
+  get kernelOptions() { return { ...this.blur.kernelOptions, profile: this.profile, method: this.method }; }
 
   // ---- Version 0.2's setter methods: deprecated (one setter style: assign the property).
 
@@ -596,8 +603,15 @@ export class SubsurfaceScattering extends Pass {
     }
     checkOptions('setKernel options', options, KERNEL_OPTIONS);
     const { profile, ...kernel } = options;
-    if (profile !== undefined) this.profile = profile;
+    // All or nothing: the profile is checked (with the method it will blur with) before the kernel
+    // changes, and BlurStage.setKernel checks the kernel whole before it changes anything.
+    if (profile !== undefined) {
+      const next = getProfile(checkOption(PIPELINE_SCHEMA, 'profile', profile));
+      const method = kernel.method === undefined ? this.method : checkOption(PIPELINE_SCHEMA, 'method', kernel.method);
+      checkProfileCount(method, profileSlots(this.subsurfaceMaterials.profiles(next), next, 'setKernel').profiles.length);
+    }
     this.blur.setKernel(kernel);
+    if (profile !== undefined) this.profile = profile;
   }
 
   /** @deprecated assign `transmittance` @param {boolean} enabled */

@@ -238,9 +238,10 @@ export const MATERIAL_SCHEMA = Object.freeze({
     check: (value, name) => checkNumber(name, value, { min: 0, max: 1000, unit: 'mm' }),
   },
   profile: {
-    default: undefined, type: "import('./options.js').ProfileName|object",
-    doc: `this material's diffusion profile, as the pipeline's \`profile\` (left out: the pipeline's); up to ${MAX_PROFILES} per pipeline, not with method 'dense'`,
-    check: checkProfile,
+    default: undefined, type: "import('./options.js').ProfileName|object|null",
+    doc: `this material's diffusion profile, as the pipeline's \`profile\` (left out: as before, at first the pipeline's; null: back to the pipeline's); up to ${MAX_PROFILES} per pipeline, not with method 'dense'`,
+    // null: the pipeline's again (a rebind keeps what it leaves out, so undefined cannot say it).
+    check: (value) => (value === null ? undefined : checkProfile(value)),
   },
 });
 

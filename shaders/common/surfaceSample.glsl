@@ -72,8 +72,15 @@ vec4 sssCovered( const in vec3 colour, const in float coverage ) {
 	}
 
 	// Whether a texel is on the centre's profile: 1 on it; 0 on another, and 0 for a texel two
-	// profiles share (its light is theirs mixed: it would carry one's light into the other).
+	// profiles share (its light is theirs mixed: it would carry one's light into the other). The
+	// surface's a holds the slot's square, so a shared texel's spread a − b² is above
+	// SSS_SLOT_SPREAD_TOLERANCE even where its mean slot is a third one's (0 and 2 average to 1).
 	float sssOnProfile( const in ivec2 texel, const in float coverage ) {
-		return abs( sssSlotAt( texel, coverage ) - float( sssSlot ) ) < SSS_SLOT_TOLERANCE ? 1.0 : 0.0;
+		vec2 slot = texelFetch( tSurface, texel, 0 ).ba; // mean slot, mean slot²
+		#if SSS_COVERAGE == 1
+			slot = coverage > 0.0 ? slot / coverage : vec2( 0.0 );
+		#endif
+		bool single = slot.y - slot.x * slot.x < SSS_SLOT_SPREAD_TOLERANCE;
+		return single && abs( slot.x - float( sssSlot ) ) < SSS_SLOT_TOLERANCE ? 1.0 : 0.0;
 	}
 #endif

@@ -243,7 +243,10 @@ export class SubsurfaceScenePass extends Pass {
         // 1. opaque ordinary materials (+ subsurface depth with the prepass); background and shadow maps.
         // With MSAA three resolves the target after every render() into it, the depth once per
         // attachment: after call 1 the depth is not resolved when call 2 follows and resolves it.
-        target.resolveDepthBuffer = !(this.resolvesDepthOnce && target.samples > 0 && this.subsurfaceMeshes.length > 0);
+        // Before r186 (no storeMultisampledDepthBuffer) three also invalidates the multisampled
+        // depth it does not resolve, where it invalidates (the Oculus Browser): not there.
+        const keepsDepth = 'storeMultisampledDepthBuffer' in target;
+        target.resolveDepthBuffer = !(this.resolvesDepthOnce && keepsDepth && target.samples > 0 && this.subsurfaceMeshes.length > 0);
         try {
           this._draw(renderer, this.depthPrepass ? DRAW_PHASES.DEPTH : DRAW_PHASES.HIDDEN, DRAW_BUFFERS.COLOR_ONLY);
         } finally {

@@ -10,6 +10,8 @@
 //                 (RGBA with several profiles)       g: world units per profile mm × widthScale
 //                                                    b: the material's profile slot (several profiles
 //                                                       only: src/profiles/profileSlots.js)
+//                                                    a: the slot's square (its spread after an
+//                                                       MSAA resolve: surfaceSample.glsl)
 //   depth       depth     24-bit depth texture       the scene's depth (what the compose hands on to the composer)
 //
 // The surface attachment is 32-bit float: depth differences of a millimetre at metres of distance

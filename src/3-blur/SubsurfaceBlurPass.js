@@ -12,7 +12,7 @@ import { ProfileStack } from '../profiles/ProfileStack.js';
 import { MAX_PROFILES } from '../profiles/profileSlots.js';
 import { FOOTPRINT_ROWS, FOOTPRINT_SCALES } from '../profiles/footprints.js';
 import { enumDefines, glslFloat, setDefines } from '../support/glsl.js';
-import { checkBoolean, checkInteger, checkOneOf, checkOptions, checkRgb } from '../support/parameterChecks.js';
+import { checkBoolean, checkOneOf, checkOptions, checkRgb } from '../support/parameterChecks.js';
 import { describe } from '../support/rendererSupport.js';
 import { FOLLOW_SURFACE_MODES } from '../options.js';
 import { SurfacePass } from './SurfacePass.js';
@@ -128,7 +128,11 @@ export class SubsurfaceBlurPass extends SurfacePass {
    * @param {readonly ProfileLookup[]} lookups
    */
   setProfiles(lookups) {
-    if (lookups.length > 0) checkInteger('profiles', lookups.length, 1, MAX_PROFILES, 'profiles');
+    if (!Array.isArray(lookups) || !lookups.every((lookup) => lookup instanceof ProfileLookup)) {
+      throw new TypeError(`SubsurfaceBlurPass.setProfiles: lookups must be an array of ProfileLookup, one per slot, got ${describe(lookups)}`);
+    }
+    if (lookups.length > MAX_PROFILES) throw new RangeError(`SubsurfaceBlurPass.setProfiles: lookups holds at most ${MAX_PROFILES} profiles, got ${lookups.length}`);
+    if (lookups.length <= 1) this.profileStack.dispose(); // one profile reads its lookup's own tables
     /** The profiles' tables, by slot (empty: none, 'taps' mode only). */
     this.profileLookups = [...lookups];
     this.profileLookup = lookups[0] ?? null;
@@ -175,6 +179,11 @@ export class SubsurfaceBlurPass extends SurfacePass {
       throw new TypeError('SubsurfaceBlurPass: kernel must be a Float32Array of 4 numbers per tap (see computeKernel)');
     }
     if (!kernel.every(Number.isFinite)) throw new RangeError('SubsurfaceBlurPass: kernel holds NaN or Infinity');
+    // Checked whole before anything changes: a refused call leaves the pass as it was.
+    if (!Array.isArray(slotKernels) || slotKernels.length < 1 || slotKernels.length > MAX_PROFILES
+      || !slotKernels.every((k) => k instanceof Float32Array && k.length === kernel.length && k.every(Number.isFinite))) {
+      throw new TypeError(`SubsurfaceBlurPass.setKernel: slotKernels must be an array of 1..${MAX_PROFILES} finite Float32Arrays as long as kernel (${kernel.length}), one per slot, got ${describe(slotKernels)}`);
+    }
     const samples = kernel.length / 4;
     const capacity = this.mode === 'taps' ? Math.max(samples, tapCapacity) : samples;
     // (weight R, G, B, offset mm) per tap, zero-padded to the capacity: three uploads a flat array as is.
@@ -187,6 +196,10 @@ export class SubsurfaceBlurPass extends SurfacePass {
     this.kernel = kernel;
     this.slotKernels = slotKernels;
     if (slotKernels.length > 1) this._writeSlotKernels(slotKernels, capacity);
+    else {
+      this.uniforms.tKernels.value?.dispose(); // one profile reads the kernel uniform
+      this.uniforms.tKernels.value = null;
+    }
   }
 
   /** Row p of `tKernels`: slot p's kernel, zero-padded to the capacity like the uniform. */

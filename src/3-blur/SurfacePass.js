@@ -28,6 +28,10 @@ const SAMPLING_DEFINES = Object.freeze({
   // Several profiles: a texel is on a slot within half the smallest step a resolve makes between
   // two slots (1 / MAX_MULTISAMPLING), so a pixel two profiles share is on neither (surfaceSample.glsl).
   SSS_SLOT_TOLERANCE: glslFloat(0.5 / MAX_MULTISAMPLING),
+  // and its slots' spread (mean slot² − mean slot²) within half the least a shared pixel has: a
+  // share w = 1 / MAX_MULTISAMPLING of two slots one apart, w (1 − w). Slots 0 and 2 half and half
+  // average to 1 but spread by 1: on neither, not on slot 1.
+  SSS_SLOT_SPREAD_TOLERANCE: glslFloat(0.5 * (1 / MAX_MULTISAMPLING) * (1 - 1 / MAX_MULTISAMPLING)),
 });
 
 /** The chunks every surface pass includes: finiteness, screen scale, reading the surface, its slope, the tap rule. */

@@ -17,9 +17,10 @@ export const MAX_PROFILES = 8;
  * @template P
  * @param {readonly P[]} profiles each bound material's profile (objects compared by identity)
  * @param {P} fallback the pipeline's profile: the one slot when no material is bound
+ * @param {string} [caller] what the error names (the call that would make too many)
  * @returns {{ profiles: P[], slots: number[] }} `slots[i]` is the slot of `profiles[i]`
  */
-export function profileSlots(profiles, fallback) {
+export function profileSlots(profiles, fallback, caller = 'makeSubsurface') {
   const distinct = [];
   const slots = profiles.map((profile) => {
     let slot = distinct.indexOf(profile);
@@ -28,7 +29,7 @@ export function profileSlots(profiles, fallback) {
   });
   if (distinct.length > MAX_PROFILES) {
     const names = distinct.map((p) => `'${p?.name ?? p}'`).join(', ');
-    throw new RangeError(`makeSubsurface: profile: at most ${MAX_PROFILES} profiles per pipeline, got ${distinct.length} (${names})`);
+    throw new RangeError(`${caller}: profile: at most ${MAX_PROFILES} profiles per pipeline, got ${distinct.length} (${names})`);
   }
   return { profiles: distinct.length > 0 ? distinct : [fallback], slots };
 }

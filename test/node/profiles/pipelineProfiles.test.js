@@ -58,4 +58,40 @@ describe('a pipeline with materials of several profiles', () => {
     expect(frameOf(sss, [plain, named])).toEqual({ count: 1, channels: 2, slots: [0, 0], transmits: ['skin', 'skin'] });
     expect(sss.materials.get(named).options.profile).toBe('skin');
   });
+
+  it('takes a material back to the pipeline\'s profile with profile: null, and drops the tables no material uses', () => {
+    t = createFixture(THREE, SSS);
+    const { sss, material: plain } = t;
+    const named = new THREE.MeshStandardMaterial();
+    sss.makeSubsurface(named, { profile: 'marble' });
+    expect(frameOf(sss, [plain, named])).toMatchObject({ count: 2, slots: [0, 1] });
+    sss.makeSubsurface(named, { profile: undefined, widthMm: 2 }); // left out: kept
+    expect(frameOf(sss, [plain, named])).toMatchObject({ count: 2, transmits: ['skin', 'marble'] });
+    sss.makeSubsurface(named, { profile: null });
+    expect(frameOf(sss, [plain, named])).toEqual({ count: 1, channels: 2, slots: [0, 0], transmits: ['skin', 'skin'] });
+    // Twenty fresh profile objects bound in turn leave one table, not twenty.
+    for (let i = 0; i < 20; i++) sss.makeSubsurface(named, { profile: SSS.burleyProfile({ name: `b${i}`, scatterDistanceMm: [1, 0.5, 0.25 + i / 100] }) });
+    expect(sss._otherLookups.size).toBe(1);
+  });
+
+  it('names the call that would make a ninth profile, and the deprecated setKernel changes all or nothing', () => {
+    t = createFixture(THREE, SSS);
+    const { sss } = t;
+    const warn = console.warn;
+    console.warn = () => {}; // setKernel's deprecation
+    try {
+      expect(() => sss.setKernel({ profile: 'milk', method: 'bogus' })).toThrow(/method/);
+      expect([sss.profile.name, sss.method]).toEqual(['skin', 'footprint']);
+      sss.makeSubsurface(new THREE.MeshStandardMaterial(), { profile: 'marble' });
+      expect(() => sss.setKernel({ profile: 'milk', method: 'dense' })).toThrow(RangeError);
+      expect([sss.profile.name, sss.method]).toEqual(['skin', 'footprint']);
+    } finally {
+      console.warn = warn;
+    }
+    for (const name of ['skin', 'milk', 'skinBurley']) sss.makeSubsurface(new THREE.MeshStandardMaterial(), { profile: name });
+    for (let i = 0; i < 4; i++) sss.makeSubsurface(new THREE.MeshStandardMaterial(), { profile: SSS.burleyProfile({ name: `b${i}`, scatterDistanceMm: [1, 0.5, 0.3 + i / 10] }) });
+    // Eight now (the fixture's material follows the pipeline's skin): a ninth by the pipeline's profile, or by a material.
+    expect(() => { sss.profile = SSS.burleyProfile({ name: 'ninth', scatterDistanceMm: [2, 1, 0.5] }); }).toThrow(/^SubsurfaceScattering\.profile: profile: at most 8 profiles/);
+    expect(() => sss.makeSubsurface(new THREE.MeshStandardMaterial(), { profile: SSS.burleyProfile({ name: 'ninth', scatterDistanceMm: [2, 1, 0.5] }) })).toThrow(/^makeSubsurface: profile: at most 8/);
+  });
 });
