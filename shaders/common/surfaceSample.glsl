@@ -75,8 +75,9 @@ vec4 sssCovered( const in vec3 colour, const in float coverage ) {
 	// profiles share (its light is theirs mixed: it would carry one's light into the other). The
 	// surface's a holds the slot's square, so a shared texel's spread a − b² is above
 	// SSS_SLOT_SPREAD_TOLERANCE even where its mean slot is a third one's (0 and 2 average to 1).
-	float sssOnProfile( const in ivec2 texel, const in float coverage ) {
-		vec2 slot = texelFetch( tSurface, texel, 0 ).ba; // mean slot, mean slot²
+	// `slotMoments`: the texel's surface .ba (mean slot, mean slot², premultiplied by `coverage`).
+	float sssOnProfile( const in vec2 slotMoments, const in float coverage ) {
+		vec2 slot = slotMoments;
 		#if SSS_COVERAGE == 1
 			slot = coverage > 0.0 ? slot / coverage : vec2( 0.0 );
 		#endif

@@ -29,11 +29,16 @@ float sssTapWeight( const in ivec2 texel, const in float expectedDepth, const in
 	#if PROFILE_COUNT > 1
 		// Another profile's texel is off this profile's mask in every followSurface mode: where a
 		// marble hand touches skin their depths agree, so the depth rule cannot part them.
-		weight *= sssOnProfile( texel, light.a );
-		if ( weight == 0.0 ) return 0.0; // no depth to fetch for a texel that weighs nothing
+		vec4 surfaceTexel = texelFetch( tSurface, texel, 0 ); // one fetch for the slot and the depth
+		weight *= sssOnProfile( surfaceTexel.ba, light.a );
+		if ( weight == 0.0 ) return 0.0;
 	#endif
 	#if FOLLOW_SURFACE != FOLLOW_SURFACE_OFF
+		#if PROFILE_COUNT > 1
+		float farness = clamp( abs( sssUncovered( surfaceTexel.rg, light.a ).r - expectedDepth ) * depthFalloff, 0.0, 1.0 );
+		#else
 		float farness = clamp( abs( sssUncovered( texelFetch( tSurface, texel, 0 ).rg, light.a ).r - expectedDepth ) * depthFalloff, 0.0, 1.0 );
+		#endif
 		#if FOLLOW_SURFACE == FOLLOW_SURFACE_DROP
 			weight *= 1.0 - farness;
 		#else
