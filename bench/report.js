@@ -344,8 +344,29 @@ function beyondDenseSection({ transfer, surfaceTruth } = {}) {
 }
 
 /**
+ * The WebGPURenderer node beside the composer path (bench/webgpu/run.js's results): each frame's
+ * median and the node over each backend's plain WebGPURenderer frame, from the same rounds.
+ * @param {object|null} webgpu bench/results/webgpu.json
+ */
+function webgpuSection(webgpu) {
+  if (!webgpu?.medianMs) return '';
+  const m = webgpu.medianMs;
+  const rows = [
+    ['three.js `WebGLRenderer` + `EffectComposer`, the pipeline (`SubsurfaceScattering`)', m.composer, null],
+    ['`WebGPURenderer` on WebGPU, plain (`pass(scene, camera)` alone)', m.webgpuPlain, null],
+    ['`WebGPURenderer` on WebGPU, the node (`subsurfaceScattering(scenePass)`)', m.webgpuNode, m.webgpuNode / m.webgpuPlain],
+    ['`WebGPURenderer` on its WebGL 2 backend (`forceWebGL`), plain', m.webglPlain, null],
+    ['`WebGPURenderer` on its WebGL 2 backend, the node', m.webglNode, m.webglNode / m.webglPlain],
+  ];
+  return [`## The WebGPURenderer node (\`npm run bench:webgpu\`, ${webgpu.date.slice(0, 10)})`, '',
+    `The head at ${webgpu.width}×${webgpu.height} with the module's defaults, each frame closed by a read-back, in ${webgpu.rounds} interleaved rounds of ${webgpu.frames} frames (bench/webgpu/page.js), on SwiftShader (WebGPU on its Vulkan, WebGL 2 on ANGLE): wall times of software rendering, to compare as ratios within the run only.`, '',
+    '| frame | median ms | the node over its backend\'s plain frame |', '|---|---|---|',
+    ...rows.map(([name, t, r]) => `| ${name} | ${t.toFixed(0)} | ${r === null ? '—' : `×${r.toFixed(2)}`} |`)].join('\n');
+}
+
+/**
  * @param {object} json bench/results/<name>.json
- * @param {{ transfer?: object, surfaceTruth?: object }} [beyond] the other runs' results (see beyondDenseSection)
+ * @param {{ transfer?: object, surfaceTruth?: object, webgpu?: object }} [beyond] the other runs' results (see beyondDenseSection, webgpuSection)
  */
 export function benchMarkdown(json, beyond = {}) {
   const { results } = json;
@@ -402,6 +423,8 @@ Error: against the dense 2D reference (\`DenseSubsurfacePass\`: brute-force 2D c
 ${beyondDenseSection(beyond)}
 
 ${peersSection(json)}
+
+${webgpuSection(beyond.webgpu)}
 
 ${issueTableSection(json)}
 
