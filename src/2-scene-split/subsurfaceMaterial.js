@@ -32,8 +32,8 @@ import { checkThreeRevision, supportedThreeNote, threeRelease } from '../support
 import { MATERIAL_DEFAULTS, MATERIAL_SCHEMA, PIPELINE_SCHEMA, checkOption } from '../options.js';
 import { ATTACHMENT_DEFINES, DRAW_PHASES, currentDraw } from './subsurfaceTarget.js';
 import {
-  TRANSMITTANCE_CHUNKS, isShining, lightUniformSlots, transmittanceSettings, transmittanceUniformSlots,
-  updateLightUniforms, writeTransmittanceUniforms,
+  LIGHT_TYPES, TRANSMITTANCE_CHUNKS, TRANSMITTED_LIGHT_DEFINES, isShining, lightUniformSlots, transmittanceSettings,
+  transmittanceUniformSlots, updateLightUniforms, writeTransmittanceUniforms,
 } from './transmittance.js';
 
 /**
@@ -41,9 +41,6 @@ import {
  * @type {readonly ('diffuse'|'transmittance'|'thickness')[]}
  */
 export const MATERIAL_OUTPUTS = Object.freeze(['diffuse', 'transmittance', 'thickness']);
-
-/** The kinds of light transmittance is shaded with. */
-const LIGHT_TYPES = Object.freeze(['directional', 'spot']);
 
 /** What makeSubsurface(material, { ... }) accepts (`strength`: widthScale's old name). */
 const STANDALONE_OPTIONS = Object.freeze(['widthMm', 'widthScale', 'strength', 'worldUnitInMm', 'transmittance']);
@@ -55,6 +52,7 @@ const STANDALONE = Object.freeze({ name: 'makeSubsurface' });
 const declarations = assembleGlsl('makeSubsurface', parsGlsl, { 'common/finite.glsl': finiteGlsl, ...TRANSMITTANCE_CHUNKS });
 const defines = Object.freeze({
   ...ATTACHMENT_DEFINES, ...enumDefines('SSS_OUTPUT', MATERIAL_OUTPUTS, 'diffuse'), ...enumDefines('SSS_LIGHT_TYPE', LIGHT_TYPES, 'spot'),
+  ...TRANSMITTED_LIGHT_DEFINES,
 });
 
 /** material → its patch: { uniforms, bindings: Map<owner, binding>, restore() } */
