@@ -11,7 +11,7 @@ import { transmittanceSettings, transmittanceUniformSlots, writeTransmittanceUni
 
 export {
   TRANSMITTED_LIGHT, TRANSMITTED_LIGHT_DEFINES, LIGHT_TYPES, transmittanceUniformSlots, transmittanceSettings, writeTransmittanceUniforms,
-  isShining, lightFromBehind, lightReachesFromBehind, lightUniformSlots, updateLightUniforms,
+  isShining, lightFromBehind, lightReachesFromBehind, lightUniformSlots, updateLightUniforms, writeTransmittedLight,
 } from './transmittanceModel.js';
 
 /** The chunks shaders/2-scene-split/transmittance.glsl includes, by path. */

@@ -177,3 +177,21 @@ export function updateLightUniforms(uniforms, light, scene, camera) {
     uniforms.sssSpotPenumbraCos.value = Math.cos(light.angle * (1 - light.penumbra));
   }
 }
+
+/**
+ * Writes a subsurface material's transmittance uniforms for one draw: whether it transmits (a map
+ * as last rendered and a light that shines), the light's type, colour and place
+ * (updateLightUniforms), the map's and the profile's (writeTransmittanceUniforms). The WebGL
+ * material hook and the WebGPU node's materials call it with their own uniform objects.
+ * @param {object} uniforms lightUniformSlots and transmittanceUniformSlots, with sssTransmits and sssLightType
+ * @param {ReturnType<typeof transmittanceSettings>} settings
+ * @param {import('three').Scene} scene
+ * @param {import('three').Camera} camera
+ */
+export function writeTransmittedLight(uniforms, settings, scene, camera) {
+  const { light, valid } = settings.lightDepth;
+  uniforms.sssTransmits.value = valid && isShining(light, scene, camera);
+  uniforms.sssLightType.value = LIGHT_TYPES.indexOf(light.isSpotLight ? 'spot' : 'directional');
+  updateLightUniforms(uniforms, light, scene, camera);
+  writeTransmittanceUniforms(uniforms, settings, camera);
+}

@@ -2,13 +2,16 @@
 // display nodes are. Its input is a scene pass whose MRT is subsurfaceMRT() (stage 2: the
 // subsurface node materials write the diffuse light and the surface there); the node runs stage 3,
 // the two separable blur passes, before the frame (updateBefore), and is itself stage 4, the
-// compose. What the WebGL path's orchestrator does per frame (src/SubsurfaceScattering.js, steps
-// 3 to 5) happens here in the same order, with the same CPU side: the profile tables, the footprint
-// tables, the frame plan and the parameter checks are imported from src/, not copied.
+// compose. With a `light` it runs stage 1 too, the light depth pass for transmittance, and hands
+// the subsurface materials it finds in the scene their transmittance uniforms before the scene
+// pass draws them. What the WebGL path's orchestrator does per frame (src/SubsurfaceScattering.js,
+// steps 0 to 5) happens here in the same order, with the same CPU side: the profile tables, the
+// footprint tables, the frame plan, the light's checks and the parameter checks are imported from
+// src/, not copied.
 //
 //   const scenePass = pass(scene, camera);
 //   scenePass.setMRT(subsurfaceMRT());
-//   pipeline.outputNode = subsurfaceScattering(scenePass, { worldUnitInMm: 1000 });
+//   pipeline.outputNode = subsurfaceScattering(scenePass, { worldUnitInMm: 1000, light });
 import { Node, NodeMaterial, NodeUpdateType, QuadMesh, RenderTarget, RendererUtils } from 'three/webgpu';
 import { FloatType, HalfFloatType, Vector2, Vector3 } from 'three';
 import { passTexture, texture, uniform } from 'three/tsl';
@@ -22,17 +25,39 @@ import { planBlur } from '../3-blur/blurPlan.js';
 import { isPerspective } from '../support/screenScale.js';
 import { checkBoolean, checkNumber, checkOneOf, checkOptions } from '../support/parameterChecks.js';
 import { describe } from '../support/rendererSupport.js';
+import { FrameChecks } from '../support/frameChecks.js';
+import { isShining, lightReachesFromBehind, transmittanceSettings, writeTransmittedLight } from '../2-scene-split/transmittanceModel.js';
+import { LightDepthNodeTarget } from './1-light-depth/LightDepthNodeTarget.js';
 import { PIPELINE_SCHEMA, checkOption } from '../options.js';
 import { NODE_DEFAULTS, checkMethod } from './nodeOptions.js';
 import { ATTACHMENT_NAMES } from './2-scene-split/attachments.js';
 import { subsurfaceBlurNode } from './3-blur/subsurfaceBlurTsl.js';
 import { checkWebgpuThree } from './threeVersion.js';
-import { NODE_DEBUG_VIEWS, composeNode, debugViewUniform } from './4-compose/composeTsl.js';
-import { DEBUG_VIEWS } from '../4-compose/debugViews.js';
+import { LIGHT_VIEWS, composeNode, debugViewUniform } from './4-compose/composeTsl.js';
+import { DEBUG_VIEWS, MATERIAL_OUTPUTS, materialOutputOf } from '../4-compose/debugViews.js';
 
 const _quadMesh = /*@__PURE__*/ new QuadMesh();
 const _size = /*@__PURE__*/ new Vector2();
 let _rendererState;
+
+/** Runs its owner's beforeScene once a frame, ahead of the scene pass (see SubsurfaceScatteringNode.setup). */
+class LightStageNode extends Node {
+  static get type() {
+    return 'SubsurfaceLightStageNode';
+  }
+
+  /** @param {SubsurfaceScatteringNode} owner */
+  constructor(owner) {
+    super('void');
+    this.owner = owner;
+    this.updateBeforeType = NodeUpdateType.FRAME;
+  }
+
+  /** @param {import('three/webgpu').NodeFrame} frame */
+  updateBefore(frame) {
+    this.owner.beforeScene(frame.renderer);
+  }
+}
 
 export class SubsurfaceScatteringNode extends Node {
   static get type() {
@@ -54,8 +79,15 @@ export class SubsurfaceScatteringNode extends Node {
     this._uniforms = {
       kernelRadiusMm: uniform(0), strength: uniform(new Vector3(1, 1, 1)), projectionScale: uniform(new Vector2(1, 1)),
       resolution: uniform(new Vector2(1, 1)), depthFalloff: uniform(1), perspective: uniform(1), mmToWorld: uniform(1e-3),
-      marginalRangeMm: uniform(1), debugView: debugViewUniform(), debugDepthRange: uniform(1),
+      marginalRangeMm: uniform(1), debugView: debugViewUniform(), debugDepthRange: uniform(1), debugThicknessRangeMm: uniform(10),
     };
+    /** Stage 1: the light depth map for transmittance, or null without a light. @type {LightDepthNodeTarget|null} */
+    const lightDepthSize = checkOption(PIPELINE_SCHEMA, 'lightDepthSize', o.lightDepthSize);
+    this.lightDepth = checkOption(PIPELINE_SCHEMA, 'light', o.light) === null ? null : new LightDepthNodeTarget(o.light, { size: lightDepthSize });
+    this._transmittance = this.lightDepth !== null;
+    /** The subsurface materials this node has handed transmittance uniforms (taken back on dispose). */
+    this._transmitting = new Set();
+    this._checks = new FrameChecks('SubsurfaceScatteringNode');
     this._debugView = 'final';
     this._settings = { method: checkMethod(o.method) };
     // Every option through its setter: the WebGL pipeline's schema checks it (src/options.js).
@@ -80,6 +112,7 @@ export class SubsurfaceScatteringNode extends Node {
     this._profileNode = texture(this.profileLookup.texture);
     this._footprintNode = texture(this.footprintTable.update(this.samples === 'auto' ? 'auto' : this.samples));
     this.updateBeforeType = NodeUpdateType.FRAME;
+    this._lightStage = new LightStageNode(this);
     this.isSubsurfaceScatteringNode = true;
   }
 
@@ -93,6 +126,24 @@ export class SubsurfaceScatteringNode extends Node {
     this._uniforms.mmToWorld.value = 1 / mm;
     this._updateDepthFalloff();
   }
+
+  /**
+   * Light through thin parts for every subsurface material this node draws (a uniform: no
+   * rebuild). true needs the constructor's `light`. @type {boolean}
+   */
+  get transmittance() { return this._transmittance; }
+
+  set transmittance(enabled) {
+    checkBoolean('SubsurfaceScatteringNode.transmittance', enabled);
+    if (enabled && !this.lightDepth) {
+      throw new TypeError('SubsurfaceScatteringNode.transmittance: light must be a THREE.SpotLight or THREE.DirectionalLight to turn transmittance on, ' +
+        'and this node has none (pass `light` to subsurfaceScattering)');
+    }
+    this._transmittance = enabled;
+  }
+
+  /** What the last frame found wrong with the light, one message each (empty when all is well). @type {readonly string[]} */
+  get problems() { return this._checks.current; }
 
   /** Whether the blur runs (false: the output equals the scene without scattering). @type {boolean} */
   get scattering() { return this._scattering; }
@@ -157,16 +208,18 @@ export class SubsurfaceScatteringNode extends Node {
   /**
    * One ingredient instead of the final image, as the WebGL pipeline's debugView: 'final',
    * 'diffuse' (the scattered diffuse light), 'specular' (the rest of subsurface pixels), 'mask',
-   * 'depth'. A uniform: switching rebuilds nothing.
-   * @type {'final'|'diffuse'|'specular'|'mask'|'depth'}
+   * 'depth', and with a light 'thickness' (in profile mm: physical mm × (1 − translucency) /
+   * widthMm; debugThicknessRangeMm is white) and 'transmittance' (the light through thin parts,
+   * before the blur). A uniform: switching rebuilds nothing.
+   * @type {import('../4-compose/debugViews.js').DebugView}
    */
   get debugView() { return this._debugView; }
 
   /** @param {import('../4-compose/debugViews.js').DebugView} view */
   set debugView(view) {
     checkOneOf('view', view, DEBUG_VIEWS);
-    if (!NODE_DEBUG_VIEWS.includes(view)) {
-      throw new RangeError(`debugView: view '${view}' needs transmittance, which the node does not have yet (it has ${NODE_DEBUG_VIEWS.map((v) => `'${v}'`).join(', ')})`);
+    if (LIGHT_VIEWS.includes(view) && !this.lightDepth) {
+      throw new RangeError(`debugView: view '${view}' needs the node's light (pass \`light\` to subsurfaceScattering); without one it has ${DEBUG_VIEWS.filter((v) => !LIGHT_VIEWS.includes(v)).map((v) => `'${v}'`).join(', ')}`);
     }
     this._uniforms.debugView.value = DEBUG_VIEWS.indexOf(view);
     this._debugView = view;
@@ -180,6 +233,14 @@ export class SubsurfaceScatteringNode extends Node {
     this._uniforms.debugDepthRange.value = checkNumber('depthRange', depthRange, { min: 0, minExclusive: true, max: Infinity, unit: 'world units' });
   }
 
+  /** Profile millimetres the 'thickness' view maps to white (default 10). @type {number} */
+  get debugThicknessRangeMm() { return this._uniforms.debugThicknessRangeMm.value; }
+
+  /** @param {number} mm */
+  set debugThicknessRangeMm(mm) {
+    this._uniforms.debugThicknessRangeMm.value = checkNumber('thicknessRangeMm', mm, { min: 0, minExclusive: true, max: Infinity, unit: 'mm' });
+  }
+
   /** 1 / the depth threshold in world units, for the depth rule. @private */
   _updateDepthFalloff() {
     if (this._worldUnitInMm === undefined || this._settings?.depthThresholdMm === undefined) return;
@@ -191,14 +252,53 @@ export class SubsurfaceScatteringNode extends Node {
     return this._scatteredNode;
   }
 
-  /** The frame plan (src/3-blur/blurPlan.js): the on-screen reach of the kernel, the taps, whether the blur runs. */
-  _planFrame(camera, width, height) {
+  /** The visible meshes with a subsurface node material, and those materials. @private */
+  _subsurfaceMeshes() {
     const meshes = [];
+    const materials = new Set();
     this.scenePass.scene.traverseVisible((object) => {
       if (!object.isMesh) return;
-      const materials = Array.isArray(object.material) ? object.material : [object.material];
-      if (materials.some((m) => m?.isSubsurfaceNodeMaterial)) meshes.push(object);
+      const own = (Array.isArray(object.material) ? object.material : [object.material]).filter((m) => m?.isSubsurfaceNodeMaterial);
+      if (own.length === 0) return;
+      meshes.push(object);
+      for (const m of own) materials.add(m);
     });
+    return { meshes, materials };
+  }
+
+  /**
+   * Stage 1: the light depth map, when the light works (FrameChecks: finite, in the scene, a
+   * frustum), shines, and reaches a transmitting material from behind (or the thickness view reads
+   * the map); otherwise the map is marked out of date and nothing is transmitted. @private
+   */
+  _renderLightDepth(renderer, scene, camera) {
+    const { lightDepth } = this;
+    const checks = this._checks.begin();
+    const works = checks.light(lightDepth, scene, this._transmittance);
+    checks.end();
+    const read = materialOutputOf(this._debugView) === 'thickness'
+      || lightReachesFromBehind(lightDepth.light, scene, camera, (m) => m.isSubsurfaceNodeMaterial === true && m.transmittance);
+    if (works && isShining(lightDepth.light, scene, camera) && read) lightDepth.render(renderer, scene);
+    else lightDepth.invalidate();
+  }
+
+  /** Each subsurface material's transmittance uniforms for this frame (the WebGL hook's writer). @private */
+  _writeTransmittance(materials, scene, camera) {
+    const output = MATERIAL_OUTPUTS.indexOf(materialOutputOf(this._debugView));
+    for (const material of materials) {
+      const u = material.useTransmittance({ lightDepthMap: this.lightDepth.texture, profileLookup: this.profileLookup.texture });
+      this._transmitting.add(material);
+      u.sssDebugOutput.value = output;
+      u.sssTransmits.value = false;
+      if (!this._transmittance || !material.transmittance) continue;
+      const { widthMm, translucency, shrinkMm } = material;
+      const settings = transmittanceSettings({ lightDepth: this.lightDepth, lookup: this.profileLookup, worldUnitInMm: this.worldUnitInMm, widthMm, translucency, shrinkMm });
+      writeTransmittedLight(u, settings, scene, camera);
+    }
+  }
+
+  /** The frame plan (src/3-blur/blurPlan.js): the on-screen reach of the kernel, the taps, whether the blur runs. */
+  _planFrame(meshes, camera, width, height) {
     const pixelsPerMm = estimatePixelsPerMm(meshes, camera, { width, height },
       (m) => (m?.isSubsurfaceNodeMaterial ? m.widthMm / this.worldUnitInMm : undefined));
     // Stage 3 plans itself from its own settings, as on the WebGL path (src/3-blur/blurPlan.js).
@@ -248,7 +348,7 @@ export class SubsurfaceScatteringNode extends Node {
     renderer.getDrawingBufferSize(_size);
     scenePass.setSize(_size.width, _size.height);
     const { width, height } = scenePass.renderTarget;
-    this.plan = this._planFrame(camera, width, height);
+    this.plan = this._planFrame(this._subsurfaceMeshes().meshes, camera, width, height);
     const diffuse = scenePass.getTexture(ATTACHMENT_NAMES.DIFFUSE);
     if (!this.plan.blur) {
       this._scatteredNode.value = diffuse; // the compose reads the unblurred light: the output equals no SSS
@@ -280,7 +380,26 @@ export class SubsurfaceScatteringNode extends Node {
     RendererUtils.restoreRendererState(renderer, _rendererState);
   }
 
-  setup() {
+  /**
+   * Stage 1 and what stage 2's materials read of it, before the scene pass draws them (_lightStage
+   * calls it): the light depth map, then each subsurface material's transmittance uniforms.
+   * @param {import('three/webgpu').Renderer} renderer
+   */
+  beforeScene(renderer) {
+    if (!this.lightDepth) return;
+    const { scene, camera } = this.scenePass;
+    // The matrices as the scene pass's render will see them (three updates them the same way).
+    if (scene.matrixWorldAutoUpdate === true) scene.updateMatrixWorld();
+    if (camera.parent === null && camera.matrixWorldAutoUpdate === true) camera.updateMatrixWorld();
+    this._renderLightDepth(renderer, scene, camera);
+    this._writeTransmittance(this._subsurfaceMeshes().materials, scene, camera);
+  }
+
+  /** @param {import('three/webgpu').NodeBuilder} builder */
+  setup(builder) {
+    // three runs a node's inputs' updateBefore first (in the order they were built), so the
+    // scene pass would draw before this node's updateBefore: the light stage is built ahead of it.
+    this._lightStage.build(builder);
     return composeNode({
       colour: this.scenePass.getTextureNode(ATTACHMENT_NAMES.COLOR),
       unscattered: this.scenePass.getTextureNode(ATTACHMENT_NAMES.DIFFUSE),
@@ -288,11 +407,18 @@ export class SubsurfaceScatteringNode extends Node {
       surface: this.scenePass.getTextureNode(ATTACHMENT_NAMES.SURFACE),
       view: this._uniforms.debugView,
       depthRange: this._uniforms.debugDepthRange,
+      thicknessRangeMm: this._uniforms.debugThicknessRangeMm,
     });
   }
 
-  /** Frees the node's targets, tables and materials (the scene pass is the caller's). */
+  /** Frees the node's targets, tables and materials (the scene pass is the caller's); the subsurface materials it drew lose their transmittance. */
   dispose() {
+    for (const material of this._transmitting) {
+      material.transmittanceNodes = null; // they read this node's light depth map: rebuilt without it
+      material.needsUpdate = true;
+    }
+    this._transmitting.clear();
+    this.lightDepth?.dispose();
     this._horizontalTarget.dispose();
     this._scatteredTarget.dispose();
     this.footprintTable.dispose();

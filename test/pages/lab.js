@@ -102,7 +102,12 @@ const SCENES = {
     scene.add(basic, standard, phong, line, new THREE.AmbientLight(0xffffff, 0.3));
     return base;
   },
-  /** A slab `thicknessMm` thick, lit from behind, seen from the front (transmittance). */
+  /**
+   * A slab `thicknessMm` thick, lit from behind, seen from the front (transmittance). With
+   * `occluder`, a sheet between the light and the slab's upper right quarter (as the camera sees
+   * it) adds `occluderGapMm` to the thickness the light crosses there: a picture that is not
+   * symmetric, so a flipped light depth map shows.
+   */
   backlit(o) {
     const scene = new THREE.Scene();
     const camera = camera16x9(o.aspect, o.fovY, o.distance);
@@ -110,6 +115,11 @@ const SCENES = {
     const thickness = o.thicknessMm / o.worldUnitInMm;
     const slab = new THREE.Mesh(new THREE.BoxGeometry(o.slabSize, o.slabSize, thickness), material);
     scene.add(slab);
+    if (o.occluder) {
+      const sheet = new THREE.Mesh(new THREE.PlaneGeometry(o.slabSize / 2, o.slabSize / 2), new THREE.MeshStandardMaterial({ side: THREE.DoubleSide }));
+      sheet.position.set(o.slabSize / 4, o.slabSize / 4, -thickness / 2 - o.occluderGapMm / o.worldUnitInMm);
+      scene.add(sheet);
+    }
     const light = new THREE.DirectionalLight(0xffffff, o.intensity);
     light.position.set(0, 0, -10);
     light.shadow.camera.left = light.shadow.camera.bottom = -o.slabSize;
@@ -122,7 +132,7 @@ const SCENES = {
 };
 
 const DEFAULTS = {
-  width: 192, height: 108, fovY: 20, distance: 10, slabSize: 20, intensity: Math.PI,
+  width: 192, height: 108, fovY: 20, distance: 10, slabSize: 20, intensity: Math.PI, occluderGapMm: 1,
   worldUnitInMm: 10, widthMm: 1, pipeline: 'sss', type: 'half', reads: ['output'],
 };
 

@@ -232,5 +232,43 @@ async function debugViews({ backend = 'webgpu', width = 96, height = 54 }) {
   return views;
 }
 
-window.wgpu = { THREE, NODE, pass, createRenderer, readFloats, subsurfacePipeline, flat, head, disposal, plainDraw, debugViews };
+/**
+ * The WebGL lab's back-lit slab (lab.js's `backlit` scene: a directional light straight behind,
+ * intensity π, a white slab `thicknessMm` thick at 10 mm per unit) through the node with the light:
+ * the diffuse attachment (float, before the blur), whether the light depth pass ran, and the node's
+ * output in each of `views` (linear, float). `lightZ` moves the light (+10: in front of the slab).
+ */
+async function backlit({ backend = 'webgpu', width = 96, height = 54, lightZ, material = {}, views = [], ...scene }) {
+  const renderer = await sharedRenderer(backend, width, height);
+  const built = window.lab.buildScene('backlit', { width, height, ...scene });
+  if (lightZ !== undefined) built.light.position.z = lightZ;
+  const [plain] = built.subsurface;
+  const skin = NODE.subsurfaceMaterial(plain, { widthMm: 1, ...material });
+  built.scene.traverse((object) => { if (object.material === plain) object.material = skin; });
+  const { scenePass, node, pipeline } = subsurfacePipeline(renderer, built.scene, built.camera, {
+    type: THREE.FloatType, sss: { worldUnitInMm: window.lab.DEFAULTS.worldUnitInMm, light: built.light },
+  });
+  const target = new THREE.RenderTarget(width, height, { type: THREE.FloatType });
+  const render = () => {
+    renderer.setRenderTarget(target);
+    pipeline.render();
+    renderer.setRenderTarget(null);
+  };
+  render();
+  const result = { width, height, diffuse: await readFloats(renderer, scenePass.renderTarget, 'diffuse'), lightDepthRendered: node.lightDepth.valid };
+  for (const view of views) {
+    Object.assign(node, { debugView: view, debugThicknessRangeMm: 10 });
+    render();
+    result[view] = await readFloats(renderer, target);
+  }
+  node.dispose();
+  pipeline.dispose();
+  scenePass.dispose();
+  target.dispose();
+  skin.dispose();
+  plain.dispose();
+  return result;
+}
+
+window.wgpu = { THREE, NODE, pass, createRenderer, readFloats, subsurfacePipeline, flat, head, disposal, plainDraw, debugViews, backlit };
 window.testReady = true;
