@@ -34,7 +34,7 @@ import { PIPELINE_SCHEMA, checkOption, checkPipelineOptions } from './options.js
 import { estimatePixelsPerMm } from './framePlan.js';
 import { LightDepthTarget } from './1-light-depth/LightDepthTarget.js';
 import { PipelineMaterials } from './2-scene-split/PipelineMaterials.js';
-import { isShining, lightReachesFromBehind } from './2-scene-split/transmittanceModel.js';
+import { checkTransmittanceSwitch, isShining, lightReachesFromBehind } from './2-scene-split/transmittanceModel.js';
 import { SubsurfaceScenePass } from './2-scene-split/SubsurfaceScenePass.js';
 import { BlurStage } from './3-blur/BlurStage.js';
 import { SubsurfaceComposePass } from './4-compose/SubsurfaceComposePass.js';
@@ -269,12 +269,7 @@ export class SubsurfaceScattering extends Pass {
 
   /** @param {boolean} enabled */
   set transmittance(enabled) {
-    checkBoolean('SubsurfaceScattering.transmittance', enabled);
-    if (enabled && !this.lightDepth) {
-      throw new TypeError('SubsurfaceScattering.transmittance: light must be a THREE.SpotLight or THREE.DirectionalLight to turn transmittance on, ' +
-        'and this pipeline has none (pass `light` to the constructor)');
-    }
-    this._transmittance = enabled;
+    this._transmittance = checkTransmittanceSwitch('SubsurfaceScattering', enabled, this.lightDepth, 'this pipeline has none (pass `light` to the constructor)');
     this.subsurfaceMaterials.rebindAll();
   }
 

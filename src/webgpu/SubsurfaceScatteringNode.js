@@ -26,7 +26,9 @@ import { isPerspective } from '../support/screenScale.js';
 import { checkBoolean, checkNumber, checkOneOf, checkOptions } from '../support/parameterChecks.js';
 import { describe } from '../support/rendererSupport.js';
 import { FrameChecks } from '../support/frameChecks.js';
-import { isShining, lightReachesFromBehind, transmittanceSettings, writeTransmittedLight } from '../2-scene-split/transmittanceModel.js';
+import {
+  checkTransmittanceSwitch, isShining, lightReachesFromBehind, transmittanceSettings, writeTransmittedLight,
+} from '../2-scene-split/transmittanceModel.js';
 import { LightDepthNodeTarget } from './1-light-depth/LightDepthNodeTarget.js';
 import { PIPELINE_SCHEMA, checkOption } from '../options.js';
 import { NODE_DEFAULTS, checkMethod } from './nodeOptions.js';
@@ -134,12 +136,7 @@ export class SubsurfaceScatteringNode extends Node {
   get transmittance() { return this._transmittance; }
 
   set transmittance(enabled) {
-    checkBoolean('SubsurfaceScatteringNode.transmittance', enabled);
-    if (enabled && !this.lightDepth) {
-      throw new TypeError('SubsurfaceScatteringNode.transmittance: light must be a THREE.SpotLight or THREE.DirectionalLight to turn transmittance on, ' +
-        'and this node has none (pass `light` to subsurfaceScattering)');
-    }
-    this._transmittance = enabled;
+    this._transmittance = checkTransmittanceSwitch('SubsurfaceScatteringNode', enabled, this.lightDepth, 'this node has none (pass `light` to subsurfaceScattering)');
   }
 
   /** What the last frame found wrong with the light, one message each (empty when all is well). @type {readonly string[]} */
