@@ -31,8 +31,8 @@ export const transmittanceChunk = assembleGlsl('transmittanceChunk', '#include "
  * Creates the uniforms of `transmittanceChunk` and a function that refreshes them for a camera.
  * Use it for a custom ShaderMaterial that includes the chunk.
  * @param {object} options
- * @param {LightDepthTarget} options.lightDepth
- * @param {ProfileLookup} options.lookup the profile's tables (row 0: T(d))
+ * @param {import('../1-light-depth/LightDepthTarget.js').LightDepthTarget} options.lightDepth
+ * @param {import('../profiles/ProfileLookup.js').ProfileLookup} options.lookup the profile's tables (row 0: T(d))
  * @param {number} options.worldUnitInMm millimetres per world unit (> 0)
  * @param {number} [options.widthMm=1] profile scale: millimetres of material per profile millimetre
  * @param {number} [options.translucency=0] 0..<1, shortens the thickness by (1 - translucency)

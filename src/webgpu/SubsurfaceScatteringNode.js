@@ -335,9 +335,9 @@ export class SubsurfaceScatteringNode extends Node {
     const { scenePass } = this;
     const camera = scenePass.camera;
     const { scene } = scenePass;
-    if (scene.fog && !this._warnedFog) {
+    if (scene.fogNode && !this._warnedFog) {
       this._warnedFog = true; // said once, not silently wrong
-      console.warn('SubsurfaceScatteringNode: scene.fog fogs the colour output only; the diffuse light of subsurface materials is not fogged on this renderer yet (the WebGL pipeline fades it)');
+      console.warn('SubsurfaceScatteringNode: a custom scene.fogNode fogs the colour output only; the diffuse light of subsurface materials fades with scene.fog (Fog, FogExp2), not with a fog node');
     }
     if (scene.matrixWorldAutoUpdate === true) scene.updateMatrixWorld();
     if (camera.parent === null && camera.matrixWorldAutoUpdate === true) camera.updateMatrixWorld();

@@ -106,7 +106,7 @@ const SCENES = {
    * A slab `thicknessMm` thick, lit from behind, seen from the front (transmittance). With
    * `occluder`, a sheet between the light and the slab's upper right quarter (as the camera sees
    * it) adds `occluderGapMm` to the thickness the light crosses there: a picture that is not
-   * symmetric, so a flipped light depth map shows.
+   * symmetric, so a flipped light depth map shows. `fog`: [near, far] of a THREE.Fog.
    */
   backlit(o) {
     const scene = new THREE.Scene();
@@ -115,6 +115,7 @@ const SCENES = {
     const thickness = o.thicknessMm / o.worldUnitInMm;
     const slab = new THREE.Mesh(new THREE.BoxGeometry(o.slabSize, o.slabSize, thickness), material);
     scene.add(slab);
+    if (o.fog) scene.fog = new THREE.Fog(0x3366cc, ...o.fog); // [near, far], world units
     if (o.occluder) {
       const sheet = new THREE.Mesh(new THREE.PlaneGeometry(o.slabSize / 2, o.slabSize / 2), new THREE.MeshStandardMaterial({ side: THREE.DoubleSide }));
       sheet.position.set(o.slabSize / 4, o.slabSize / 4, -thickness / 2 - o.occluderGapMm / o.worldUnitInMm);

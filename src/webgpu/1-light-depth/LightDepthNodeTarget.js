@@ -22,6 +22,7 @@ export class LightDepthNodeTarget extends LightDepthView {
     this.material = new NodeMaterial();
     this.material.name = 'LightDepthNodeMaterial';
     this.material.side = DoubleSide; // thin open shells still record their nearest surface
+    this.material.fog = false; // the scene's fog would blend the depths towards its colour
     // Distance along the light's view axis: linear, unlike the depth buffer (Jimenez et al. 2010).
     this.material.fragmentNode = vec4(positionView.z.negate(), 0, 0, 1);
     this.renderTarget = new RenderTarget(1, 1, {

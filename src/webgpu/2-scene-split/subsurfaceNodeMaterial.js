@@ -9,8 +9,8 @@
 // shaders/2-scene-split/material/split.glsl, transmittedLight.glsl, clearcoat.glsl, output.glsl).
 import { MeshPhysicalNodeMaterial, MeshStandardNodeMaterial } from 'three/webgpu';
 import {
-  F_Schlick, clearcoat, clearcoatNormalView, diffuseColor, float, mrt, negateOnBackSide, normalViewGeometry, output, positionView,
-  positionViewDirection, select, uniform, vec3, vec4,
+  F_Schlick, clearcoat, clearcoatNormalView, densityFogFactor, diffuseColor, float, mrt, negateOnBackSide, normalViewGeometry, output,
+  positionView, positionViewDirection, rangeFogFactor, reference, renderGroup, select, uniform, vec3, vec4,
 } from 'three/tsl';
 import { checkOptions } from '../../support/parameterChecks.js';
 import { describe } from '../../support/rendererSupport.js';
@@ -22,6 +22,20 @@ import { finite3 } from '../3-blur/surfaceTsl.js';
 
 /** What subsurfaceMaterial(material, { ... }) accepts: the WebGL path's material options that apply per material (src/options.js). */
 const MATERIAL_OPTIONS = Object.freeze(['widthMm', 'transmittance', 'translucency', 'shrinkMm']);
+
+/**
+ * The scene fog's factor (0 clear .. 1 all fog) as three builds it for `scene.fog`
+ * (NodeManager.updateFog: rangeFogFactor for a Fog, densityFogFactor for a FogExp2), or null where
+ * three draws this material without that fog (no fog, `material.fog` false, or a custom
+ * `scene.fogNode`, whose factor is not known here: the node warns about that).
+ */
+function sceneFogFactor(builder, material) {
+  const fog = builder.scene?.fog;
+  if (!material.fog || !fog || builder.scene.fogNode || builder.fogNode === null) return null;
+  const property = (name) => reference(name, 'float', fog).setGroup(renderGroup);
+  if (fog.isFogExp2) return densityFogFactor(property('density'));
+  return fog.isFog ? rangeFogFactor(property('near'), property('far')) : null;
+}
 
 /**
  * The split, mixed into a node material class: setupLighting returns the light without its diffuse
@@ -110,6 +124,10 @@ function withSubsurface(Base) {
       // the property is read where each output needs it, after the lighting has assigned it.
       const kept = vec3(diffuse); // three's own diffuse light: what the colour output gives up
       let light = vec3(lit);
+      // Fog blends the colour output towards the fog colour; the diffuse light fades by the same
+      // factor, so that diffuse + colour equals three's own fogged result (output.glsl).
+      const fogFactor = sceneFogFactor(builder, this);
+      if (fogFactor) light = light.mul(fogFactor.oneMinus());
       if (t) {
         // The thickness and transmittance views write that ingredient instead (output.glsl).
         const output = this.transmittanceNodes.sssDebugOutput;

@@ -35,7 +35,8 @@ it('?renderer=webgpu draws the head through the node: lit, and the scattering ch
   const d = [];
   for (let i = 0; i < on.length; i += 4) d.push(Math.max(...[0, 1, 2].map((c) => Math.abs(on[i + c] - off[i + c]))));
   d.sort((a, b) => a - b);
-  console.log(`lit ${litFraction(on)}, on − off p99 ${d[Math.floor(0.99 * d.length)]}, max ${d[d.length - 1]}, changed ${d.filter((x) => x > 2).length / d.length}`);
+  // Measured 2026-12-01: 29 % of the pixels lit; scattering off changes 8 % of them by more than
+  // 2/255, the 99th percentile by 19/255 (the WebGL page's test asks the same of its divider).
   expect(d[Math.floor(0.99 * d.length)]).toBeGreaterThan(4);
   expect(page.problems).toEqual([]);
   await page.close();
@@ -44,12 +45,12 @@ it('?renderer=webgpu draws the head through the node: lit, and the scattering ch
 it('?renderer=webgpu without WebGPU says so and shows the WebGL page', async () => {
   const page = await openPage('/?still&renderer=webgpu', SIZE);
   expect(await page.evaluate('window.testReady')).toBe(true);
-  const info = await page.evaluate(() => ({ kind: window.demo.rendererKind, notice: document.getElementById('renderer-notice') }));
+  const kind = await page.evaluate(() => window.demo.rendererKind);
   const notice = await page.evaluate(() => {
     const element = document.getElementById('renderer-notice');
     return { hidden: element.hidden, text: element.textContent };
   });
-  expect(info.kind).toBe('webgl');
+  expect(kind).toBe('webgl');
   expect(notice.hidden).toBe(false);
   expect(notice.text).toMatch(/^WebGPU is not available here: .*This is the WebGL page/);
   await page.evaluate(() => window.demo.stop());
