@@ -125,7 +125,7 @@ export function createControls(state, { onChange, onFigure, onReset, container, 
   add(more, 'resolutionScale', 0.05);
   // The other renderer: a reload (?renderer=webgpu), the hash kept.
   const other = renderer === 'webgpu' ? 'webgl' : 'webgpu';
-  more.add({ switch: () => onRenderer(other) }, 'switch').name(other === 'webgpu' ? '⇄ WebGPURenderer (reloads)' : '⇄ WebGLRenderer (reloads)');
+  more.add({ switch: () => onRenderer(other) }, 'switch').name(other === 'webgpu' ? '⇄ WebGPU (reloads)' : '⇄ WebGL (reloads)');
 
   markPreset();
   return {
