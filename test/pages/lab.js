@@ -106,7 +106,8 @@ const SCENES = {
    * A slab `thicknessMm` thick, lit from behind, seen from the front (transmittance). With
    * `occluder`, a sheet between the light and the slab's upper right quarter (as the camera sees
    * it) adds `occluderGapMm` to the thickness the light crosses there: a picture that is not
-   * symmetric, so a flipped light depth map shows. `fog`: [near, far] of a THREE.Fog.
+   * symmetric, so a flipped light depth map shows. `fog`: [near, far] of a THREE.Fog; `spot`: a
+   * SpotLight in place of the DirectionalLight (below).
    */
   backlit(o) {
     const scene = new THREE.Scene();
@@ -121,8 +122,10 @@ const SCENES = {
       sheet.position.set(o.slabSize / 4, o.slabSize / 4, -thickness / 2 - o.occluderGapMm / o.worldUnitInMm);
       scene.add(sheet);
     }
-    const light = new THREE.DirectionalLight(0xffffff, o.intensity);
-    light.position.set(0, 0, -10);
+    // With `spot`, a spot light off the axis (decay 2, its intensity scaled to give the directional
+    // light's irradiance at the slab's middle) whose cone edge crosses the view.
+    const light = o.spot ? new THREE.SpotLight(0xffffff, o.intensity * 113, 0, Math.PI / 12, 0.5, 2) : new THREE.DirectionalLight(0xffffff, o.intensity);
+    light.position.set(o.spot ? 3 : 0, o.spot ? 2 : 0, -10);
     light.shadow.camera.left = light.shadow.camera.bottom = -o.slabSize;
     light.shadow.camera.right = light.shadow.camera.top = o.slabSize;
     light.shadow.camera.near = 1;
