@@ -2,9 +2,9 @@
 // display nodes are. Its input is a scene pass whose MRT is subsurfaceMRT() (stage 2: the
 // subsurface node materials write the diffuse light and the surface there); the node runs stage 3,
 // the two separable blur passes, before the frame (updateBefore), and is itself stage 4, the
-// compose. With a `light` it runs stage 1 too, the light depth pass for transmittance, and hands
-// the subsurface materials it finds in the scene their transmittance uniforms before the scene
-// pass draws them. What the WebGL path's orchestrator does per frame (src/SubsurfaceScattering.js,
+// compose. With a `light` it runs stage 1 too (./1-light-depth/LightStageNode.js): the light
+// depth pass for transmittance, and the subsurface materials' transmittance uniforms, before the
+// scene pass draws them. What the WebGL path's orchestrator does per frame (src/SubsurfaceScattering.js,
 // steps 0 to 5) happens here in the same order, with the same CPU side: the profile tables, the
 // footprint tables, the frame plan, the light's checks and the parameter checks are imported from
 // src/, not copied.
@@ -25,41 +25,20 @@ import { planBlur } from '../3-blur/blurPlan.js';
 import { isPerspective } from '../support/screenScale.js';
 import { checkBoolean, checkNumber, checkOneOf, checkOptions } from '../support/parameterChecks.js';
 import { describe } from '../support/rendererSupport.js';
-import { FrameChecks } from '../support/frameChecks.js';
-import {
-  checkTransmittanceSwitch, isShining, lightReachesFromBehind, transmittanceSettings, writeTransmittedLight,
-} from '../2-scene-split/transmittanceModel.js';
-import { LightDepthNodeTarget } from './1-light-depth/LightDepthNodeTarget.js';
+import { checkTransmittanceSwitch } from '../2-scene-split/transmittanceModel.js';
+import { LightStageNode } from './1-light-depth/LightStageNode.js';
+import { subsurfaceMeshesOf } from './2-scene-split/subsurfaceNodeMaterial.js';
 import { PIPELINE_SCHEMA, checkOption } from '../options.js';
 import { NODE_DEFAULTS, checkMethod } from './nodeOptions.js';
 import { ATTACHMENT_NAMES } from './2-scene-split/attachments.js';
 import { subsurfaceBlurNode } from './3-blur/subsurfaceBlurTsl.js';
 import { checkWebgpuThree } from './threeVersion.js';
 import { LIGHT_VIEWS, composeNode, debugViewUniform } from './4-compose/composeTsl.js';
-import { DEBUG_VIEWS, MATERIAL_OUTPUTS, materialOutputOf } from '../4-compose/debugViews.js';
+import { DEBUG_VIEWS } from '../4-compose/debugViews.js';
 
 const _quadMesh = /*@__PURE__*/ new QuadMesh();
 const _size = /*@__PURE__*/ new Vector2();
 let _rendererState;
-
-/** Runs its owner's beforeScene once a frame, ahead of the scene pass (see SubsurfaceScatteringNode.setup). */
-class LightStageNode extends Node {
-  static get type() {
-    return 'SubsurfaceLightStageNode';
-  }
-
-  /** @param {SubsurfaceScatteringNode} owner */
-  constructor(owner) {
-    super('void');
-    this.owner = owner;
-    this.updateBeforeType = NodeUpdateType.FRAME;
-  }
-
-  /** @param {import('three/webgpu').NodeFrame} frame */
-  updateBefore(frame) {
-    this.owner.beforeScene(frame.renderer);
-  }
-}
 
 export class SubsurfaceScatteringNode extends Node {
   static get type() {
@@ -85,11 +64,9 @@ export class SubsurfaceScatteringNode extends Node {
     };
     /** Stage 1: the light depth map for transmittance, or null without a light. @type {LightDepthNodeTarget|null} */
     const lightDepthSize = checkOption(PIPELINE_SCHEMA, 'lightDepthSize', o.lightDepthSize);
-    this.lightDepth = checkOption(PIPELINE_SCHEMA, 'light', o.light) === null ? null : new LightDepthNodeTarget(o.light, { size: lightDepthSize });
-    this._transmittance = this.lightDepth !== null;
-    /** The subsurface materials this node has handed transmittance uniforms (taken back on dispose). */
-    this._transmitting = new Set();
-    this._checks = new FrameChecks('SubsurfaceScatteringNode');
+    /** Stage 1 and the materials' transmittance uniforms, before the scene pass (null without a light). */
+    this._lightStage = checkOption(PIPELINE_SCHEMA, 'light', o.light) === null ? null : new LightStageNode(this, o.light, lightDepthSize);
+    this._transmittance = this._lightStage !== null;
     this._debugView = 'final';
     this._settings = { method: checkMethod(o.method) };
     // Every option through its setter: the WebGL pipeline's schema checks it (src/options.js).
@@ -114,7 +91,6 @@ export class SubsurfaceScatteringNode extends Node {
     this._profileNode = texture(this.profileLookup.texture);
     this._footprintNode = texture(this.footprintTable.update(this.samples === 'auto' ? 'auto' : this.samples));
     this.updateBeforeType = NodeUpdateType.FRAME;
-    this._lightStage = new LightStageNode(this);
     this.isSubsurfaceScatteringNode = true;
   }
 
@@ -140,7 +116,10 @@ export class SubsurfaceScatteringNode extends Node {
   }
 
   /** What the last frame found wrong with the light, one message each (empty when all is well). @type {readonly string[]} */
-  get problems() { return this._checks.current; }
+  get problems() { return this._lightStage?.checks.current ?? []; }
+
+  /** Stage 1: the light depth map for transmittance, or null without a light. @type {import('./1-light-depth/LightDepthNodeTarget.js').LightDepthNodeTarget|null} */
+  get lightDepth() { return this._lightStage?.lightDepth ?? null; }
 
   /** Whether the blur runs (false: the output equals the scene without scattering). @type {boolean} */
   get scattering() { return this._scattering; }
@@ -249,51 +228,6 @@ export class SubsurfaceScatteringNode extends Node {
     return this._scatteredNode;
   }
 
-  /** The visible meshes with a subsurface node material, and those materials. @private */
-  _subsurfaceMeshes() {
-    const meshes = [];
-    const materials = new Set();
-    this.scenePass.scene.traverseVisible((object) => {
-      if (!object.isMesh) return;
-      const own = (Array.isArray(object.material) ? object.material : [object.material]).filter((m) => m?.isSubsurfaceNodeMaterial);
-      if (own.length === 0) return;
-      meshes.push(object);
-      for (const m of own) materials.add(m);
-    });
-    return { meshes, materials };
-  }
-
-  /**
-   * Stage 1: the light depth map, when the light works (FrameChecks: finite, in the scene, a
-   * frustum), shines, and reaches a transmitting material from behind (or the thickness view reads
-   * the map); otherwise the map is marked out of date and nothing is transmitted. @private
-   */
-  _renderLightDepth(renderer, scene, camera) {
-    const { lightDepth } = this;
-    const checks = this._checks.begin();
-    const works = checks.light(lightDepth, scene, this._transmittance);
-    checks.end();
-    const read = materialOutputOf(this._debugView) === 'thickness'
-      || lightReachesFromBehind(lightDepth.light, scene, camera, (m) => m.isSubsurfaceNodeMaterial === true && m.transmittance);
-    if (works && isShining(lightDepth.light, scene, camera) && read) lightDepth.render(renderer, scene);
-    else lightDepth.invalidate();
-  }
-
-  /** Each subsurface material's transmittance uniforms for this frame (the WebGL hook's writer). @private */
-  _writeTransmittance(materials, scene, camera) {
-    const output = MATERIAL_OUTPUTS.indexOf(materialOutputOf(this._debugView));
-    for (const material of materials) {
-      const u = material.useTransmittance({ lightDepthMap: this.lightDepth.texture, profileLookup: this.profileLookup.texture });
-      this._transmitting.add(material);
-      u.sssDebugOutput.value = output;
-      u.sssTransmits.value = false;
-      if (!this._transmittance || !material.transmittance) continue;
-      const { widthMm, translucency, shrinkMm } = material;
-      const settings = transmittanceSettings({ lightDepth: this.lightDepth, lookup: this.profileLookup, worldUnitInMm: this.worldUnitInMm, widthMm, translucency, shrinkMm });
-      writeTransmittedLight(u, settings, scene, camera);
-    }
-  }
-
   /** The frame plan (src/3-blur/blurPlan.js): the on-screen reach of the kernel, the taps, whether the blur runs. */
   _planFrame(meshes, camera, width, height) {
     const pixelsPerMm = estimatePixelsPerMm(meshes, camera, { width, height },
@@ -345,7 +279,7 @@ export class SubsurfaceScatteringNode extends Node {
     renderer.getDrawingBufferSize(_size);
     scenePass.setSize(_size.width, _size.height);
     const { width, height } = scenePass.renderTarget;
-    this.plan = this._planFrame(this._subsurfaceMeshes().meshes, camera, width, height);
+    this.plan = this._planFrame(subsurfaceMeshesOf(scene).meshes, camera, width, height);
     const diffuse = scenePass.getTexture(ATTACHMENT_NAMES.DIFFUSE);
     if (!this.plan.blur) {
       this._scatteredNode.value = diffuse; // the compose reads the unblurred light: the output equals no SSS
@@ -377,26 +311,11 @@ export class SubsurfaceScatteringNode extends Node {
     RendererUtils.restoreRendererState(renderer, _rendererState);
   }
 
-  /**
-   * Stage 1 and what stage 2's materials read of it, before the scene pass draws them (_lightStage
-   * calls it): the light depth map, then each subsurface material's transmittance uniforms.
-   * @param {import('three/webgpu').Renderer} renderer
-   */
-  beforeScene(renderer) {
-    if (!this.lightDepth) return;
-    const { scene, camera } = this.scenePass;
-    // The matrices as the scene pass's render will see them (three updates them the same way).
-    if (scene.matrixWorldAutoUpdate === true) scene.updateMatrixWorld();
-    if (camera.parent === null && camera.matrixWorldAutoUpdate === true) camera.updateMatrixWorld();
-    this._renderLightDepth(renderer, scene, camera);
-    this._writeTransmittance(this._subsurfaceMeshes().materials, scene, camera);
-  }
-
   /** @param {import('three/webgpu').NodeBuilder} builder */
   setup(builder) {
     // three runs a node's inputs' updateBefore first (in the order they were built), so the
     // scene pass would draw before this node's updateBefore: the light stage is built ahead of it.
-    this._lightStage.build(builder);
+    this._lightStage?.build(builder);
     return composeNode({
       colour: this.scenePass.getTextureNode(ATTACHMENT_NAMES.COLOR),
       unscattered: this.scenePass.getTextureNode(ATTACHMENT_NAMES.DIFFUSE),
@@ -410,12 +329,7 @@ export class SubsurfaceScatteringNode extends Node {
 
   /** Frees the node's targets, tables and materials (the scene pass is the caller's); the subsurface materials it drew lose their transmittance. */
   dispose() {
-    for (const material of this._transmitting) {
-      material.transmittanceNodes = null; // they read this node's light depth map: rebuilt without it
-      material.needsUpdate = true;
-    }
-    this._transmitting.clear();
-    this.lightDepth?.dispose();
+    this._lightStage?.dispose();
     this._horizontalTarget.dispose();
     this._scatteredTarget.dispose();
     this.footprintTable.dispose();

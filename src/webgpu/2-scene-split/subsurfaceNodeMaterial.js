@@ -210,3 +210,21 @@ export function subsurfaceMRT() {
   node.setClearColor(ATTACHMENT_NAMES.SURFACE, 0x000000, 0);
   return node;
 }
+
+/**
+ * The visible meshes of `scene` with a subsurface node material, and those materials: what the
+ * node plans the blur over and hands transmittance uniforms to.
+ * @param {import('three').Scene} scene
+ */
+export function subsurfaceMeshesOf(scene) {
+  const meshes = [];
+  const materials = new Set();
+  scene.traverseVisible((object) => {
+    if (!object.isMesh) return;
+    const own = (Array.isArray(object.material) ? object.material : [object.material]).filter((m) => m?.isSubsurfaceNodeMaterial);
+    if (own.length === 0) return;
+    meshes.push(object);
+    for (const m of own) materials.add(m);
+  });
+  return { meshes, materials };
+}
