@@ -103,8 +103,8 @@ async function webgpuModule() {
     const webgpu = await import('./webgpuPipeline.js');
     missing = await webgpu.webgpuMissing();
     if (!missing) {
-      showNotice(rendererNotice, 'WebGPURenderer: the head through ', code('three-separable-sss/webgpu'),
-        "'s node. The divider, the 'marginal' and 'reference' methods and per-pass timings are on the WebGL page only.");
+      showNotice(rendererNotice, 'WebGPURenderer, through ', code('three-separable-sss/webgpu'),
+        ' (the divider and per-pass timings: WebGL page only).');
       return webgpu;
     }
   } catch (error) {

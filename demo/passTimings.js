@@ -69,7 +69,8 @@ export class PassTimings {
     const medians = this.stages.medians();
     // Timed before and not now, or the light depth pass of a pipeline with a light (skipped while
     // the light reaches no subsurface mesh from behind, and with transmittance off).
-    const skipped = this.lastFrame === null ? [] : STAGES.filter((s) => !this.ran.has(s)
+    // Nothing is timed without a stage timer (WebGPU): no stage can be told skipped either.
+    const skipped = this.lastFrame === null || this.stages === NO_STAGE_TIMER ? [] : STAGES.filter((s) => !this.ran.has(s)
       && (s in medians || (s === 'lightDepth' && this.sss.lightDepth !== null)));
     for (const s of skipped) delete medians[s];
     return { ...medians, skipped, cpu: median(this.frameTimes), fps: 1000 / median(this.frameIntervals) };
