@@ -8,7 +8,7 @@ import vertexShader from '../../shaders/1-light-depth/lightDepth.vert.glsl?raw';
 import fragmentShader from '../../shaders/1-light-depth/lightDepth.frag.glsl?raw';
 import { assertFloatRenderTargets, describe } from '../support/rendererSupport.js';
 import { preservingRendererState } from '../support/rendererState.js';
-import { LightDepthView, boundsNoVolume, hasOwnShape, lightSees } from './LightDepthView.js';
+import { LightDepthView, boundsNoVolume } from './LightDepthView.js';
 
 /** Drawn in place of what the light pass leaves out: three culls a material with visible false. */
 const HIDDEN = new ShaderMaterial({ name: 'LightDepthHidden', visible: false });
@@ -49,9 +49,6 @@ export class LightDepthTarget extends LightDepthView {
       depthBuffer: true,
     });
     this.renderTarget.texture.name = 'LightDepthTarget.texture';
-    /** @type {Map<import('three').Material, ShaderMaterial>} depth materials of cut-out or clipped materials */
-    this._shaped = new Map();
-    this._onMaterialDispose = (event) => this._forget(event.target);
     this.setSize(this.size);
   }
 
@@ -65,35 +62,24 @@ export class LightDepthTarget extends LightDepthView {
   depthMaterialOf(object) {
     if (boundsNoVolume(object)) return HIDDEN;
     if (!object.isMesh) return null;
-    const of = (material) => {
-      if (!lightSees(material)) return HIDDEN;
-      return hasOwnShape(material) ? this._shapedMaterial(material) : this.material;
-    };
+    const of = (material) => this.depthMaterialFor(material) ?? HIDDEN;
     return Array.isArray(object.material) ? object.material.map(of) : of(object.material);
   }
 
-  /** The depth material following `material`'s cut-out and clipping, its uniforms read now. */
-  _shapedMaterial(material) {
-    let shaped = this._shaped.get(material);
-    if (!shaped) {
-      shaped = this.material.clone();
-      shaped.name = `LightDepthMaterial(${material.name || material.type})`;
-      Object.assign(shaped.uniforms, {
-        map: { value: null }, mapTransform: { value: new Matrix3() },
-        alphaMap: { value: null }, alphaMapTransform: { value: new Matrix3() },
-        alphaTest: { value: 0 }, opacity: { value: 1 },
-      });
-      this._shaped.set(material, shaped);
-      material.addEventListener('dispose', this._onMaterialDispose);
-    }
-    // Three derives USE_MAP, USE_ALPHAMAP, USE_ALPHATEST and their uv channels from these fields,
-    // for a ShaderMaterial as for its own; the uniforms it leaves to us.
-    const alphaTest = material.alphaToCoverage === true ? 0.5 : material.alphaTest;
-    shaped.map = material.map ?? null;
-    shaped.alphaMap = material.alphaMap ?? null;
-    shaped.alphaTest = shaped.map || shaped.alphaMap ? alphaTest : 0;
-    shaped.clippingPlanes = material.clippingPlanes;
-    shaped.clipIntersection = material.clipIntersection;
+  /** A depth material of its own for a cut-out or clipped material (LightDepthView._shapedMaterial). */
+  createShapedMaterial(material) {
+    const shaped = this.material.clone();
+    shaped.name = `LightDepthMaterial(${material.name || material.type})`;
+    Object.assign(shaped.uniforms, {
+      map: { value: null }, mapTransform: { value: new Matrix3() },
+      alphaMap: { value: null }, alphaMapTransform: { value: new Matrix3() },
+      alphaTest: { value: 0 }, opacity: { value: 1 },
+    });
+    return shaped;
+  }
+
+  /** Its uniforms: three derives USE_MAP, USE_ALPHAMAP, USE_ALPHATEST from the fields, for a ShaderMaterial as for its own, and leaves the uniforms to us. */
+  updateShapedMaterial(shaped, material) {
     const u = shaped.uniforms;
     u.map.value = shaped.map;
     u.alphaMap.value = shaped.alphaMap;
@@ -101,13 +87,6 @@ export class LightDepthTarget extends LightDepthView {
     if (shaped.alphaMap) uvTransform(shaped.alphaMap, u.alphaMapTransform.value);
     u.alphaTest.value = shaped.alphaTest;
     u.opacity.value = material.opacity;
-    return shaped;
-  }
-
-  _forget(material) {
-    material.removeEventListener('dispose', this._onMaterialDispose);
-    this._shaped.get(material)?.dispose();
-    this._shaped.delete(material);
   }
 
   /**
@@ -148,12 +127,5 @@ export class LightDepthTarget extends LightDepthView {
         for (const [object, material] of swapped) object.material = material;
       }
     });
-  }
-
-  /** Frees the target and the depth materials. */
-  dispose() {
-    this.renderTarget.dispose();
-    this.material.dispose();
-    for (const material of [...this._shaped.keys()]) this._forget(material);
   }
 }

@@ -38,7 +38,9 @@ export const boundsNoVolume = (object) => object.isPoints === true || object.isL
 
 /**
  * The light's view of a SpotLight (perspective) or DirectionalLight (orthographic); the subclass
- * makes `renderTarget` and then calls setSize(this.size).
+ * makes `renderTarget` and `material` (the shared depth material), then calls setSize(this.size),
+ * and makes the depth material of a material with its own shape (createShapedMaterial; with
+ * updateShapedMaterial where its uniforms need the material's values too).
  */
 export class LightDepthView {
   /**
@@ -65,6 +67,52 @@ export class LightDepthView {
      * `invalidate()`; materials send no transmittance from a map that does not.
      */
     this.valid = false;
+    /** @type {Map<import('three').Material, import('three').Material>} depth materials of cut-out or clipped materials */
+    this._shaped = new Map();
+    this._onMaterialDispose = (event) => this._forget(event.target);
+  }
+
+  /**
+   * What a surface of `material` is drawn with from the light: null (left out: lightSees), the
+   * depth material that keeps its cut-out and clipping (hasOwnShape), or the shared one.
+   * @param {import('three').Material|undefined|null} material
+   */
+  depthMaterialFor(material) {
+    if (!lightSees(material)) return null;
+    return hasOwnShape(material) ? this._shapedMaterial(material) : this.material;
+  }
+
+  /** The depth material following `material`'s cut-out and clipping (one per material), its settings read now. */
+  _shapedMaterial(material) {
+    let shaped = this._shaped.get(material);
+    if (!shaped) {
+      shaped = this.createShapedMaterial(material);
+      this._shaped.set(material, shaped);
+      material.addEventListener('dispose', this._onMaterialDispose);
+    }
+    // three reads the cut-out and the clipping from these fields, for the depth material as for
+    // its own; alphaToCoverage counts as alphaTest 0.5, as in three's shadow maps.
+    const alphaTest = material.alphaToCoverage === true ? 0.5 : material.alphaTest;
+    const map = material.map ?? null;
+    const alphaMap = material.alphaMap ?? null;
+    Object.assign(shaped, {
+      map, alphaMap, alphaTest: map || alphaMap ? alphaTest : 0, clippingPlanes: material.clippingPlanes, clipIntersection: material.clipIntersection,
+    });
+    this.updateShapedMaterial?.(shaped, material);
+    return shaped;
+  }
+
+  _forget(material) {
+    material.removeEventListener('dispose', this._onMaterialDispose);
+    this._shaped.get(material)?.dispose();
+    this._shaped.delete(material);
+  }
+
+  /** Frees the target and the depth materials. */
+  dispose() {
+    this.renderTarget.dispose();
+    this.material.dispose();
+    for (const material of [...this._shaped.keys()]) this._forget(material);
   }
 
   /** Marks the map out of date (its pass was skipped this frame): no transmittance until the next render. */

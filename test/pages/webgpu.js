@@ -270,5 +270,32 @@ async function backlit({ backend = 'webgpu', width = 96, height = 54, lightZ, ma
   return result;
 }
 
-window.wgpu = { THREE, NODE, pass, createRenderer, readFloats, subsurfacePipeline, flat, head, disposal, plainDraw, debugViews, backlit };
+/**
+ * The WebGL light depth test's cards (lab.js's lightDepthCards; the clipped one in a
+ * ClippingGroup) into the node's light depth map, 64 × 64: the depths at lab.cardDepths' points, and the shaped depth materials made, left after
+ * one card's material is disposed, and after the map is.
+ */
+async function lightDepthCards({ backend = 'webgpu' }) {
+  const renderer = await sharedRenderer(backend, 16, 16);
+  const { scene, light, mapped } = window.lab.lightDepthCards();
+  // WebGPURenderer clips by ClippingGroup, not by material.clippingPlanes: the clipped card goes
+  // into one with its material's planes (the same cut, each renderer's way).
+  const clipped = scene.children.find((object) => object.material?.clippingPlanes?.length);
+  const group = new THREE.ClippingGroup();
+  group.clippingPlanes = clipped.material.clippingPlanes;
+  scene.add(group);
+  group.add(clipped);
+  const target = new NODE.LightDepthNodeTarget(light, { size: 64 });
+  target.render(renderer, scene);
+  const data = await renderer.readRenderTargetPixelsAsync(target.renderTarget, 0, 0, 64, 64);
+  // Rows bottom-up, as the WebGL lab reads them (the WebGPU backend's are top-down).
+  const rows = renderer.backend.isWebGPUBackend ? Float32Array.from({ length: 64 * 64 }, (_, i) => data[(63 - Math.floor(i / 64)) * 64 + (i % 64)]) : data;
+  const variants = target._shaped.size;
+  mapped.material.dispose();
+  const afterOneDisposed = target._shaped.size;
+  target.dispose();
+  return { samples: window.lab.cardDepths(rows, 1), variants, afterOneDisposed, left: target._shaped.size };
+}
+
+window.wgpu = { THREE, NODE, pass, createRenderer, readFloats, subsurfacePipeline, flat, head, disposal, plainDraw, debugViews, backlit, lightDepthCards };
 window.testReady = true;

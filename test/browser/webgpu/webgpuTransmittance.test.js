@@ -10,6 +10,7 @@
 // - 2 mm at translucency 0.5 transmits T(1 mm) (the same closed form);
 // - through a spot light off the axis and in fog, the node's diffuse light and image equal the
 //   WebGL pipeline's (the diffuse light faded by the fog factor as the colour is fogged);
+// - the light depth map holds what the WebGL path's does on its cards (cut-outs, clipping, glass);
 // - lit from the front, nothing is transmitted and the light depth pass is skipped.
 import { describe, it, expect, beforeAll, afterAll } from 'vitest';
 import { mat4 } from 'gl-matrix';
@@ -18,6 +19,7 @@ import { evaluateFloats, runLab } from '../../harness/page.js';
 import { at } from '../../harness/images.js';
 import { BACKENDS, openWebgpuPage } from '../../harness/webgpuBrowser.js';
 import { thicknessFromLightDepth, transmittedFractionOracle } from '../../oracle/transmittance.js';
+import { CARD_DEPTHS } from '../1-light-depth/cardDepths.js';
 
 let page;
 beforeAll(async () => { page = await openWebgpuPage('/test/pages/webgpu.html'); });
@@ -146,6 +148,12 @@ for (const backend of BACKENDS) {
       // diffuse bound is two half-float steps as above. Without the fade the node was 0.2 brighter.
       expect(worst.diffuse, 'diffuse light').toBeLessThan(5e-4);
       expect(worst.final, 'image').toBeLessThan(1e-3);
+    });
+
+    it("the light depth map keeps cut-outs (map or alphaMap alpha test) and clipping (a ClippingGroup here) and leaves out glass, hidden materials and points, as the WebGL path's", async () => {
+      const r = await page.evaluate((b) => window.wgpu.lightDepthCards({ backend: b }), backend);
+      for (const [name, depth] of Object.entries(CARD_DEPTHS)) expect(r.samples[name], name).toBeCloseTo(depth, 4);
+      expect(r).toMatchObject({ variants: 3, afterOneDisposed: 2, left: 0 }); // one depth material per shaped material, freed with it
     });
 
     it('lit from the front, the slab transmits nothing and the light depth pass is skipped', async () => {
