@@ -316,6 +316,10 @@ export class SubsurfaceScatteringNode extends Node {
     // three runs a node's inputs' updateBefore first (in the order they were built), so the
     // scene pass would draw before this node's updateBefore: the light stage is built ahead of it.
     this._lightStage?.build(builder);
+    // WebGPU multisamples no 32-bit float format (RGBA32Float): an MSAA scene pass keeps the
+    // surface in half float there (depth steps of 1/2048 of the distance; the WebGL 2 backend keeps 32 bits).
+    const surface = this.scenePass.getTexture(ATTACHMENT_NAMES.SURFACE);
+    if (builder.renderer.backend.isWebGPUBackend && this.scenePass.renderTarget.samples > 0) surface.type = HalfFloatType;
     return composeNode({
       colour: this.scenePass.getTextureNode(ATTACHMENT_NAMES.COLOR),
       unscattered: this.scenePass.getTextureNode(ATTACHMENT_NAMES.DIFFUSE),

@@ -49,9 +49,9 @@ async function readFloats(renderer, target, index = 0) {
   return rows;
 }
 
-/** The subsurface pass and node over `scene` seen by `camera`, in a RenderPipeline. */
-function subsurfacePipeline(renderer, scene, camera, { type = THREE.HalfFloatType, sss = {} } = {}) {
-  const scenePass = pass(scene, camera, { type });
+/** The subsurface pass (MSAA with `samples`) and node over `scene` seen by `camera`, in a RenderPipeline. */
+function subsurfacePipeline(renderer, scene, camera, { type = THREE.HalfFloatType, samples = 0, sss = {} } = {}) {
+  const scenePass = pass(scene, camera, { type, samples });
   scenePass.setMRT(NODE.subsurfaceMRT());
   const node = NODE.subsurfaceScattering(scenePass, sss);
   const pipeline = new THREE.RenderPipeline(renderer);
@@ -233,20 +233,22 @@ async function debugViews({ backend = 'webgpu', width = 96, height = 54 }) {
 }
 
 /**
- * The WebGL lab's back-lit slab (lab.js's `backlit` scene: a directional light straight behind,
- * intensity π, a white slab `thicknessMm` thick at 10 mm per unit) through the node with the light:
- * the diffuse attachment (float, before the blur), whether the light depth pass ran, and the node's
- * output in each of `views` (linear, float). `lightZ` moves the light (+10: in front of the slab).
+ * One of the WebGL lab's scenes (lab.js's SCENES, its defaults: 10 mm per unit) through the node,
+ * its subsurface materials as node materials, the scene pass multisampled with `samples`, and the
+ * scene's light for transmittance where `transmittance`: the diffuse attachment (float, before
+ * the blur), whether the light depth pass ran, and the node's output in each of `views` (linear,
+ * float). `lightZ` moves the light (+10: in front of the back-lit slab).
  */
-async function backlit({ backend = 'webgpu', width = 96, height = 54, lightZ, material = {}, views = [], ...scene }) {
+async function labScene({
+  backend = 'webgpu', width = 96, height = 54, scene: name = 'backlit', transmittance = true, samples = 0, lightZ, material = {}, views = [], ...scene
+}) {
   const renderer = await sharedRenderer(backend, width, height);
-  const built = window.lab.buildScene('backlit', { width, height, ...scene });
+  const built = window.lab.buildScene(name, { width, height, ...scene });
   if (lightZ !== undefined) built.light.position.z = lightZ;
-  const [plain] = built.subsurface;
-  const skin = NODE.subsurfaceMaterial(plain, { widthMm: 1, ...material });
-  built.scene.traverse((object) => { if (object.material === plain) object.material = skin; });
+  const skins = new Map(built.subsurface.map((plain) => [plain, NODE.subsurfaceMaterial(plain, { widthMm: 1, ...material })]));
+  built.scene.traverse((object) => { if (skins.has(object.material)) object.material = skins.get(object.material); });
   const { scenePass, node, pipeline } = subsurfacePipeline(renderer, built.scene, built.camera, {
-    type: THREE.FloatType, sss: { worldUnitInMm: window.lab.DEFAULTS.worldUnitInMm, light: built.light },
+    type: THREE.FloatType, samples, sss: { worldUnitInMm: window.lab.DEFAULTS.worldUnitInMm, light: transmittance ? built.light : null },
   });
   const target = new THREE.RenderTarget(width, height, { type: THREE.FloatType });
   const render = () => {
@@ -255,7 +257,7 @@ async function backlit({ backend = 'webgpu', width = 96, height = 54, lightZ, ma
     renderer.setRenderTarget(null);
   };
   render();
-  const result = { width, height, diffuse: await readFloats(renderer, scenePass.renderTarget, 'diffuse'), lightDepthRendered: node.lightDepth.valid };
+  const result = { width, height, diffuse: await readFloats(renderer, scenePass.renderTarget, 'diffuse'), lightDepthRendered: node.lightDepth?.valid };
   for (const view of views) {
     Object.assign(node, { debugView: view, debugThicknessRangeMm: 10 });
     render();
@@ -265,8 +267,10 @@ async function backlit({ backend = 'webgpu', width = 96, height = 54, lightZ, ma
   pipeline.dispose();
   scenePass.dispose();
   target.dispose();
-  skin.dispose();
-  plain.dispose();
+  for (const [plain, skin] of skins) {
+    skin.dispose();
+    plain.dispose();
+  }
   return result;
 }
 
@@ -297,5 +301,23 @@ async function lightDepthCards({ backend = 'webgpu' }) {
   return { samples: window.lab.cardDepths(rows, 1), variants, afterOneDisposed, left: target._shaped.size };
 }
 
-window.wgpu = { THREE, NODE, pass, createRenderer, readFloats, subsurfacePipeline, flat, head, disposal, plainDraw, debugViews, backlit, lightDepthCards };
+/** One of the WebGL lab's scenes drawn plainly by WebGPURenderer on `backend` (a scene pass, MSAA with `samples`), linear float RGBA. */
+async function labScenePlain({ backend = 'webgpu', width = 96, height = 54, scene: name = 'mixed', samples = 0, ...scene }) {
+  const renderer = await sharedRenderer(backend, width, height);
+  const built = window.lab.buildScene(name, { width, height, ...scene });
+  const scenePass = pass(built.scene, built.camera, { type: THREE.FloatType, samples });
+  const pipeline = new THREE.RenderPipeline(renderer, scenePass);
+  pipeline.outputColorTransform = false;
+  const target = new THREE.RenderTarget(width, height, { type: THREE.FloatType });
+  renderer.setRenderTarget(target);
+  pipeline.render();
+  renderer.setRenderTarget(null);
+  const image = await readFloats(renderer, target);
+  pipeline.dispose();
+  scenePass.dispose();
+  target.dispose();
+  return image;
+}
+
+window.wgpu = { THREE, NODE, pass, createRenderer, readFloats, subsurfacePipeline, flat, head, disposal, plainDraw, debugViews, labScene, labScenePlain, lightDepthCards };
 window.testReady = true;

@@ -76,7 +76,7 @@ function expectOracle(r, t, region) {
   return mean;
 }
 
-const backlit = (options) => evaluateFloats(page, (o) => window.wgpu.backlit(o), { ...SIZE, material: { shrinkMm: SHRINK_MM }, ...options });
+const backlit = (options) => evaluateFloats(page, (o) => window.wgpu.labScene(o), { ...SIZE, scene: 'backlit', material: { shrinkMm: SHRINK_MM }, ...options });
 
 for (const backend of BACKENDS) {
   describe(`transmittance on the node, ${backend}`, () => {
