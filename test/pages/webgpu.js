@@ -6,7 +6,7 @@ import * as THREE from 'three/webgpu';
 import { pass } from 'three/tsl';
 import * as NODE from '/src/webgpu/index.js';
 import { flatScene } from './flatScene.js';
-import { HEAD_WORLD_UNIT_IN_MM } from '/demo/headScene.js';
+import { HEAD_WORLD_UNIT_IN_MM, setLightDirection } from '/demo/headScene.js';
 import { headRig } from './headRig.js';
 import './lab.js'; // window.lab: the WebGL pipeline's side of the comparisons
 
@@ -88,16 +88,20 @@ const toBytes = (floats) => Uint8Array.from(floats, (v) => Math.round(Math.min(M
  * bottom-up: the WebGL pipeline in an EffectComposer with OutputPass, and the node in a
  * RenderPipeline on `backend`; with `sss: false` each renderer's plain frame instead (the baseline
  * difference between the two renderers). Shadows off: the renderers filter shadow maps differently.
- * `fovDeg` narrows the demo's 25° view onto the face (more pixels per mm: more visible scattering).
+ * `fovDeg` narrows the demo's 25° view onto the face (more pixels per mm: more visible scattering);
+ * `light`: [azimuth, elevation] in degrees (demo/headScene.js's setLightDirection), and the light
+ * sends transmittance on both; `view`: both pipelines' debug view.
  */
-async function head({ width = 320, height = 180, backend = 'webgpu', sss = true, fovDeg }) {
+async function head({ width = 320, height = 180, backend = 'webgpu', sss = true, fovDeg, light, view = 'final' }) {
   const L = window.lab;
   const glRig = await headRig(width / height, fovDeg);
+  if (light) setLightDirection(glRig, ...light);
   const gl = L.createRenderer(width, height);
   gl.toneMapping = L.THREE.ACESFilmicToneMapping;
   const composer = L.createComposer(gl);
   if (sss) {
-    const pipeline = new L.SSS.SubsurfaceScattering({ scene: glRig.scene, camera: glRig.camera, worldUnitInMm: HEAD_WORLD_UNIT_IN_MM, light: null });
+    const pipeline = new L.SSS.SubsurfaceScattering({ scene: glRig.scene, camera: glRig.camera, worldUnitInMm: HEAD_WORLD_UNIT_IN_MM, light: light ? glRig.light : null });
+    pipeline.debugView = view;
     pipeline.makeSubsurface(glRig.head.material, { widthMm: 1 });
     composer.addPass(pipeline);
   } else {
@@ -111,13 +115,15 @@ async function head({ width = 320, height = 180, backend = 'webgpu', sss = true,
   gl.forceContextLoss();
 
   const rig = await headRig(width / height, fovDeg);
+  if (light) setLightDirection(rig, ...light);
   const renderer = await createRenderer(width, height, { backend });
   renderer.toneMapping = THREE.ACESFilmicToneMapping;
   const target = new THREE.RenderTarget(width, height, { type: THREE.HalfFloatType });
   let disposeAll;
   if (sss) {
     rig.head.material = NODE.subsurfaceMaterial(rig.head.material, { widthMm: 1 });
-    const built = subsurfacePipeline(renderer, rig.scene, rig.camera, { sss: { worldUnitInMm: HEAD_WORLD_UNIT_IN_MM } });
+    const built = subsurfacePipeline(renderer, rig.scene, rig.camera, { sss: { worldUnitInMm: HEAD_WORLD_UNIT_IN_MM, light: light ? rig.light : null } });
+    built.node.debugView = view;
     built.pipeline.outputColorTransform = true;
     renderer.setRenderTarget(target);
     built.pipeline.render();

@@ -4,6 +4,7 @@
 //   pipeline in an EffectComposer with OutputPass: mean |difference| ≤ 1/255, 99th percentile ≤ 4/255
 //   (measured 2026-12-01, 320 × 180: mean 0.03-0.05, p99 1 on WebGPU, as the renderers' plain
 //   frames differ; the scattering itself changes the close-up by p99 8);
+//   lit from behind, the transmittance view (the ears' glow) within 8/255 of the WebGL pipeline's;
 // - a subsurface material drawn outside a subsurface pass renders exactly as three's own material;
 // - the debug views add up (diffuse + specular = final on subsurface pixels);
 // - a multisampled scene pass: on the WebGL 2 backend the WebGL pipeline's MSAA image; on WebGPU
@@ -53,6 +54,18 @@ for (const backend of BACKENDS) {
         expect(difference(plain.webgl, r.webgl).p99).toBeGreaterThan(4);
         expect(difference(plain.node, r.node).p99).toBeGreaterThan(4);
       }
+    });
+
+    it("lit from behind, the head's transmittance view (the light through the ears) is the EffectComposer path's", async () => {
+      // Light at azimuth 120°, elevation 10°: the ears' rims glow (the rest of the view is black).
+      // Measured 2026-12-01: 20 pixels above 20/255 in red on both; |difference| max 4/255 on
+      // WebGPU, 0 on the WebGL 2 backend (in the final view a missing glow would hide within the
+      // head bounds above: p99 0-1).
+      const r = await run('head', { backend, width: 320, height: 180, light: [120, 10], view: 'transmittance' });
+      const glowing = (rgba) => rgba.filter((v, i) => i % 4 === 0 && v > 20).length;
+      expect(glowing(r.webgl)).toBeGreaterThanOrEqual(10);
+      expect(Math.abs(glowing(r.node) - glowing(r.webgl))).toBeLessThanOrEqual(2);
+      expect(difference(r.node, r.webgl).max).toBeLessThanOrEqual(8);
     });
 
     it("renders a subsurface material outside a subsurface pass exactly as three's own", async () => {
