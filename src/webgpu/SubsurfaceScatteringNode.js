@@ -4,10 +4,10 @@
 // the two separable blur passes, before the frame (updateBefore), and is itself stage 4, the
 // compose. With a `light` it runs stage 1 too (./1-light-depth/LightStageNode.js): the light
 // depth pass for transmittance, and the subsurface materials' transmittance uniforms, before the
-// scene pass draws them. What the WebGL path's orchestrator does per frame (src/SubsurfaceScattering.js,
-// steps 0 to 5) happens here in the same order, with the same CPU side: the profile tables, the
-// footprint tables, the frame plan, the light's checks and the parameter checks are imported from
-// src/, not copied.
+// scene pass draws them. What the WebGL path's orchestrator does per frame
+// (src/SubsurfaceScattering.js, steps 0 to 5) happens here in the same order, with the same CPU
+// side: the profile tables, the footprint tables, the frame plan, the light's checks and the
+// parameter checks are imported from src/, not copied.
 //
 //   const scenePass = pass(scene, camera);
 //   scenePass.setMRT(subsurfaceMRT());
@@ -62,7 +62,6 @@ export class SubsurfaceScatteringNode extends Node {
       resolution: uniform(new Vector2(1, 1)), depthFalloff: uniform(1), perspective: uniform(1), mmToWorld: uniform(1e-3),
       marginalRangeMm: uniform(1), debugView: debugViewUniform(), debugDepthRange: uniform(1), debugThicknessRangeMm: uniform(10),
     };
-    /** Stage 1: the light depth map for transmittance, or null without a light. @type {LightDepthNodeTarget|null} */
     const lightDepthSize = checkOption(PIPELINE_SCHEMA, 'lightDepthSize', o.lightDepthSize);
     /** Stage 1 and the materials' transmittance uniforms, before the scene pass (null without a light). */
     this._lightStage = checkOption(PIPELINE_SCHEMA, 'light', o.light) === null ? null : new LightStageNode(this, o.light, lightDepthSize);
@@ -317,9 +316,10 @@ export class SubsurfaceScatteringNode extends Node {
     // scene pass would draw before this node's updateBefore: the light stage is built ahead of it.
     this._lightStage?.build(builder);
     // WebGPU multisamples no 32-bit float format (RGBA32Float): an MSAA scene pass keeps the
-    // surface in half float there (depth steps of 1/2048 of the distance; the WebGL 2 backend keeps 32 bits).
-    const surface = this.scenePass.getTexture(ATTACHMENT_NAMES.SURFACE);
-    if (builder.renderer.backend.isWebGPUBackend && this.scenePass.renderTarget.samples > 0) surface.type = HalfFloatType;
+    // surface in half float there (depth steps of 1/2048 of the distance; WebGL 2 keeps 32 bits).
+    if (builder.renderer.backend.isWebGPUBackend && this.scenePass.renderTarget.samples > 0) {
+      this.scenePass.getTexture(ATTACHMENT_NAMES.SURFACE).type = HalfFloatType;
+    }
     return composeNode({
       colour: this.scenePass.getTextureNode(ATTACHMENT_NAMES.COLOR),
       unscattered: this.scenePass.getTextureNode(ATTACHMENT_NAMES.DIFFUSE),
@@ -331,7 +331,10 @@ export class SubsurfaceScatteringNode extends Node {
     });
   }
 
-  /** Frees the node's targets, tables and materials (the scene pass is the caller's); the subsurface materials it drew lose their transmittance. */
+  /**
+   * Frees the node's targets, tables and materials (the scene pass is the caller's); the
+   * subsurface materials it drew lose their transmittance (they are rebuilt without it).
+   */
   dispose() {
     this._lightStage?.dispose();
     this._horizontalTarget.dispose();

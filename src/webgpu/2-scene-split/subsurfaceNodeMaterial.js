@@ -64,7 +64,11 @@ function withSubsurface(Base) {
       this.subsurfaceWidth.value = checkOption(MATERIAL_SCHEMA, 'widthMm', widthMm);
     }
 
-    /** Light through thin parts, with the drawing node's light (a uniform: no rebuild). @type {boolean} */
+    /**
+     * Light through thin parts, with the drawing node's light. A uniform of the frame; three keys a
+     * node material by its settings, so a change rebuilds its node graph once (its programs are cached).
+     * @type {boolean}
+     */
     get transmittance() { return this._subsurface.transmittance; }
 
     set transmittance(enabled) { this._subsurface.transmittance = checkOption(MATERIAL_SCHEMA, 'transmittance', enabled); }
