@@ -66,7 +66,7 @@ function withSubsurface(Base) {
 
     /**
      * Light through thin parts, with the drawing node's light. A uniform of the frame; three keys a
-     * node material by its settings, so a change rebuilds its node graph once (its programs are cached).
+     * node material by its settings, so a change rebuilds its node graph once.
      * @type {boolean}
      */
     get transmittance() { return this._subsurface.transmittance; }
