@@ -41,10 +41,12 @@ export function targetMemory(width, height, { samples = 0 } = {}) {
  * The switches the traffic depends on: version 0.2's frame (`BEFORE`) and this one's (`AFTER`).
  * depthPrepass: the scene split's first call draws the subsurface materials' depth;
  * confineToSubsurface: the blur passes are scissored to the subsurface pixels' screen box;
- * fetchesEverywhere: the compose reads the scattered light and the surface at every pixel.
+ * fetchesEverywhere: the compose reads the scattered light and the surface at every pixel;
+ * skipsEmptyTexels: a tap on a texel centre fetches one texel, not two (fetches only: its
+ * neighbours' taps read the other texel anyway, so the memory traffic is the same).
  */
-export const BEFORE = Object.freeze({ depthPrepass: true, confineToSubsurface: false, fetchesEverywhere: false });
-export const AFTER = Object.freeze({ depthPrepass: false, confineToSubsurface: true, fetchesEverywhere: false });
+export const BEFORE = Object.freeze({ depthPrepass: true, confineToSubsurface: false, fetchesEverywhere: false, skipsEmptyTexels: false });
+export const AFTER = Object.freeze({ depthPrepass: false, confineToSubsurface: true, fetchesEverywhere: false, skipsEmptyTexels: true });
 
 /**
  * Directions the issue names that are not built, modelled on top of AFTER (what they would save,
@@ -67,26 +69,28 @@ const stage = (written, read, fetched = read) => ({ written, read, fetched });
  * A blur pass over `area` of the frame, `subsurface` of it on the mask, `taps` per direction,
  * reading `surface` bytes per texel for the surface (the attachment, or the depth texture).
  */
-function blurPass(area, subsurface, taps, surface) {
+function blurPass(area, subsurface, taps, surface, centred = 0) {
   // Every pixel reads its centre (diffuse, surface) and writes its result; a mask pixel also reads
-  // its two neighbours' surface (the slope) and, per tap, two texels of diffuse and surface.
+  // its two neighbours' surface (the slope) and, per tap, two texels of diffuse and surface (one
+  // for the `centred` taps on a texel centre).
   const centre = RGBA16F + surface;
-  const perMaskPixel = 2 * surface + taps * 2 * (RGBA16F + surface);
+  const perMaskPixel = 2 * surface + (taps * 2 - centred) * (RGBA16F + surface);
   return stage(area * RGBA16F, area * centre, area * centre + subsurface * perMaskPixel);
 }
 
 /**
  * Bytes per screen pixel of each stage (and of a plain three.js frame of the same scene).
- * @param {{ depthPrepass: boolean, confineToSubsurface: boolean, fetchesEverywhere: boolean }} switches BEFORE, AFTER or between
+ * @param {{ depthPrepass: boolean, confineToSubsurface: boolean, fetchesEverywhere: boolean, skipsEmptyTexels?: boolean }} switches BEFORE, AFTER or between
  * @param {object} scene what the frame covers, as fractions of its pixels
  * @param {number} scene.subsurface pixels on subsurface objects (the mask)
  * @param {number} scene.box pixels in the subsurface pixels' screen box
  * @param {number} [scene.ordinary=0] pixels on ordinary opaque objects
  * @param {number} scene.taps taps per pixel and direction on the mask (samples 'auto': the mean)
+ * @param {number} [scene.centred=0] of them, taps on a texel centre (footprints one pixel wide)
  * @returns {{ scene: object, blurH: object, blurV: object, compose: object, total: object, plain: object }}
  *   each { written, read, fetched } bytes per pixel
  */
-export function frameTraffic(switches, { subsurface, box, ordinary = 0, taps }) {
+export function frameTraffic(switches, { subsurface, box, ordinary = 0, taps, centred = 0 }) {
   const s = subsurface;
   const covered = s + ordinary;
   // Scene split: the four attachments cleared; the first call's ordinary fragments (depth test and
@@ -98,17 +102,18 @@ export function frameTraffic(switches, { subsurface, box, ordinary = 0, taps }) 
     ordinary * DEPTH + prepass * DEPTH + s * DEPTH);
   const area = switches.confineToSubsurface ? box : 1;
   const surface = switches.surfaceFromDepth ? DEPTH : RG32F;
-  const blurH = blurPass(area, s, taps, surface);
+  const skipped = switches.skipsEmptyTexels ? centred : 0;
+  const blurH = blurPass(area, s, taps, surface, skipped);
   // Compose: depth, colour and diffuse (its mask) at every pixel, the scattered light on the mask
   // (or everywhere, with the surface, as before issue 10); out: the composer's colour and depth.
   const everywhere = switches.fetchesEverywhere ? 1 : 0;
   const composeRead = DEPTH + 2 * RGBA16F + (everywhere ? RGBA16F + RG32F : s * RGBA16F);
-  let blurV = blurPass(area, s, taps, surface);
+  let blurV = blurPass(area, s, taps, surface, skipped);
   let compose = stage(RGBA16F + DEPTH, composeRead);
   if (switches.composeInBlur) {
     // The vertical pass over the whole frame: its taps as before, plus colour and depth read and
     // the output (colour, depth) written at every pixel instead of the scattered light.
-    const v = blurPass(1, s, taps, surface);
+    const v = blurPass(1, s, taps, surface, skipped);
     blurV = stage(RGBA16F + DEPTH, v.read + RGBA16F + DEPTH, v.fetched + RGBA16F + DEPTH);
     compose = stage(0, 0);
   }

@@ -72,7 +72,7 @@ function coverageOf(json) {
   const entry = (json.peers ?? []).find((p) => p.coverage);
   if (!entry) return null;
   const { pixels, subsurfacePixels, boxPixels, taps } = entry.coverage;
-  return { resolution: entry.resolution, subsurface: subsurfacePixels / pixels, box: boxPixels / pixels, taps: taps.mean };
+  return { resolution: entry.resolution, subsurface: subsurfacePixels / pixels, box: boxPixels / pixels, taps: taps.mean, centred: taps.centredMean ?? 0 };
 }
 
 const MB = (bytes) => `${(bytes / 2 ** 20).toFixed(1)} MiB`;
@@ -84,13 +84,16 @@ export function costModelSection(json) {
   if (!coverage) return '';
   // 'auto' at 1920×1080 takes more taps per pixel than at 1280×720 (the main plan's row, when measured).
   const hd = json.results?.find((r) => r.scene === 'head' && r.resolution === '1920x1080' && r.auto && r.taps);
-  const scene = { subsurface: coverage.subsurface, box: coverage.box, taps: hd?.taps.mean ?? coverage.taps };
+  // Taps on texel centres: the side-by-side's share of its taps, applied to the 1920×1080 count.
+  const taps = hd?.taps.mean ?? coverage.taps;
+  const scene = { subsurface: coverage.subsurface, box: coverage.box, taps, centred: coverage.centred * (taps / coverage.taps) };
   const before = frameTraffic(BEFORE, scene);
   const after = frameTraffic(AFTER, scene);
   const lines = ['## Cost model (bytes per pixel; bench/costModel.js)', '',
     `Per screen pixel of the head at 1920×1080, with what the side-by-side measured at ${coverage.resolution.replace('x', '×')}: ${(100 * scene.subsurface).toFixed(1)} % of the pixels subsurface, ${(100 * scene.box).toFixed(1)} % in their screen box, ${scene.taps.toFixed(1)} taps per pixel and direction (${hd ? "'auto' at 1920×1080, the main plan's row" : "'auto' there"}). `
     + 'Memory: each texel a pass reads is counted once per pass (its neighbours\' taps find it in cache: a vertical pass\'s 30-row reach at 1920×1080 is about 0.9 MB of diffuse + surface, within an L2), every write once, clears as writes, the small tables (footprints, profile) free. Fetched: every texel fetch, no reuse (the texture units\' load). Material textures are left out (a plain frame reads the same). '
-    + 'Before: version 0.2 (the depth prepass, the blurs over the whole frame); after: this version (each object drawn once, the blurs scissored to the box).', '',
+    + `${scene.centred.toFixed(1)} of the taps per pixel and direction sit on a texel centre (footprints one pixel wide). `
+    + 'Before: version 0.2 (the depth prepass, the blurs over the whole frame, two texels fetched per tap); after: this version (each object drawn once, the blurs scissored to the box, one texel for a tap on a texel centre).', '',
     '| stage | written, before → after | read, before → after | fetched, before → after |', '|---|---|---|---|'];
   for (const key of ['scene', 'blurH', 'blurV', 'compose', 'total']) {
     const [b, a] = [before[key], after[key]];

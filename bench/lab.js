@@ -165,22 +165,33 @@ async function autoTaps() {
   const profile = sss.profileLookup.profile;
   session.autoTables ??= new Map();
   if (!session.autoTables.has(profile)) session.autoTables.set(profile, footprintTable((x) => sss.profileLookup.marginalEnergy(x), 'auto'));
-  const { samples } = session.autoTables.get(profile);
+  const { samples, data, columns } = session.autoTables.get(profile);
   const surface = await readRenderTargetFloats(renderer, sss.scenePass.renderTarget, ATTACHMENTS.SURFACE);
   const p = built.camera.projectionMatrix.elements;
-  let sum = 0, count = 0, max = 0, min = Infinity;
+  let sum = 0, count = 0, max = 0, min = Infinity, centred = 0;
   for (let i = 0; i < width * height; i++) {
     const widthWorld = surface[i * 4 + 1];
     if (!(widthWorld > 0)) continue;
     for (const [scale, size] of [[p[0], width], [p[5], height]]) {
-      const taps = samples[footprintRowOf(pixelsPerMm(widthWorld, surface[i * 4], scale, size))];
+      const s = pixelsPerMm(widthWorld, surface[i * 4], scale, size);
+      const row = footprintRowOf(s);
+      const taps = samples[row];
       sum += taps;
       count++;
       max = Math.max(max, taps);
       min = Math.min(min, taps);
+      // Footprints one pixel wide, snapped as the shader snaps them: their two taps sit on texel
+      // centres (one texel fetched each with blur.skipsEmptyTexels).
+      for (let k = 0, lastEdge = 0; k < (taps - 1) / 2; k++) {
+        const edgeMm = data[2 * (row * columns + k)];
+        if (!Number.isFinite(edgeMm)) break; // the tail
+        const edge = Math.max(Math.floor(edgeMm * s + 0.5), lastEdge + 1);
+        if (edge === lastEdge + 1) centred += 2;
+        lastEdge = edge;
+      }
     }
   }
-  return { mean: sum / count, max, min };
+  return { mean: sum / count, max, min, centredMean: centred / count };
 }
 
 /** Renders `count` whole frames with a 1-pixel read-back fence each; returns their wall times. */

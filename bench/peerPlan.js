@@ -17,10 +17,11 @@ export const PEER_MEASURES = Object.freeze([...VARIANTS, 'stages', 'blur', 'floo
 /**
  * What version 0.2 added to a frame, each measured against the frame without it: MSAA 4 in the
  * scene split (`multisampling`), a transparent object (drawn after the compose), and the compose's
- * depth write (the scene's depth handed on to later passes). Timed on ours frame by frame
- * ('stages') and on the plain three.js frame (`threePlain`) alike.
+ * depth write (the scene's depth handed on to later passes), and (issue 22) two balls beside
+ * the head in its profile (threeObjects) or in two more (threeProfiles: three profiles on screen).
+ * Timed on ours frame by frame ('stages') and on the plain three.js frame (`threePlain`) alike.
  */
-export const ADDITIONS = Object.freeze(['msaa4', 'transparent', 'noDepthWrite']);
+export const ADDITIONS = Object.freeze(['msaa4', 'transparent', 'noDepthWrite', 'threeObjects', 'threeProfiles']);
 
 /**
  * Issue 10's and issue 19's optimizations, each undone for the measure by a switch of the passes
@@ -30,9 +31,12 @@ export const ADDITIONS = Object.freeze(['msaa4', 'transparent', 'noDepthWrite'])
  * compose shader as it was before it fetched less (the scattered light at every pixel, the
  * surface attachment always); depthPrepass draws the subsurface materials' depth in the scene
  * split's first call, as before each was drawn once; fullFrameBlur runs both blur passes over the
- * whole frame, as before they were scissored to the subsurface pixels' screen box.
+ * whole frame, as before they were scissored to the subsurface pixels' screen box;
+ * bothTexelsFetched has the blur fetch both texels around every tap, as before it skipped the one
+ * a tap on a texel centre weighs 0; msaaDepthResolvedTwice (with MSAA 4, against msaa4) lets three
+ * resolve the scene split's depth after its first call too, as before.
  */
-export const UNDONE_OPTIMIZATIONS = Object.freeze(['lightDepthEveryFrame', 'composeAsBefore', 'depthPrepass', 'fullFrameBlur']);
+export const UNDONE_OPTIMIZATIONS = Object.freeze(['lightDepthEveryFrame', 'composeAsBefore', 'depthPrepass', 'fullFrameBlur', 'bothTexelsFetched', 'msaaDepthResolvedTwice']);
 
 /** Everything the features block switches, one at a time. */
 export const FEATURES = Object.freeze([...ADDITIONS, ...UNDONE_OPTIMIZATIONS]);

@@ -8,7 +8,7 @@
 // pixels. Every frame is timed with EXT_disjoint_timer_query_webgl2 around the whole frame (one
 // query: the stages of ours are timed in frames of their own); bench/run.js interleaves the
 // measures in rounds of a rotating order and reads the GPU process's CPU clock around each.
-import { HalfFloatType, Mesh, MeshStandardMaterial, PlaneGeometry, WebGLRenderTarget } from 'three';
+import { HalfFloatType, Mesh, MeshStandardMaterial, PlaneGeometry, SphereGeometry, WebGLRenderTarget } from 'three';
 import { EffectComposer } from 'three/addons/postprocessing/EffectComposer.js';
 import { RenderPass } from 'three/addons/postprocessing/RenderPass.js';
 import { GpuStageTimer } from '/dev/gpuTimer.js';
@@ -40,7 +40,7 @@ export async function openPeers(session) {
   const babylonTimer = new GpuStageTimer({ getContext: () => babylon.gl });
   const floor = new FetchFloor(session.sss);
   const draw = {
-    threePlain: () => (peers.feature === 'msaa4' ? plainMsaa : plain).render(),
+    threePlain: () => (MSAA_FEATURES.includes(peers.feature) ? plainMsaa : plain).render(),
     ours: () => composer.render(),
     babylonPlain: () => babylon.plain.scene.render(),
     babylonSss: () => babylon.sss.scene.render(),
@@ -49,8 +49,16 @@ export async function openPeers(session) {
   // In front of the mouth and chin, half see-through: the transparent feature's object.
   const pane = new Mesh(new PlaneGeometry(3, 1.5), new MeshStandardMaterial({ color: 0x88aaff, transparent: true, opacity: 0.3 }));
   pane.position.set(0, -0.6, 3);
+  // Below the head's cheeks, left and right: the two balls of the profile features, a marble and a
+  // milk one (threeProfiles), or both in the head's skin (threeObjects: the same pixels, one profile).
+  const ballGeometry = new SphereGeometry(1.1, 48, 32);
+  const balls = [['marble', -4.2], ['milk', 4.2]].map(([profile, x]) => {
+    const ball = new Mesh(ballGeometry, new MeshStandardMaterial({ color: 0xf2efe8, roughness: 0.35 }));
+    ball.position.set(x, -2.6, 1.5);
+    return { ball, profile };
+  });
   const peers = {
-    plain, plainMsaa, babylon, floor, draw, timerOf, threeTimer, babylonTimer, pane,
+    plain, plainMsaa, babylon, floor, draw, timerOf, threeTimer, babylonTimer, pane, balls,
     /** The feature on for this measure (FEATURES), or null. */
     feature: null,
     dispose() {
@@ -60,6 +68,8 @@ export async function openPeers(session) {
       for (const c of [plain, plainMsaa]) c.dispose();
       pane.geometry.dispose();
       pane.material.dispose();
+      ballGeometry.dispose();
+      for (const { ball } of balls) ball.material.dispose();
       babylon.dispose();
     },
   };
@@ -75,14 +85,21 @@ const UNDO_SWITCHES = Object.freeze({
   composeAsBefore: (sss) => [sss.composePass, 'fetchesEverywhere', true],
   depthPrepass: (sss) => [sss.scenePass, 'depthPrepass', true],
   fullFrameBlur: (sss) => [sss.blur, 'confineToSubsurface', false],
+  bothTexelsFetched: (sss) => [sss.blur, 'skipsEmptyTexels', false],
+  msaaDepthResolvedTwice: (sss) => [sss.scenePass, 'resolvesDepthOnce', false],
 });
+
+/** The features measured with MSAA 4 in the scene split (and the plain frame in a 4-sample buffer). */
+const MSAA_FEATURES = Object.freeze(['msaa4', 'msaaDepthResolvedTwice']);
 
 /**
  * Turns `feature` on for the session's head (FEATURES) and returns what turns it off again.
  * msaa4: the scene split multisampled 4 times (the plain frame draws into a 4-sample buffer too);
  * transparent: a half see-through pane in front of the chin; noDepthWrite: the compose writes
- * colour only (version 0.1's compose handed no depth on, `composePass.writesDepth`); the
- * optimizations undone flip their switch (UNDO_SWITCHES).
+ * colour only (version 0.1's compose handed no depth on, `composePass.writesDepth`);
+ * threeProfiles: a marble and a milk ball beside the head, each with its own profile (three in
+ * the frame), threeObjects: the same balls in the head's profile; the optimizations undone flip
+ * their switch (UNDO_SWITCHES).
  */
 function applyFeature(peers, session, feature) {
   const { sss, built } = session;
@@ -90,18 +107,30 @@ function applyFeature(peers, session, feature) {
   const off = () => { peers.feature = null; };
   if (feature === null) return off;
   if (!FEATURES.includes(feature)) throw new RangeError(`peerMeasure: feature must be one of ${FEATURES.join(', ')}, got ${feature}`);
-  if (feature === 'msaa4') {
-    sss.multisampling = 4;
-    return () => { sss.multisampling = 'auto'; off(); };
-  }
+  if (MSAA_FEATURES.includes(feature)) sss.multisampling = 4;
+  const msaaOff = MSAA_FEATURES.includes(feature) ? () => { sss.multisampling = 'auto'; off(); } : off;
+  if (feature === 'msaa4') return msaaOff;
   if (feature === 'transparent') {
     built.scene.add(peers.pane);
     return () => { built.scene.remove(peers.pane); off(); };
   }
+  if (feature === 'threeProfiles' || feature === 'threeObjects') {
+    for (const { ball, profile } of peers.balls) {
+      built.scene.add(ball);
+      sss.makeSubsurface(ball.material, { widthMm: built.widthMm, ...(feature === 'threeProfiles' ? { profile } : {}) });
+    }
+    return () => {
+      for (const { ball } of peers.balls) {
+        sss.removeSubsurface(ball.material);
+        built.scene.remove(ball);
+      }
+      off();
+    };
+  }
   const [object, field, value] = feature === 'noDepthWrite' ? [sss.composePass, 'writesDepth', false] : UNDO_SWITCHES[feature](sss);
   const before = object[field];
   object[field] = value;
-  return () => { object[field] = before; off(); };
+  return () => { object[field] = before; msaaOff(); };
 }
 
 /** Renders `variant` once with one timer query around the whole frame. */
@@ -168,7 +197,7 @@ function fence(peers, session, measure) {
     gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, new Uint8Array(4));
     return;
   }
-  const target = measure === 'threePlain' ? (peers.feature === 'msaa4' ? peers.plainMsaa : peers.plain).readBuffer
+  const target = measure === 'threePlain' ? (MSAA_FEATURES.includes(peers.feature) ? peers.plainMsaa : peers.plain).readBuffer
     : measure === 'blur' ? session.sss.scatteredTarget
       : measure === 'floor' ? peers.floor.targets[1] : session.composer.readBuffer;
   session.renderer.readRenderTargetPixels(target, 0, 0, 1, 1, new Uint16Array(4)); // half-float targets

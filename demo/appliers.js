@@ -23,12 +23,13 @@ export function groupOf(key) {
 
 /**
  * How each group of state keys reaches the scene and the pipeline.
- * @param {object} demo the page's parts (demo/main.js): state, sss, material, rig, light, camera,
+ * @param {object} demo the page's parts (demo/main.js): state, sss, material, marble (the piece), rig, light, camera,
  *   controls, divider, resize(), and the kernel plot's canvas and the shot buttons
  */
 export function createAppliers(demo) {
-  const { state, sss, material, rig, light, camera, controls, kernelCanvas, shotButtons } = demo;
+  const { state, sss, material, marble, rig, light, camera, controls, kernelCanvas, shotButtons } = demo;
   const showDivider = () => demo.divider.show(state.split, dividerVisible(state));
+
   return {
     sss: () => {
       sss.scattering = state.sss;
@@ -38,6 +39,13 @@ export function createAppliers(demo) {
       profile: state.profile, method: state.method, samples: state.samples,
       strength: [...state.strength], falloff: [...state.falloff],
     }),
+    // The marble piece, with a profile of its own in the head's pipeline (every method of the
+    // demo blurs several per frame). Hidden, it is unbound: the frame holds one profile, as before.
+    marble: () => {
+      marble.visible = state.marble;
+      if (state.marble) sss.makeSubsurface(marble.material, { profile: 'marble' });
+      else sss.removeSubsurface(marble.material);
+    },
     material: () => sss.makeSubsurface(material, { widthMm: state.width, translucency: state.translucency, shrinkMm: state.shrink }),
     followSurface: () => Object.assign(sss, { followSurface: state.followSurface, depthThresholdMm: state.depthThreshold }),
     transmittance: () => { sss.transmittance = state.transmittance; },

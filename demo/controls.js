@@ -11,7 +11,7 @@ const LABELS = {
   sss: 'scattering', width: 'width (mm)', depthThreshold: 'threshold (mm)', shrink: 'inward shrink (mm)',
   lightDepthSize: 'depth map size', lightAzimuth: 'azimuth (°)', lightElevation: 'elevation (°)',
   lightIntensity: 'intensity', lightColor: 'colour', followSurface: 'follow surface', split: 'divider (left: off)',
-  resolutionScale: 'resolution scale',
+  resolutionScale: 'resolution scale', marble: 'marble piece (its own profile)',
 };
 
 /** Short names of the figures, for the preset rows. */
@@ -120,6 +120,7 @@ export function createControls(state, { onChange, onFigure, onReset, container, 
   const specular = more.addFolder('Specular');
   add(specular, 'specular', 0.01);
   add(specular, 'roughness', 0.01);
+  add(more, 'marble');
   add(more, 'lightColor');
   add(more, 'shot');
   add(more, 'resolutionScale', 0.05);

@@ -1,7 +1,7 @@
 // The demo's scene: the head, a shadow-casting spot light, soft ambient light, a camera framing the
 // face. Shared by the page, the figure renderer and the bench so they all show the same thing.
 import {
-  Color, HemisphereLight, PerspectiveCamera, Scene, SpotLight, Vector3,
+  Color, HemisphereLight, IcosahedronGeometry, Mesh, MeshStandardMaterial, PerspectiveCamera, Scene, SpotLight, Vector3,
 } from 'three';
 
 /** The scan is about 5 cm per world unit (REFERENCE §9): 8.55 units ≈ 43 cm across the shoulders. */
@@ -46,6 +46,21 @@ export function createHeadScene(headMesh) {
   const rig = { scene, camera, light, head: headMesh, facePoint: FACE_CENTRE };
   setLightDirection(rig, 30, 25);
   return rig;
+}
+
+/**
+ * A marble ball beside the head, left of it in the full-head shot (6 cm across, 0.6 units of ~5 cm),
+ * hidden: the demo shows it with its own profile ('marble') in the head's pipeline (its `marble` key).
+ * @returns {Mesh}
+ */
+export function createMarblePiece() {
+  // Detail 5: a smooth silhouette at the head shot's scale.
+  const piece = new Mesh(new IcosahedronGeometry(0.6, 5), new MeshStandardMaterial({ color: 0xf2efe8, roughness: 0.25 }));
+  piece.name = 'marble piece';
+  piece.position.set(-2.7, 1.2, 1.0);
+  piece.castShadow = piece.receiveShadow = true;
+  piece.visible = false;
+  return piece;
 }
 
 /**

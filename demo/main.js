@@ -11,7 +11,7 @@ import { EffectComposer } from 'three/addons/postprocessing/EffectComposer.js';
 import { OutputPass } from 'three/addons/postprocessing/OutputPass.js';
 import { SubsurfaceScattering } from '../src/index.js';
 import { loadHead } from './headModel.js';
-import { createHeadScene, HEAD_WORLD_UNIT_IN_MM } from './headScene.js';
+import { createHeadScene, createMarblePiece, HEAD_WORLD_UNIT_IN_MM } from './headScene.js';
 import { SHOTS } from './framing.js';
 import { defaultState, parseHash, formatHash } from './state.js';
 import { figureState } from './figures.js';
@@ -104,7 +104,7 @@ async function webgpuModule() {
     missing = await webgpu.webgpuMissing();
     if (!missing) {
       showNotice(rendererNotice, 'WebGPURenderer, through ', code('three-separable-sss/webgpu'),
-        ' (the divider and per-pass timings: WebGL page only).');
+        ' (the divider, per-pass timings and the marble piece\'s own profile: WebGL page only).');
       return webgpu;
     }
   } catch (error) {
@@ -125,6 +125,8 @@ function createPipeline(renderer, head) {
   // Skin at its physical scale (1 profile mm = 1 mm), light through the ears from the spot light.
   const sss = new SubsurfaceScattering({ scene, camera, light, worldUnitInMm: HEAD_WORLD_UNIT_IN_MM, samples: 'auto' });
   sss.makeSubsurface(material);
+  const marble = createMarblePiece(); // made subsurface, with its own profile, while shown (demo/appliers.js)
+  scene.add(marble);
 
   // Linear HDR all the way to OutputPass (tone mapping + sRGB last).
   // MSAA: the scene split follows the composer's samples, so silhouettes and creases are antialiased.
@@ -132,7 +134,7 @@ function createPipeline(renderer, head) {
   composer.addPass(sss); // in place of a RenderPass
   const outputPass = new OutputPass();
   composer.addPass(outputPass);
-  return { renderer, head, rig, camera, light, material, controls, sss, composer, outputPass };
+  return { renderer, head, rig, camera, light, material, marble, controls, sss, composer, outputPass };
 }
 
 /** The pipeline's parts with the timings overlay. */

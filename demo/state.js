@@ -24,6 +24,8 @@ export const STATE_SCHEMA = {
   falloff: rgb(0.01, 10, [1, 0.37, 0.3]),
   followSurface: oneOf(['drop', 'lerp', 'off'], 'drop'),
   depthThreshold: number(0.5, 200, 6, 'mm'),
+  // A marble ball beside the head in the same pipeline, with its own profile (off by default).
+  marble: bool(false),
   // Transmittance
   transmittance: bool(true),
   translucency: number(0, 0.95, 0),

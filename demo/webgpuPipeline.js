@@ -2,7 +2,8 @@
 // as the WebGL page, drawn through three-separable-sss/webgpu's node in a RenderPipeline. It
 // returns the parts demo/main.js's createPipeline returns, so the panel, the hash, the appliers
 // (demo/appliers.js) and the test API drive it unchanged; what the node lacks (the divider's split,
-// the 'marginal' and 'reference' methods, per-pass GPU times) is left out and said so. Loaded only
+// the 'marginal' and 'reference' methods, a second profile for the marble piece, per-pass GPU
+// times) is left out and said so. Loaded only
 // when asked for (a dynamic import): the WebGL page does not fetch three/webgpu.
 import { ACESFilmicToneMapping } from 'three';
 import { RenderPipeline, WebGPURenderer } from 'three/webgpu';
@@ -11,7 +12,7 @@ import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
 import { NODE_METHODS, subsurfaceMaterial, subsurfaceMRT, subsurfaceScattering } from '../src/webgpu/index.js';
 import { computeKernel } from '../src/profiles/kernel.js';
 import { AUTO_MAX_SAMPLES } from '../src/profiles/footprints.js';
-import { createHeadScene, HEAD_WORLD_UNIT_IN_MM } from './headScene.js';
+import { createHeadScene, createMarblePiece, HEAD_WORLD_UNIT_IN_MM } from './headScene.js';
 
 /** Why this browser cannot run WebGPU (no navigator.gpu, no adapter), or null when it can. */
 export async function webgpuMissing() {
@@ -50,9 +51,12 @@ function pipelineFacade(node, skin) {
     stageTimer: null,
     /** @type {Set<string>} settings the node does not have, asked for since the page opened */
     unsupported: new Set(),
-    makeSubsurface(material, { widthMm, translucency, shrinkMm }) {
-      Object.assign(skin, { widthMm, translucency, shrinkMm });
+    /** The head's material takes its options; another (the marble piece) would need a profile of its own, which the node has not. */
+    makeSubsurface(material, { widthMm, translucency, shrinkMm, profile }) {
+      if (material === skin) Object.assign(skin, { widthMm, translucency, shrinkMm });
+      else facade.unsupported.add(`a second profile ('${profile}')`);
     },
+    removeSubsurface() {},
     /** The kernel view's plot: the marginal kernel the node's footprints come from. */
     get kernel() {
       return computeKernel({ profile: node.profile, method: 'marginal', samples: node.samples === 'auto' ? AUTO_MAX_SAMPLES : node.samples });
@@ -83,6 +87,8 @@ export function createWebgpuPipeline(renderer, head) {
   const { scene, camera, light } = rig;
   const controls = new OrbitControls(camera, renderer.domElement);
   controls.enableDamping = true;
+  const marble = createMarblePiece(); // three's own material here: the node holds one profile
+  scene.add(marble);
 
   const scenePass = pass(scene, camera);
   scenePass.setMRT(subsurfaceMRT());
@@ -90,5 +96,5 @@ export function createWebgpuPipeline(renderer, head) {
   const pipeline = new RenderPipeline(renderer);
   pipeline.outputNode = node;
   const composer = { render: () => pipeline.render(), setSize() {}, setPixelRatio() {} };
-  return { renderer, head, rig, camera, light, material: skin, controls, sss: pipelineFacade(node, skin), composer, pipeline, outputPass: null };
+  return { renderer, head, rig, camera, light, material: skin, marble, controls, sss: pipelineFacade(node, skin), composer, pipeline, outputPass: null };
 }

@@ -23,6 +23,7 @@
 import { Pass } from 'three/addons/postprocessing/Pass.js';
 import { getProfile } from './profiles/presets.js';
 import { ProfileLookup } from './profiles/ProfileLookup.js';
+import { profileSlots } from './profiles/profileSlots.js';
 import { checkBoolean, checkNumber, checkOptions } from './support/parameterChecks.js';
 import { describe } from './support/rendererSupport.js';
 import { checkThreeRevision } from './support/threeVersion.js';
@@ -37,6 +38,7 @@ import { PipelineMaterials } from './2-scene-split/PipelineMaterials.js';
 import { checkTransmittanceSwitch, isShining, lightReachesFromBehind } from './2-scene-split/transmittanceModel.js';
 import { SubsurfaceScenePass } from './2-scene-split/SubsurfaceScenePass.js';
 import { BlurStage } from './3-blur/BlurStage.js';
+import { checkProfileCount } from './3-blur/blurPlan.js';
 import { SubsurfaceComposePass } from './4-compose/SubsurfaceComposePass.js';
 import { materialOutputOf } from './4-compose/debugViews.js';
 
@@ -72,6 +74,7 @@ export { MIN_KERNEL_PIXELS } from './3-blur/samplingModel.js';
  * @property {boolean} [transmittance=true] light through thin parts (with the pipeline's light)
  * @property {number} [translucency=0] 0..1 (exclusive): light through regardless of thickness
  * @property {number} [shrinkMm=0.6] how far the light depth lookup moves inwards, mm (0..1000)
+ * @property {import('./options.js').ProfileName|object} [profile] this material's diffusion profile, as the pipeline's `profile` (left out: the pipeline's); up to 8 per pipeline, not with method 'dense'
  * @property {number} [strength] widthScale's old name
  */
 // </options-typedef>
@@ -107,8 +110,10 @@ export class SubsurfaceScattering extends Pass {
     this._worldUnitInMm = o.worldUnitInMm;
     this._depthThresholdMm = o.depthThresholdMm;
     this._stageTimer = null;
-    /** @internal The profile's GPU tables. */
+    /** @internal The pipeline's profile's GPU tables (the default of its materials). */
     this.profileLookup = new ProfileLookup(getProfile(o.profile));
+    /** Tables of the other profiles its materials name (computing one takes tens of ms: kept). */
+    this._otherLookups = new Map();
     this.lightDepth = o.light ? new LightDepthTarget(o.light, { size: o.lightDepthSize }) : null;
     this._transmittance = o.light !== null;
     this.multisampling = o.multisampling;
@@ -143,7 +148,9 @@ export class SubsurfaceScattering extends Pass {
     this.subsurfaceMaterials = new PipelineMaterials(this, () => ({
       worldUnitInMm: this.worldUnitInMm,
       lightDepth: this.transmittance ? this.lightDepth : null,
-      lookup: this.profileLookup,
+      profile: this.profile,
+      lookupOf: (profile) => this._lookupOf(profile),
+      checkProfiles: (profiles) => checkProfileCount(this.method, profileSlots(profiles, this.profile).profiles.length),
       debugOutput: materialOutputOf(this._debug.view),
     }));
     /** What the last frame ran: { samples, kernelPixels, blur, passes } (see src/3-blur/blurPlan.js). */
@@ -219,11 +226,22 @@ export class SubsurfaceScattering extends Pass {
   /** @param {number|'auto'} samples */
   set samples(samples) { this.blur.setKernel({ samples: checkOption(PIPELINE_SCHEMA, 'samples', samples) }); }
 
-  /** The diffusion profile (a preset's name or a profile object; read back as the profile object). @type {object} */
-  get profile() { return this.blur.kernelOptions.profile; }
+  /**
+   * The diffusion profile of the materials that name none (a preset's name or a profile object;
+   * read back as the profile object). Materials may name their own (makeSubsurface's `profile`).
+   * @type {object}
+   */
+  get profile() { return this.profileLookup.profile; }
 
   /** @param {import('./options.js').ProfileName|object} profile */
-  set profile(profile) { this.blur.setKernel({ profile }); }
+  set profile(profile) {
+    const next = getProfile(checkOption(PIPELINE_SCHEMA, 'profile', profile));
+    if (next === this.profile) return;
+    checkProfileCount(this.method, profileSlots(this.subsurfaceMaterials.profiles(next), next).profiles.length);
+    this.profileLookup.setProfile(next); // tens of ms: only on a change
+    this.subsurfaceMaterials.rebindAll(); // a material naming this profile or the last one changes tables
+    this._useProfiles();
+  }
 
   /** RGB 0..1, mix with no scattering; undefined: the method's default. @type {number[]|undefined} */
   get strength() { return this.blur.kernelOptions.strength; }
@@ -460,7 +478,9 @@ export class SubsurfaceScattering extends Pass {
    * @returns {import('./2-scene-split/subsurfaceMaterial.js').SubsurfaceBinding}
    */
   makeSubsurface(material, options = {}) {
-    return this.subsurfaceMaterials.bind(material, options);
+    const binding = this.subsurfaceMaterials.bind(material, options);
+    this._useProfiles();
+    return binding;
   }
 
   /**
@@ -470,7 +490,31 @@ export class SubsurfaceScattering extends Pass {
    * @returns {boolean} whether it was subsurface in this pipeline
    */
   removeSubsurface(material) {
-    return this.subsurfaceMaterials.unbind(material);
+    const removed = this.subsurfaceMaterials.unbind(material);
+    this._useProfiles();
+    return removed;
+  }
+
+  /**
+   * The tables of `profile`: the pipeline's own for its profile, else one kept per profile.
+   * @private @param {object} profile
+   */
+  _lookupOf(profile) {
+    if (profile === this.profile) return this.profileLookup;
+    if (!this._otherLookups.has(profile)) this._otherLookups.set(profile, new ProfileLookup(profile));
+    return this._otherLookups.get(profile);
+  }
+
+  /**
+   * Points the blur, the multi-target and each material at the slots of the profiles the materials
+   * use now (src/profiles/profileSlots.js): one profile, the frame as without this feature.
+   * @private
+   */
+  _useProfiles() {
+    const { profiles, slots } = profileSlots(this.subsurfaceMaterials.profiles(), this.profile);
+    this.blur.setProfiles(profiles.map((profile) => this._lookupOf(profile)));
+    this.scenePass.setProfileCount(profiles.length);
+    [...this.subsurfaceMaterials.entries.values()].forEach(({ hook }, i) => { hook.profileSlot = slots[i]; });
   }
 
   /**
@@ -502,6 +546,7 @@ export class SubsurfaceScattering extends Pass {
     this.composePass.dispose();
     this.lightDepth?.dispose();
     this.profileLookup.dispose();
+    for (const lookup of this._otherLookups.values()) lookup.dispose();
   }
 
   // ---- The stages' parts, for pipelines of your own and for inspection (unstable: they follow
@@ -536,7 +581,9 @@ export class SubsurfaceScattering extends Pass {
       throw new TypeError(`setKernel: options must be an object { profile, method, samples, strength, falloff }, got ${describe(options)}`);
     }
     checkOptions('setKernel options', options, KERNEL_OPTIONS);
-    this.blur.setKernel({ ...options });
+    const { profile, ...kernel } = options;
+    if (profile !== undefined) this.profile = profile;
+    this.blur.setKernel(kernel);
   }
 
   /** @deprecated assign `transmittance` @param {boolean} enabled */

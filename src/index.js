@@ -7,6 +7,7 @@ import * as internals from './internals.js';
 // The orchestrator: the whole frame as one Pass (in place of a RenderPass), and its options.
 export { SubsurfaceScattering } from './SubsurfaceScattering.js';
 export { METHODS, FOLLOW_SURFACE_MODES, PIPELINE_DEFAULTS, MATERIAL_DEFAULTS } from './options.js';
+export { MAX_PROFILES } from './profiles/profileSlots.js';
 
 // Stage 1: linear depth seen from the light.
 export { LightDepthTarget } from './1-light-depth/LightDepthTarget.js';

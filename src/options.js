@@ -6,6 +6,7 @@
 // `npm run options-doc`, scripts/optionsDoc.js; test/node/options.test.js fails when they drift).
 import { FloatType, HalfFloatType } from 'three';
 import { getProfile } from './profiles/presets.js';
+import { MAX_PROFILES } from './profiles/profileSlots.js';
 import { describe } from './support/rendererSupport.js';
 import {
   checkBoolean, checkInteger, checkNumber, checkOddInteger, checkOneOf, checkOptions, checkRgb,
@@ -15,7 +16,10 @@ import {
  * How the blur weighs its taps, and what each method needs:
  * - kernel: which computeKernel method builds the separable passes' taps ('marginal' or 'reference');
  * - blur: the blur stage's mode ('footprint' or 'taps' of SubsurfaceBlurPass, or 'dense' for
- *   DenseSubsurfacePass instead of the two separable passes); src/3-blur/blurPlan.js dispatches on it.
+ *   DenseSubsurfacePass instead of the two separable passes); src/3-blur/blurPlan.js dispatches on it;
+ * - profiles: how many profiles (materials' `profile`) it blurs in one frame: 'footprint' reads each
+ *   pixel's own tables, 'marginal' its own kernel; 'reference' blurs every profile with its built-in
+ *   kernel (the profile drives transmittance only); 'dense' holds one profile's table.
  * 'footprint' (default): per pixel, footprints of whole pixels weighed exactly (the sampling model,
  * item 8, in docs/ARCHITECTURE.md, "Stage 3: the sampling model"); 'marginal' and 'reference':
  * computeKernel's fixed taps ('reference' is Jimenez 2012's kernel, its profile built in); 'dense':
@@ -23,10 +27,10 @@ import {
  * on-screen radius).
  */
 export const METHOD_TABLE = Object.freeze({
-  footprint: Object.freeze({ kernel: 'marginal', blur: 'footprint' }),
-  marginal: Object.freeze({ kernel: 'marginal', blur: 'taps' }),
-  reference: Object.freeze({ kernel: 'reference', blur: 'taps' }),
-  dense: Object.freeze({ kernel: 'marginal', blur: 'dense' }), // the kernel only waits for a switch back
+  footprint: Object.freeze({ kernel: 'marginal', blur: 'footprint', profiles: MAX_PROFILES }),
+  marginal: Object.freeze({ kernel: 'marginal', blur: 'taps', profiles: MAX_PROFILES }),
+  reference: Object.freeze({ kernel: 'reference', blur: 'taps', profiles: MAX_PROFILES }),
+  dense: Object.freeze({ kernel: 'marginal', blur: 'dense', profiles: 1 }), // the kernel only waits for a switch back
 });
 
 /**
@@ -108,6 +112,9 @@ export const MAX_WIDTH_MM = 1000;
 
 const SCALE_RANGE = Object.freeze({ min: MIN_SCALE_MM, max: MAX_SCALE_MM, unit: 'mm' });
 
+/** A preset's name or a profile object (getProfile throws a TypeError naming `profile` and the presets). */
+const checkProfile = (value) => (getProfile(value), value);
+
 /** @param {string} name @param {*} value */
 function checkSamples(value, name) {
   return value === 'auto' ? value : checkOddInteger(name, value, SAMPLE_RANGE.min, SAMPLE_RANGE.max);
@@ -151,7 +158,7 @@ export const PIPELINE_SCHEMA = Object.freeze({
   profile: {
     default: 'skin', type: "import('./options.js').ProfileName|object",
     doc: "a preset's name ('skin', 'skinBurley', 'marble', 'milk') or a profile object (burleyProfile, dipoleProfile, gaussianSumProfile)",
-    check: (value) => (getProfile(value), value),
+    check: checkProfile,
   },
   method: {
     default: 'footprint', type: "import('./options.js').Method",
@@ -229,6 +236,11 @@ export const MATERIAL_SCHEMA = Object.freeze({
     // The reference's 0.005 units at 1 unit = 1/8 m (REFERENCE §5).
     default: 0.6, type: 'number', doc: 'how far the light depth lookup moves inwards, mm (0..1000)',
     check: (value, name) => checkNumber(name, value, { min: 0, max: 1000, unit: 'mm' }),
+  },
+  profile: {
+    default: undefined, type: "import('./options.js').ProfileName|object",
+    doc: `this material's diffusion profile, as the pipeline's \`profile\` (left out: the pipeline's); up to ${MAX_PROFILES} per pipeline, not with method 'dense'`,
+    check: checkProfile,
   },
 });
 

@@ -5,7 +5,7 @@
 // colour, depth and width are c times the covered samples' values. Dividing by c gives them back
 // exactly where one surface meets the background or an ordinary material (silhouettes); where two
 // subsurface surfaces share a pixel, their coverage-weighted mean. Needs `tSurface`, `tDiffuse`
-// and shaders/common/finite.glsl.
+// and shaders/common/finite.glsl, and PROFILE_COUNT (1: one profile, the b channel unread).
 
 // Divides a premultiplied value by its coverage (a no-op without SSS_COVERAGE).
 vec2 sssUncovered( const in vec2 value, const in float coverage ) {
@@ -48,3 +48,32 @@ SssCentre sssCentreAt( const in ivec2 pixel ) {
 vec4 sssCovered( const in vec3 colour, const in float coverage ) {
 	return vec4( colour * coverage, coverage );
 }
+
+#if PROFILE_COUNT > 1
+	// Several profiles (src/profiles/profileSlots.js): the surface's b channel holds the material's
+	// slot, premultiplied by the coverage like depth and width, so a pixel two profiles share (MSAA)
+	// holds their coverage-weighted mean slot. The pass's main() sets `sssSlot`, the centre's: its
+	// mean slot rounded to the nearest (a shared pixel is blurred with its majority's profile).
+	int sssSlot;
+
+	// A texel is on a slot when its mean slot is within SSS_SLOT_TOLERANCE of it (SurfacePass: half
+	// the smallest step a resolve of MAX_MULTISAMPLING samples makes between two slots).
+
+	float sssSlotAt( const in ivec2 texel, const in float coverage ) {
+		float slot = texelFetch( tSurface, texel, 0 ).b;
+		#if SSS_COVERAGE == 1
+			slot = coverage > 0.0 ? slot / coverage : 0.0;
+		#endif
+		return slot;
+	}
+
+	int sssNearestSlot( const in ivec2 pixel, const in float coverage ) {
+		return clamp( int( floor( sssSlotAt( pixel, coverage ) + 0.5 ) ), 0, PROFILE_COUNT - 1 );
+	}
+
+	// Whether a texel is on the centre's profile: 1 on it; 0 on another, and 0 for a texel two
+	// profiles share (its light is theirs mixed: it would carry one's light into the other).
+	float sssOnProfile( const in ivec2 texel, const in float coverage ) {
+		return abs( sssSlotAt( texel, coverage ) - float( sssSlot ) ) < SSS_SLOT_TOLERANCE ? 1.0 : 0.0;
+	}
+#endif

@@ -10,6 +10,9 @@
 // With SSS_COVERAGE (the multi-target was resolved from MSAA) a texel's alpha is the fraction of
 // its samples on subsurface surfaces and its colour, depth and width are premultiplied by it: the
 // texel weighs its coverage, with its colour and depth divided back out.
+//
+// With several profiles (PROFILE_COUNT > 1) a texel of another profile weighs 0 too, like one off
+// the mask (surfaceSample.glsl's sssOnProfile).
 
 float sssTapWeight( const in ivec2 texel, const in float expectedDepth, const in vec3 centre, out vec3 colour ) {
 	vec4 light = texelFetch( tDiffuse, texel, 0 );
@@ -22,6 +25,12 @@ float sssTapWeight( const in ivec2 texel, const in float expectedDepth, const in
 	#if SSS_COVERAGE == 1
 		colour /= light.a;
 		weight = light.a;
+	#endif
+	#if PROFILE_COUNT > 1
+		// Another profile's texel is off this profile's mask in every followSurface mode: where a
+		// marble hand touches skin their depths agree, so the depth rule cannot part them.
+		weight *= sssOnProfile( texel, light.a );
+		if ( weight == 0.0 ) return 0.0; // no depth to fetch for a texel that weighs nothing
 	#endif
 	#if FOLLOW_SURFACE != FOLLOW_SURFACE_OFF
 		float farness = clamp( abs( sssUncovered( texelFetch( tSurface, texel, 0 ).rg, light.a ).r - expectedDepth ) * depthFalloff, 0.0, 1.0 );

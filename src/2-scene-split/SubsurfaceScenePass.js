@@ -20,7 +20,7 @@ import { Color, FloatType, HalfFloatType } from 'three';
 import { Pass } from 'three/addons/postprocessing/Pass.js';
 import { getSubsurface } from './subsurfaceMaterial.js';
 import { subsurfaceScreenBox } from './subsurfaceScreenBox.js';
-import { ATTACHMENTS, DRAW_BUFFERS, DRAW_PHASES, createSubsurfaceTarget, drawingInto } from './subsurfaceTarget.js';
+import { ATTACHMENTS, DRAW_BUFFERS, DRAW_PHASES, createSubsurfaceTarget, drawingInto, setSurfaceChannels } from './subsurfaceTarget.js';
 import { assertFloatRenderTargets, describe } from '../support/rendererSupport.js';
 import { checkOptions } from '../support/parameterChecks.js';
 import { PASS_BOOLEANS, booleanFields } from '../support/booleanFields.js';
@@ -87,6 +87,13 @@ export class SubsurfaceScenePass extends Pass {
      * them there, so each is rasterised once. The image is the same.
      */
     this.depthPrepass = false;
+    /**
+     * Documented-internal switch (issue 19; the bench undoes it for one measure): with MSAA, true
+     * (default) leaves the depth of call 1 unresolved (call 2 draws on into the same samples and
+     * three resolves them after it); false lets three resolve it after call 1 as well, three
+     * times over (it blits the depth with each of the three attachments). The image is the same.
+     */
+    this.resolvesDepthOnce = true;
     /** The multi-target (see subsurfaceTarget.js for what each attachment holds). */
     this.renderTarget = createSubsurfaceTarget(type);
 
@@ -122,6 +129,15 @@ export class SubsurfaceScenePass extends Pass {
     this.renderTarget.samples = samples;
     this.renderTarget.dispose(); // three rebuilds its buffers, multisampled or not, on the next use
     return true;
+  }
+
+  /**
+   * How many profiles the subsurface materials write (their slots): several grow the surface
+   * attachment by the slot channel (subsurfaceTarget.js's setSurfaceChannels).
+   * @param {number} count
+   */
+  setProfileCount(count) {
+    setSurfaceChannels(this.renderTarget, count);
   }
 
   /** 'subsurface', 'opaque' or 'transparent' for a material seen in the last render, else undefined. */
@@ -225,7 +241,14 @@ export class SubsurfaceScenePass extends Pass {
         gl.clearBufferfv(gl.COLOR, ATTACHMENTS.DIFFUSE, ZERO);
         gl.clearBufferfv(gl.COLOR, ATTACHMENTS.SURFACE, ZERO);
         // 1. opaque ordinary materials (+ subsurface depth with the prepass); background and shadow maps.
-        this._draw(renderer, this.depthPrepass ? DRAW_PHASES.DEPTH : DRAW_PHASES.HIDDEN, DRAW_BUFFERS.COLOR_ONLY);
+        // With MSAA three resolves the target after every render() into it, the depth once per
+        // attachment: after call 1 the depth is not resolved when call 2 follows and resolves it.
+        target.resolveDepthBuffer = !(this.resolvesDepthOnce && target.samples > 0 && this.subsurfaceMeshes.length > 0);
+        try {
+          this._draw(renderer, this.depthPrepass ? DRAW_PHASES.DEPTH : DRAW_PHASES.HIDDEN, DRAW_BUFFERS.COLOR_ONLY);
+        } finally {
+          target.resolveDepthBuffer = true;
+        }
         // 2. subsurface materials into every attachment (no background: a Color one would clear).
         scene.background = null;
         renderer.shadowMap.autoUpdate = false;
@@ -270,4 +293,4 @@ export class SubsurfaceScenePass extends Pass {
   }
 }
 
-booleanFields(SubsurfaceScenePass.prototype, [...PASS_BOOLEANS, 'depthPrepass']);
+booleanFields(SubsurfaceScenePass.prototype, [...PASS_BOOLEANS, 'depthPrepass', 'resolvesDepthOnce']);

@@ -80,6 +80,7 @@ function patch(material) {
     sssWidthWorld: { value: 0 },
     sssWidthScale: { value: 1 },
     sssDebugOutput: { value: 0 },
+    sssProfileSlot: { value: 0 },
     sssTransmits: { value: false },
     sssLightType: { value: 0 },
     ...lightUniformSlots(),
@@ -105,8 +106,7 @@ function patch(material) {
     fs = inject(fs, '#include <dithering_fragment>', `#include <dithering_fragment>\n${outputGlsl}`);
     shader.fragmentShader = fs;
     let vs = shader.vertexShader;
-    vs = inject(vs, 'void main() {', 'uniform bool sssHidden; // true in the scene split\'s first call without the depth prepass\nvoid main() {');
-    vs = inject(vs, '#include <fog_vertex>', `#include <fog_vertex>\n${hiddenGlsl}`);
+    vs = inject(vs, 'void main() {', `uniform bool sssHidden; // true in the scene split's first call without the depth prepass\nvoid main() {\n${hiddenGlsl}`);
     shader.vertexShader = vs;
   };
 
@@ -153,6 +153,7 @@ function applyBinding(uniforms, binding, scene, camera) {
   uniforms.sssWidthWorld.value = options.widthMm / options.worldUnitInMm;
   uniforms.sssWidthScale.value = options.widthScale;
   uniforms.sssDebugOutput.value = MATERIAL_OUTPUTS.indexOf(binding.debugOutput);
+  uniforms.sssProfileSlot.value = binding.profileSlot;
   uniforms.sssTransmits.value = false;
   if (!transmittance || !scene || !camera) return;
   writeTransmittedLight(uniforms, transmittance, scene, camera);
@@ -172,6 +173,8 @@ function withWidthScale(options) {
  * @property {Record<string, import('three').IUniform>} uniforms the hook's uniforms (shared by every binding of the material)
  * @property {{ widthMm: number, widthScale: number, worldUnitInMm: number, transmittance: object|null }} options
  * @property {'diffuse'|'transmittance'|'thickness'} debugOutput what the diffuse attachment receives
+ * @property {number} profileSlot the slot of the material's profile in the pipeline's frame
+ *   (src/profiles/profileSlots.js; 0 with one profile), written to the surface attachment's b
  * @property {number} widthWorld world units per profile millimetre (width × widthScale)
  * @property {(options?: { widthMm?: number, widthScale?: number, worldUnitInMm?: number, transmittance?: object|null }) => void} update
  * @property {() => void} dispose unbinds these settings; the material is restored once none is left
@@ -219,6 +222,8 @@ export function makeSubsurface(material, options = {}, owner = STANDALONE) {
     /** Checked transmittance settings, or null. */
     transmittance: null,
     _debugOutput: 'diffuse',
+    /** The profile's slot in this pipeline's frame (its pipeline sets it; 0: one profile). */
+    profileSlot: 0,
     /** What the diffuse attachment receives: one of MATERIAL_OUTPUTS ('diffuse' normally; the others for debug views). */
     set debugOutput(mode) {
       this._debugOutput = checkOneOf('debugOutput', mode, MATERIAL_OUTPUTS);

@@ -7,13 +7,17 @@
 //   1           diffuse   half float RGBA (or float) rgb: diffuse light + transmitted light;    0
 //                                                    a: 1, the mask (whatever the width)
 //   2           surface   float RG                   r: linear view depth (world units)          0
-//                                                    g: world units per profile mm × widthScale
+//                 (RGBA with several profiles)       g: world units per profile mm × widthScale
+//                                                    b: the material's profile slot (several profiles
+//                                                       only: src/profiles/profileSlots.js)
 //   depth       depth     24-bit depth texture       the scene's depth (what the compose hands on to the composer)
 //
 // The surface attachment is 32-bit float: depth differences of a millimetre at metres of distance
 // need its mantissa (half float has 11 bits). The mask is the diffuse alpha, not g > 0, so a
-// material with widthScale 0 keeps its diffuse light unblurred instead of losing it.
-import { DepthTexture, FloatType, NearestFilter, RGFormat, UnsignedIntType, WebGLRenderTarget } from 'three';
+// material with widthScale 0 keeps its diffuse light unblurred instead of losing it. The surface
+// grows to RGBA (RGB float is not renderable) only while a frame holds several profiles: one
+// profile keeps the 8 bytes a pixel it had.
+import { DepthTexture, FloatType, NearestFilter, RGBAFormat, RGFormat, UnsignedIntType, WebGLRenderTarget } from 'three';
 
 /** Attachment indices of the multi-target (see the table above). */
 export const ATTACHMENTS = Object.freeze({ COLOR: 0, DIFFUSE: 1, SURFACE: 2 });
@@ -63,6 +67,22 @@ export function createSubsurfaceTarget(type) {
   surface.format = RGFormat;
   surface.minFilter = surface.magFilter = NearestFilter;
   return target;
+}
+
+/**
+ * Gives the surface attachment the channels `profileCount` profiles need: RG for one, RGBA (b: the
+ * profile slot) for several. three reallocates the target's buffers on its next use.
+ * @param {WebGLRenderTarget} target from createSubsurfaceTarget
+ * @param {number} profileCount
+ * @returns {boolean} whether the format changed
+ */
+export function setSurfaceChannels(target, profileCount) {
+  const surface = target.textures[ATTACHMENTS.SURFACE];
+  const format = profileCount > 1 ? RGBAFormat : RGFormat;
+  if (surface.format === format) return false;
+  surface.format = format;
+  target.dispose();
+  return true;
 }
 
 /** What is being drawn, while a pipeline draws: its target, the draw phase and the pipeline. */

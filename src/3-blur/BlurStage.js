@@ -4,12 +4,17 @@
 // the two targets they write (the horizontal pass's output, then the scattered light). One owner:
 // the orchestrator's frame calls `blur.plan(pixelsPerMm)` then `blur.render()`, and its setters
 // forward here. Which method does what is BLUR_MODES's (src/3-blur/blurPlan.js) and METHOD_TABLE's.
+// The profiles are the orchestrator's (one per slot, src/profiles/profileSlots.js): setProfiles.
+// Over 300 lines because it is the stage's one owner: its settings' setters, the kernels of every
+// method and profile, the plan, the scissor and the two targets (the passes are their own files).
 import { WebGLRenderTarget } from 'three';
 import { computeKernel, kernelRadiusMm } from '../profiles/kernel.js';
 import { getProfile } from '../profiles/presets.js';
 import { AUTO_SAMPLES, METHOD_TABLE, PIPELINE_SCHEMA, checkOption } from '../options.js';
-import { blurModeOf, planBlur } from './blurPlan.js';
+import { blurModeOf, checkProfileCount, planBlur } from './blurPlan.js';
 import { booleanFields } from '../support/booleanFields.js';
+import { checkBoolean } from '../support/parameterChecks.js';
+import { setDefines } from '../support/glsl.js';
 import { SubsurfaceBlurPass } from './SubsurfaceBlurPass.js';
 import { DenseSubsurfacePass } from './DenseSubsurfacePass.js';
 
@@ -21,15 +26,15 @@ const DENSE_MAX_RADIUS_PX = 256;
 /** What the two separable passes run for a method: footprints snapped to pixels, or fixed taps. */
 const passModeOf = (method) => (METHOD_TABLE[method].blur === 'footprint' ? 'footprint' : 'taps');
 
-/** The kernel settings setKernel accepts. */
-const KERNEL_SETTINGS = Object.freeze(['profile', 'method', 'samples', 'strength', 'falloff']);
+/** The kernel settings setKernel accepts (the profiles come with setProfiles). */
+const KERNEL_SETTINGS = Object.freeze(['method', 'samples', 'strength', 'falloff']);
 
 export class BlurStage {
   /**
    * @param {object} options
    * @param {number} options.type HalfFloatType or FloatType for the two targets
-   * @param {import('../profiles/ProfileLookup.js').ProfileLookup} options.profileLookup the pipeline's
-   *   profile tables (refilled here when the profile changes)
+   * @param {import('../profiles/ProfileLookup.js').ProfileLookup} options.profileLookup the first
+   *   profile's tables (setProfiles gives the frame's profiles)
    * @param {import('../options.js').Method} options.method
    * @param {number|'auto'} options.samples
    * @param {number[]} [options.strength]
@@ -39,10 +44,12 @@ export class BlurStage {
    */
   constructor({ type, profileLookup, method, samples, strength, falloff, surface }) {
     this.profileLookup = profileLookup;
+    /** The profiles' tables by slot; the first one's kernel is the fixed-tap methods'. */
+    this.profileLookups = [profileLookup];
     /** false turns the blur off (the orchestrator's `scattering`). */
     this.scattering = true;
     this._settings = { profile: profileLookup.profile, method: checkOption(PIPELINE_SCHEMA, 'method', method), samples, strength, falloff };
-    this._kernels = new Map(); // computed kernels by their arguments: 'auto' switches between a few
+    this._kernels = new WeakMap(); // profile → computed kernels by their arguments: 'auto' switches between a few
     this._surface = surface;
     this._blurTarget = new WebGLRenderTarget(1, 1, { type, depthBuffer: false });
     this._blurTarget.texture.name = 'subsurface.horizontal';
@@ -61,6 +68,7 @@ export class BlurStage {
      * scissored to the subsurface pixels' screen box (render's `box`). false: the whole frame.
      */
     this.confineToSubsurface = true;
+    this._skipsEmptyTexels = true;
     this._scissorKey = null; // the box the targets were last scissored to ('full' or x,y,w,h)
     /** The kernel the separable passes hold (computeKernel's layout). */
     this.kernel = firstKernel;
@@ -82,6 +90,19 @@ export class BlurStage {
   get kernelOptions() {
     const { profile, strength, falloff } = this._settings;
     return { profile, samples: this.kernel.length / 4, strength, falloff };
+  }
+
+  /**
+   * Documented-internal switch (issue 19; the bench undoes it for one measure): true (default)
+   * fetches only the texels a tap weighs (a tap on a texel centre weighs one, not two); false
+   * fetches both, as before. The sums, and so the image, are the same.
+   * @type {boolean}
+   */
+  get skipsEmptyTexels() { return this._skipsEmptyTexels; }
+
+  set skipsEmptyTexels(enabled) {
+    this._skipsEmptyTexels = checkBoolean('BlurStage.skipsEmptyTexels', enabled);
+    for (const pass of [this.horizontalPass, this.verticalPass]) setDefines(pass.material, { SSS_SKIP_EMPTY_TEXELS: enabled ? 1 : 0 });
   }
 
   /** The dense 2D reference (method 'dense'), built on first use. */
@@ -109,13 +130,20 @@ export class BlurStage {
     return this.autoSamples ? blurModeOf(this.method).autoSamples(0) : this.samples;
   }
 
-  /** computeKernel for this method's kernel (METHOD_TABLE) with `samples` taps, cached. */
-  _kernelFor(samples) {
-    const { profile, method, strength, falloff } = this._settings;
+  /** computeKernel for this method's kernel (METHOD_TABLE) with `samples` taps, for `profile` (default: the first slot's), cached. */
+  _kernelFor(samples, profile = this._settings.profile) {
+    const { method, strength, falloff } = this._settings;
     const args = { profile, samples, strength, falloff, method: METHOD_TABLE[method].kernel };
-    const key = JSON.stringify([profile.name, args.method, samples, strength, falloff]);
-    if (!this._kernels.has(key)) this._kernels.set(key, computeKernel(args));
-    return this._kernels.get(key);
+    const key = JSON.stringify([args.method, samples, strength, falloff]);
+    if (!this._kernels.has(profile)) this._kernels.set(profile, new Map());
+    const kernels = this._kernels.get(profile);
+    if (!kernels.has(key)) kernels.set(key, computeKernel(args));
+    return kernels.get(key);
+  }
+
+  /** Every slot's kernel of `samples` taps (the first is `kernel`'s). */
+  _slotKernels(samples) {
+    return this.profileLookups.map((lookup) => this._kernelFor(samples, lookup.profile));
   }
 
   /**
@@ -126,12 +154,13 @@ export class BlurStage {
   get planSettings() {
     const counts = this.autoSamples ? AUTO_SAMPLES : [this.samples];
     const kernelReachMm = {};
-    for (const n of counts) Object.defineProperty(kernelReachMm, n, { enumerable: true, get: () => kernelRadiusMm(this._kernelFor(n)) });
+    const reachOf = (n) => Math.max(...this._slotKernels(n).map(kernelRadiusMm)); // the widest profile's
+    for (const n of counts) Object.defineProperty(kernelReachMm, n, { enumerable: true, get: () => reachOf(n) });
     return {
       method: this.method,
       samples: this.samples,
       scattering: this.scattering,
-      marginalRadiusMm: this.profileLookup.marginalRadiusMm,
+      marginalRadiusMm: Math.max(...this.profileLookups.map((lookup) => lookup.marginalRadiusMm)),
       denseRadiusMm: blurModeOf(this.method).passes === 'dense' ? this.densePass.radiusMm : 0,
       kernelReachMm,
     };
@@ -196,10 +225,26 @@ export class BlurStage {
   }
 
   /**
-   * Changes kernel settings: { profile, method, samples, strength, falloff } (checked here; each
-   * left out keeps its value). A change of method between 'footprint' and the fixed-tap ones
-   * recompiles the blur shaders once; nothing else does.
-   * @param {{ profile?: string|object, method?: string, samples?: number|'auto', strength?: number[], falloff?: number[] }} options
+   * The frame's profiles, by slot (src/profiles/profileSlots.js): the first one's kernel is the
+   * fixed-tap methods' and the dense reference's; several need a method that blurs several
+   * (METHOD_TABLE's `profiles`: a RangeError otherwise, the stage unchanged). Their tables are
+   * the caller's (refilled by it); here only the passes are pointed at them.
+   * @param {readonly import('../profiles/ProfileLookup.js').ProfileLookup[]} lookups one or more
+   */
+  setProfiles(lookups) {
+    checkProfileCount(this.method, lookups.length);
+    const first = lookups[0];
+    this.profileLookups = [...lookups];
+    this.profileLookup = first;
+    for (const pass of [this.horizontalPass, this.verticalPass]) pass.setProfiles(lookups);
+    this._settingsChanged({ ...this._settings, profile: first.profile });
+  }
+
+  /**
+   * Changes kernel settings: { method, samples, strength, falloff } (checked here; each left out
+   * keeps its value). A change of method between 'footprint' and the fixed-tap ones recompiles the
+   * blur shaders once; nothing else does.
+   * @param {{ method?: string, samples?: number|'auto', strength?: number[], falloff?: number[] }} options
    */
   setKernel(options = {}) {
     const next = { ...this._settings };
@@ -207,9 +252,14 @@ export class BlurStage {
       if (options[name] === undefined) continue;
       next[name] = checkOption(PIPELINE_SCHEMA, name, options[name]);
     }
-    if (options.profile !== undefined) next.profile = getProfile(options.profile);
+    checkProfileCount(next.method, this.profileLookups.length);
+    this._settingsChanged(next);
+  }
+
+  /** Takes `next` settings: the kernel first (a setting computeKernel refuses leaves the stage as it was), then the passes. */
+  _settingsChanged(next) {
     const profileChanged = next.profile !== this._settings.profile;
-    this._warnBuiltInKernel(next.method, next.profile);
+    for (const profile of new Set([next.profile, ...this.profileLookups.map((lookup) => lookup.profile)])) this._warnBuiltInKernel(next.method, profile);
     // The kernel first: a setting computeKernel refuses leaves the stage as it was.
     const previous = this._settings;
     this._settings = next;
@@ -219,10 +269,7 @@ export class BlurStage {
       this._settings = previous;
       throw error;
     }
-    if (profileChanged) {
-      this.profileLookup.setProfile(next.profile); // tens of ms: only on a change
-      this._densePass?.setProfile(next.profile);
-    }
+    if (profileChanged) this._densePass?.setProfile(next.profile);
     this._applySettings();
   }
 
@@ -240,7 +287,8 @@ export class BlurStage {
   /** @param {Float32Array} kernel */
   _setPassKernels(kernel) {
     const capacity = blurModeOf(this.method).tapCapacity(kernel.length / 4, this.autoSamples);
-    for (const pass of [this.horizontalPass, this.verticalPass]) pass.setKernel(kernel, capacity);
+    const slotKernels = passModeOf(this.method) === 'taps' ? this._slotKernels(kernel.length / 4) : [kernel]; // footprints read the tables
+    for (const pass of [this.horizontalPass, this.verticalPass]) pass.setKernel(kernel, capacity, slotKernels);
     this.kernel = kernel;
   }
 

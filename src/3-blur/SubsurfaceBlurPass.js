@@ -2,15 +2,17 @@
 // them (horizontal, then vertical) make the paper's two screen-space passes. Only subsurface
 // pixels change; taps on other pixels, off screen or on another surface are dropped and the rest
 // renormalised per channel (or lerped back to the centre colour, as in the reference).
-import { Vector3 } from 'three';
+import { DataTexture, FloatType, NearestFilter, RGBAFormat, Vector3 } from 'three';
 import blurGlsl from '../../shaders/3-blur/subsurfaceBlur.frag.glsl?raw';
 import profileLookupGlsl from '../../shaders/common/profileLookup.glsl?raw';
 import { kernelRadiusMm } from '../profiles/kernel.js';
 import { ProfileLookup } from '../profiles/ProfileLookup.js';
 import { FootprintTable } from '../profiles/FootprintTable.js';
+import { ProfileStack } from '../profiles/ProfileStack.js';
+import { MAX_PROFILES } from '../profiles/profileSlots.js';
 import { FOOTPRINT_ROWS, FOOTPRINT_SCALES } from '../profiles/footprints.js';
 import { enumDefines, glslFloat, setDefines } from '../support/glsl.js';
-import { checkBoolean, checkOneOf, checkOptions, checkRgb } from '../support/parameterChecks.js';
+import { checkBoolean, checkInteger, checkOneOf, checkOptions, checkRgb } from '../support/parameterChecks.js';
 import { describe } from '../support/rendererSupport.js';
 import { FOLLOW_SURFACE_MODES } from '../options.js';
 import { SurfacePass } from './SurfacePass.js';
@@ -88,7 +90,7 @@ export class SubsurfaceBlurPass extends SurfacePass {
       name: `SubsurfaceBlurPass(${direction})`,
       fragmentShader: blurGlsl,
       chunks: CHUNKS,
-      defines: { AXIS: DIRECTIONS.indexOf(direction), SAMPLES: 1, ...FOOTPRINT_DEFINES, ...enumDefines('KERNEL_MODE', KERNEL_MODES, mode) },
+      defines: { AXIS: DIRECTIONS.indexOf(direction), SAMPLES: 1, SSS_SKIP_EMPTY_TEXELS: 1, ...FOOTPRINT_DEFINES, ...enumDefines('KERNEL_MODE', KERNEL_MODES, mode) },
       uniforms: {
         kernel: { value: new Float32Array(4) },
         tapCount: { value: 1 },
@@ -96,15 +98,18 @@ export class SubsurfaceBlurPass extends SurfacePass {
         strength: { value: new Vector3(1, 1, 1) },
         tProfile: { value: null },
         marginalRangeMm: { value: 1 },
+        marginalRangesMm: { value: new Float32Array(1) },
         tFootprints: { value: null },
+        tKernels: { value: null },
       },
     }, surface);
     this.direction = direction;
     this.mode = mode;
-    this.profileLookup = profileLookup;
-    this.uniforms.tProfile.value = profileLookup?.texture ?? null;
     /** The footprint allocation for the profile and the kernel's tap count ('footprint' mode). */
     this.footprintTable = profileLookup ? new FootprintTable(profileLookup) : null;
+    /** Several profiles' tables, stacked ('footprint' mode with more than one profile). */
+    this.profileStack = new ProfileStack();
+    this.setProfiles(profileLookup ? [profileLookup] : []);
     /** 'footprint' mode: taps chosen per pixel for its scale ('auto'), or the kernel's count everywhere. */
     this.autoFootprints = autoFootprints;
     this.setKernel(kernel);
@@ -117,11 +122,28 @@ export class SubsurfaceBlurPass extends SurfacePass {
   }
 
   /**
+   * The profiles blurred, by slot (src/profiles/profileSlots.js): one is the pass as without this
+   * feature (PROFILE_COUNT 1, the lookup's own tables); several (up to MAX_PROFILES) recompile it
+   * once with PROFILE_COUNT, each pixel then reading its slot's tables from the ProfileStack.
+   * @param {readonly ProfileLookup[]} lookups
+   */
+  setProfiles(lookups) {
+    if (lookups.length > 0) checkInteger('profiles', lookups.length, 1, MAX_PROFILES, 'profiles');
+    /** The profiles' tables, by slot (empty: none, 'taps' mode only). */
+    this.profileLookups = [...lookups];
+    this.profileLookup = lookups[0] ?? null;
+    if (this.footprintTable) this.footprintTable.lookup = this.profileLookup;
+    this.uniforms.tProfile.value = this.profileLookup?.texture ?? null;
+    setDefines(this.material, { PROFILE_COUNT: Math.max(lookups.length, 1) });
+  }
+
+  /**
    * The reach of the kernel, mm: below half a pixel of it a pixel does no work. 'taps': the outermost
-   * tap; 'footprint': the radius holding 99 % of the marginal (its tail is sampled at least a pixel out).
+   * tap; 'footprint': the radius holding 99 % of the marginal (its tail is sampled at least a pixel
+   * out); the widest profile's.
    */
   get radiusMm() {
-    return this.mode === 'footprint' ? this.profileLookup.marginalRadiusMm : kernelRadiusMm(this.kernel);
+    return this.mode === 'footprint' ? Math.max(...this.profileLookups.map((lookup) => lookup.marginalRadiusMm)) : Math.max(...this.slotKernels.map(kernelRadiusMm));
   }
 
   /** What the footprint table is built for: 'auto', or the kernel's tap count. */
@@ -144,8 +166,11 @@ export class SubsurfaceBlurPass extends SurfacePass {
    * @param {number} [tapCapacity] 'taps' mode: the most taps the shader is compiled for (at least
    *   the kernel's); a kernel of fewer taps is then a uniform change, not a recompile, so 'auto'
    *   can change the count every frame. 'footprint' mode: ignored (the kernel's count is the budget).
+   * @param {readonly Float32Array[]} [slotKernels] 'taps' mode with several profiles (setProfiles):
+   *   each slot's kernel of the same count, `kernel` first; the shader reads slot p's from row p of
+   *   a float texture instead of the `kernel` uniform
    */
-  setKernel(kernel, tapCapacity = 0) {
+  setKernel(kernel, tapCapacity = 0, slotKernels = [kernel]) {
     if (!(kernel instanceof Float32Array) || kernel.length < 4 || kernel.length % 4 !== 0) {
       throw new TypeError('SubsurfaceBlurPass: kernel must be a Float32Array of 4 numbers per tap (see computeKernel)');
     }
@@ -160,11 +185,36 @@ export class SubsurfaceBlurPass extends SurfacePass {
     this.uniforms.kernelRadiusMm.value = kernelRadiusMm(kernel);
     setDefines(this.material, { SAMPLES: capacity });
     this.kernel = kernel;
+    this.slotKernels = slotKernels;
+    if (slotKernels.length > 1) this._writeSlotKernels(slotKernels, capacity);
+  }
+
+  /** Row p of `tKernels`: slot p's kernel, zero-padded to the capacity like the uniform. */
+  _writeSlotKernels(slotKernels, capacity) {
+    let texture = this.uniforms.tKernels.value;
+    if (!texture || texture.image.width !== capacity || texture.image.height !== slotKernels.length) {
+      texture?.dispose();
+      texture = new DataTexture(new Float32Array(capacity * 4 * slotKernels.length), capacity, slotKernels.length, RGBAFormat, FloatType);
+      texture.minFilter = texture.magFilter = NearestFilter;
+      texture.name = 'SubsurfaceBlurPass.slotKernels';
+      this.uniforms.tKernels.value = texture;
+    }
+    texture.image.data.fill(0);
+    slotKernels.forEach((k, slot) => texture.image.data.set(k, slot * capacity * 4));
+    texture.needsUpdate = true;
   }
 
   render(renderer, writeBuffer, readBuffer, deltaTime, maskActive) {
     if (this.profileLookup) this.uniforms.marginalRangeMm.value = this.profileLookup.marginalRangeMm;
-    if (this.mode === 'footprint') this.uniforms.tFootprints.value = this.footprintTable.update(this.footprintSamples);
+    if (this.mode === 'footprint' && this.profileLookups.length > 1) {
+      this.profileStack.update(this.profileLookups, this.footprintSamples);
+      this.uniforms.tProfile.value = this.profileStack.profileTexture;
+      this.uniforms.tFootprints.value = this.profileStack.footprintTexture;
+      this.uniforms.marginalRangesMm.value = this.profileStack.marginalRangesMm;
+    } else if (this.mode === 'footprint') {
+      this.uniforms.tProfile.value = this.profileLookup.texture;
+      this.uniforms.tFootprints.value = this.footprintTable.update(this.footprintSamples);
+    }
     this.uniforms.kernelRadiusMm.value = this.radiusMm;
     super.render(renderer, writeBuffer, readBuffer, deltaTime, maskActive);
   }
@@ -172,5 +222,7 @@ export class SubsurfaceBlurPass extends SurfacePass {
   dispose() {
     super.dispose();
     this.footprintTable?.dispose();
+    this.profileStack.dispose();
+    this.uniforms.tKernels.value?.dispose();
   }
 }

@@ -15,7 +15,7 @@ import { checkNumber, checkOneOf } from '../support/parameterChecks.js';
 import { describe } from '../support/rendererSupport.js';
 import { PASS_BOOLEANS, booleanFields } from '../support/booleanFields.js';
 import { isPerspective } from '../support/screenScale.js';
-import { FOLLOW_SURFACE_MODES } from '../options.js';
+import { FOLLOW_SURFACE_MODES, MAX_MULTISAMPLING } from '../options.js';
 import { ENERGY_LEFT, MAX_PLANE_SLOPE, MAX_SLOPE, MIN_KERNEL_PIXELS, PLANE_SLOPE_AGREEMENT } from './samplingModel.js';
 
 /** samplingModel.js's numbers as the GLSL defines the shaders read. */
@@ -25,6 +25,9 @@ const SAMPLING_DEFINES = Object.freeze({
   SSS_PLANE_SLOPE_AGREEMENT: glslFloat(PLANE_SLOPE_AGREEMENT),
   SSS_MAX_PLANE_SLOPE: glslFloat(MAX_PLANE_SLOPE),
   SSS_ENERGY_LEFT: glslFloat(ENERGY_LEFT),
+  // Several profiles: a texel is on a slot within half the smallest step a resolve makes between
+  // two slots (1 / MAX_MULTISAMPLING), so a pixel two profiles share is on neither (surfaceSample.glsl).
+  SSS_SLOT_TOLERANCE: glslFloat(0.5 / MAX_MULTISAMPLING),
 });
 
 /** The chunks every surface pass includes: finiteness, screen scale, reading the surface, its slope, the tap rule. */
@@ -63,7 +66,7 @@ export class SurfacePass extends ShaderPass {
     }
     super({
       name,
-      defines: { ...SAMPLING_DEFINES, ...enumDefines('FOLLOW_SURFACE', FOLLOW_SURFACE_MODES, 'drop'), FORESHORTEN: 1, SSS_COVERAGE: 0, ...defines },
+      defines: { ...SAMPLING_DEFINES, ...enumDefines('FOLLOW_SURFACE', FOLLOW_SURFACE_MODES, 'drop'), FORESHORTEN: 1, SSS_COVERAGE: 0, PROFILE_COUNT: 1, ...defines },
       uniforms: {
         tDiffuse: { value: null },
         tSurface: { value: null },

@@ -69,6 +69,19 @@ function reachOfTaps(settings, samples) {
   return reach;
 }
 
+/**
+ * Refuses `count` profiles in one frame for a method that blurs fewer (METHOD_TABLE's `profiles`):
+ * a RangeError naming the method, the materials' `profile` and the methods that would do.
+ * @param {import('../options.js').Method} method
+ * @param {number} count
+ */
+export function checkProfileCount(method, count) {
+  const most = METHOD_TABLE[method].profiles;
+  if (count <= most) return;
+  const methods = Object.keys(METHOD_TABLE).filter((m) => METHOD_TABLE[m].profiles >= count).map((m) => `'${m}'`).join(' or ');
+  throw new RangeError(`SubsurfaceScattering: method '${method}' blurs ${most} profile per frame and the materials use ${count} (their \`profile\`); use method ${methods}, or one profile`);
+}
+
 /** The BLUR_MODES entry of a method. @param {import('../options.js').Method} method */
 export function blurModeOf(method) {
   return BLUR_MODES[METHOD_TABLE[method].blur];

@@ -9,7 +9,12 @@ import { footprintTable, FOOTPRINT_ROWS } from './footprints.js';
 /** profile → samples (or 'auto') → table (computing one takes tens of ms; 'auto' a few hundred). */
 const tables = new WeakMap();
 
-function tableOf(lookup, samples) {
+/**
+ * The footprint table's numbers for the lookup's current profile and `samples` (cached per profile).
+ * @param {import('./ProfileLookup.js').ProfileLookup} lookup
+ * @param {number|'auto'} samples
+ */
+export function tableOf(lookup, samples) {
   let bySamples = tables.get(lookup.profile);
   if (!bySamples) tables.set(lookup.profile, (bySamples = new Map()));
   if (!bySamples.has(samples)) bySamples.set(samples, footprintTable((x) => lookup.marginalEnergy(x), samples));

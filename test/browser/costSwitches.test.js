@@ -1,7 +1,7 @@
 // Issue 19's savings and their switches (the bench undoes each for one measure): the scene split
 // without the depth prepass (each subsurface object rasterised once), the blur scissored to the
 // subsurface pixels' screen box, the compose fetching less, the light depth pass skipped while
-// unread. Each switch must leave the image as it is: every variant is held against the frame with
+// unread, the blur fetching only the texels its taps weigh, and with MSAA the depth resolved once. Each switch must leave the image as it is: every variant is held against the frame with
 // every saving on, float read-backs, and the ordinary pixels against a plain three.js frame (the
 // shadows cast by and onto subsurface objects kept).
 import { describe, it, expect, beforeAll, afterAll } from 'vitest';
@@ -50,9 +50,15 @@ function renderVariants(variants) {
   const subsurface = [front, behind];
   const home = subsurface.map((m) => m.position.clone());
 
-  const frame = async ({ switches = {}, moved = false }) => {
+  // A transparent pane between the spheres (the MSAA variants but one): drawn after the compose and
+  // depth-tested against the scene's resolved depth, it shows whether that depth is right.
+  const pane = new THREE.Mesh(new THREE.PlaneGeometry(3, 1.2), new THREE.MeshBasicMaterial({ color: 0x44ff88, transparent: true, opacity: 0.5 }));
+  pane.position.set(0.4, 0.2, -0.5);
+
+  const frame = async ({ switches = {}, moved = false, multisampling = 0, withPane = multisampling > 0 }) => {
     const composer = createComposer(renderer, { type: THREE.FloatType });
-    const sss = new SSS.SubsurfaceScattering({ scene, camera, worldUnitInMm: 100, type: THREE.FloatType, light });
+    if (withPane) scene.add(pane);
+    const sss = new SSS.SubsurfaceScattering({ scene, camera, worldUnitInMm: 100, type: THREE.FloatType, light, multisampling });
     for (const m of [skin, skinBehind]) sss.makeSubsurface(m);
     sss.addTo(composer);
     const targets = { scene: sss.scenePass, blur: sss.blur, compose: sss.composePass, pipeline: sss };
@@ -75,6 +81,7 @@ function renderVariants(variants) {
     };
     sss.dispose();
     composer.dispose();
+    scene.remove(pane);
     return out;
   };
   const plainFrame = async () => {
@@ -102,8 +109,15 @@ const VARIANTS = {
   fullFrameBlur: { switches: { 'blur.confineToSubsurface': false } },
   composeAsBefore: { switches: { 'compose.fetchesEverywhere': true } },
   lightDepthEveryFrame: { switches: { 'pipeline.skipsUnreadLightDepth': false } },
+  bothTexelsFetched: { switches: { 'blur.skipsEmptyTexels': false } },
   moved: { moved: true },
+  // With MSAA 4, against the MSAA frame with every saving.
+  msaa: { multisampling: 4, base: true },
+  msaaWithoutPane: { multisampling: 4, withPane: false, base: true },
+  msaaDepthResolvedTwice: { multisampling: 4, switches: { 'scene.resolvesDepthOnce': false } },
 };
+/** The frame a variant is held against: the MSAA one with every saving for MSAA variants. */
+const baseOf = (name) => (VARIANTS[name].multisampling > 0 ? 'msaa' : 'saving');
 
 const maxDifference = (a, b) => {
   let worst = 0;
@@ -129,11 +143,28 @@ describe('issue 19: each saving leaves the image as it is', () => {
     }
   });
 
-  it.each(Object.keys(VARIANTS).filter((k) => k !== 'saving'))('%s: the output and the scattered light as with every saving', (name) => {
+  it.each(Object.keys(VARIANTS).filter((k) => k !== 'saving' && !VARIANTS[k].base))('%s: the output and the scattered light as with every saving', (name) => {
     // The same shaders on the same inputs: the same floats (a scissor or a depth prepass changes
     // which fragments run, not what they compute).
-    expect(maxDifference(r[name].output, r.saving.output)).toBe(0);
-    expect(maxDifference(r[name].scattered, r.saving.scattered)).toBe(0);
+    expect(maxDifference(r[name].output, r[baseOf(name)].output)).toBe(0);
+    expect(maxDifference(r[name].scattered, r[baseOf(name)].scattered)).toBe(0);
+  });
+
+  it('with MSAA, the transparent pane is hidden behind the front sphere and seen over the floor (the depth resolved once is the scene\'s)', () => {
+    const { output, diffuse } = r.msaa;
+    const { output: without } = r.msaaWithoutPane;
+    let frontUnchanged = 0, front = 0, paneSeen = 0;
+    for (let i = 0; i < output.length; i += 4) {
+      const green = output[i + 1] - without[i + 1];
+      const x = (i / 4) % r.width;
+      if (diffuse[i + 3] > 0 && x < r.width / 2) { // the front sphere's left half: in front of the pane
+        front++;
+        if (Math.abs(green) < 0.05 * Math.max(without[i + 1], 0.05)) frontUnchanged++;
+      } else if (diffuse[i + 3] === 0 && green > 0.1) paneSeen++;
+    }
+    expect(paneSeen).toBeGreaterThan(200);
+    expect(front).toBeGreaterThan(200);
+    expect(frontUnchanged / front).toBeGreaterThan(0.97); // antialiased rims aside
   });
 
   it('without the depth prepass, ordinary pixels are the plain three.js frame (shadows cast by the subsurface spheres kept)', () => {

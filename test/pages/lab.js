@@ -103,6 +103,28 @@ const SCENES = {
     return base;
   },
   /**
+   * Two half slabs side by side at the same depth, meeting at x = 0 (the centre column's edge):
+   * `sides` = [left, right], each { albedo, pattern (optional), material: makeSubsurface options }
+   * or null (left out); `seamShiftWorld` moves both (half a pixel: the seam through a pixel's middle).
+   */
+  sideBySide(o) {
+    const base = SCENES.slab({ ...o, pattern: 'uniform' });
+    base.scene.remove(base.scene.children[0]);
+    base.subsurface = [];
+    base.subsurfaceOptions = [];
+    o.sides.forEach((side, i) => {
+      if (!side) return;
+      const map = PATTERNS[side.pattern ?? 'uniform'](o);
+      const material = new THREE.MeshStandardMaterial({ color: new THREE.Color().setScalar(side.albedo), roughness: 1, metalness: 0, map });
+      const half = new THREE.Mesh(new THREE.PlaneGeometry(o.slabSize / 2, o.slabSize), material);
+      half.position.x = (i === 0 ? -1 : 1) * (o.slabSize / 4) + (o.seamShiftWorld ?? 0);
+      base.scene.add(half);
+      base.subsurface.push(material);
+      base.subsurfaceOptions.push(side.material ?? {});
+    });
+    return base;
+  },
+  /**
    * A slab `thicknessMm` thick, lit from behind, seen from the front (transmittance). With
    * `occluder`, a sheet between the light and the slab's upper right quarter (as the camera sees
    * it) adds `occluderGapMm` to the thickness the light crosses there: a picture that is not
@@ -159,7 +181,7 @@ async function run(options) {
       light: o.transmittance ? built.light : null,
       ...(o.sss ?? {}),
     });
-    for (const m of built.subsurface) sss.makeSubsurface(m, { widthMm: o.widthMm, ...(o.material ?? {}) });
+    built.subsurface.forEach((m, i) => sss.makeSubsurface(m, { widthMm: o.widthMm, ...(o.material ?? {}), ...(built.subsurfaceOptions?.[i] ?? {}) }));
     sss.addTo(composer);
   } else {
     composer.addPass(new RenderPass(built.scene, built.camera));
@@ -189,6 +211,8 @@ async function run(options) {
         ? { table: sss.horizontalPass.footprintTable.table, scales: INTERNALS.FOOTPRINT_SCALES } : undefined,
       projectionScale: [p[0], p[5]], depthThresholdWorld: sss.horizontalPass.depthThresholdWorld,
       thicknessWorld: built.thicknessWorld,
+      profileCount: sss.horizontalPass.material.defines.PROFILE_COUNT,
+      surfaceChannels: sss.scenePass.surfaceTexture.format === THREE.RGBAFormat ? 4 : 2,
     });
   }
   for (const name of o.reads) result[name] = await reads[name]();

@@ -131,6 +131,19 @@ export const CALL_CASES = [
   ['transmittance: 1', (t) => t.sss.makeSubsurface(t.material, { transmittance: 1 }), 'TypeError', /transmittance must be a boolean .*got 1/],
   ['translucency: 1', (t) => t.sss.makeSubsurface(t.material, { translucency: 1 }), 'RangeError', /translucency must be in \[0, 1\), got 1/],
   ['shrinkMm: -1', (t) => t.sss.makeSubsurface(t.material, { shrinkMm: -1 }), 'RangeError', /shrinkMm must be in \[0, 1000\] mm, got -1/],
+  ["material profile: 'jelly'", (t) => t.sss.makeSubsurface(t.material, { profile: 'jelly' }), 'TypeError', /profile must be one of 'skin', 'skinBurley', 'marble', 'milk' or a profile object .*got "jelly"/],
+  ['material profile: 5', (t) => t.sss.makeSubsurface(t.material, { profile: 5 }), 'TypeError', /profile must be one of 'skin', .*got 5/],
+  ['nine material profiles in one pipeline', (t) => {
+    for (let k = 1; k <= 9; k++) t.sss.makeSubsurface(new t.THREE.MeshStandardMaterial(), { profile: t.SSS.burleyProfile({ scatterDistanceMm: [k, k, k] }) });
+  }, 'RangeError', /profile: at most 8 profiles per pipeline, got 9/],
+  ["a second profile with method 'dense'", (t) => {
+    t.sss.method = 'dense';
+    t.sss.makeSubsurface(new t.THREE.MeshStandardMaterial(), { profile: 'marble' });
+  }, 'RangeError', /method 'dense' blurs 1 profile per frame and the materials use 2 \(their `profile`\); use method 'footprint' or 'marginal' or 'reference'/],
+  ["method 'dense' with two profiles", (t) => {
+    t.sss.makeSubsurface(new t.THREE.MeshStandardMaterial(), { profile: 'marble' });
+    t.sss.method = 'dense';
+  }, 'RangeError', /method 'dense' blurs 1 profile per frame and the materials use 2/],
   ['a material with depthFunc changed', (t) => t.sss.makeSubsurface(new t.THREE.MeshStandardMaterial({ depthFunc: t.THREE.LessDepth })), 'RangeError', /material\.depthFunc must be THREE\.LessEqualDepth/],
   ['makeSubsurface on its own, options null', (t) => t.SSS.makeSubsurface(new t.THREE.MeshStandardMaterial(), null), 'TypeError', /makeSubsurface options must be an object, got null/],
   ['makeSubsurface on its own, a misspelt option', (t) => t.SSS.makeSubsurface(new t.THREE.MeshStandardMaterial(), { worldUnit: 10 }), 'TypeError', /unknown option "worldUnit"/],

@@ -26,6 +26,9 @@ const sss = new SubsurfaceScattering(options);
 const materialOptions: SubsurfaceMaterialOptions = { widthMm: 1, widthScale: 0.8, transmittance: true };
 const binding: SubsurfaceBinding = sss.makeSubsurface(skin, materialOptions);
 const width: number = binding.widthWorld;
+// A material of another profile in the same pipeline (up to MAX_PROFILES).
+const marbleOptions: SubsurfaceMaterialOptions = { profile: 'marble', widthMm: 1 };
+const slot: number = sss.makeSubsurface(new THREE.MeshStandardMaterial(), marbleOptions).profileSlot;
 // One setter style: every setting is a property, checked on assignment.
 sss.debugView = 'mask';
 sss.debugThicknessRangeMm = 5;
@@ -113,6 +116,7 @@ export const ALL_EXPORTS = {
   FOLLOW_SURFACE_MODES: SSS.FOLLOW_SURFACE_MODES satisfies readonly FollowSurfaceMode[],
   PIPELINE_DEFAULTS: SSS.PIPELINE_DEFAULTS.method satisfies Method,
   MATERIAL_DEFAULTS: SSS.MATERIAL_DEFAULTS.widthMm satisfies number,
+  MAX_PROFILES: SSS.MAX_PROFILES satisfies number,
   planFrame: SSS.planFrame({ scattering: true, pixelsPerMm: 2, samples: 'auto', autoRadiusMm: 3, radiusMmOf: (n: number) => n / 2 }).blur satisfies boolean,
   autoSampleCount: SSS.autoSampleCount(4) satisfies number,
   estimatePixelsPerMm: SSS.estimatePixelsPerMm([], camera, { width: 640, height: 360 }, () => 0.001) satisfies number,
@@ -152,4 +156,4 @@ export const ALL_EXPORTS = {
   pixelsPerMm: SSS.pixelsPerMm(0.001, 0.6, 2, 720) satisfies number,
   isPerspective: SSS.isPerspective(camera) satisfies boolean,
 };
-void [width, removed, asked];
+void [width, slot, removed, asked];

@@ -8,4 +8,4 @@
 	// A non-finite value would spread through the blur: keep it out.
 	if ( ! sssFinite( sssDiffuse ) ) sssDiffuse = vec3( 0.0 );
 	sssDiffuseOutput = vec4( max( sssDiffuse, vec3( 0.0 ) ), 1.0 );
-	sssSurfaceOutput = vec4( vViewPosition.z, sssWidthWorld * sssWidthScale, 0.0, 1.0 );
+	sssSurfaceOutput = vec4( vViewPosition.z, sssWidthWorld * sssWidthScale, float( sssProfileSlot ), 1.0 );

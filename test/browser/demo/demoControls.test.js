@@ -107,6 +107,24 @@ describe.skipIf(!scanAvailable)('demo controls (on the head scan; needs npm run 
     expect(aware).toBeLessThan(0.7 * blind);
   });
 
+  it('the marble piece (marble=1) shows beside the head with its own profile, and leaves one profile when hidden', async () => {
+    const piece = { centre: [-2.7, 1.2, 1.0] }; // createMarblePiece's position
+    const state = (page) => page.evaluate(() => ({
+      profiles: window.demo.sss.horizontalPass.material.defines.PROFILE_COUNT, visible: window.demo.rig.scene.getObjectByName('marble piece').visible,
+    }));
+    let page = await demo(fullHead('marble=1'));
+    const shown = await frame(page, piece);
+    expect(await state(page)).toEqual({ profiles: 2, visible: true });
+    const [x, y] = shown.at.centre;
+    const i = (y * shown.width + x) * 4;
+    expect(shown.surface[i + 1], 'on the subsurface mask (a width)').toBeGreaterThan(0);
+    expect(shown.data[i], 'lit').toBeGreaterThan(0.05);
+    page = await demo(fullHead('marble=1&method=marginal'));
+    expect(await state(page)).toEqual({ profiles: 2, visible: true });
+    page = await demo(fullHead('marble=0'));
+    expect(await state(page)).toEqual({ profiles: 1, visible: false });
+  });
+
   it('the split view\'s left half equals scattering off', async () => {
     const split = await frame(await demo('split=0.5&width=3'));
     const off = await frame(await demo('sss=0&width=3'));

@@ -40,6 +40,16 @@ describe('cost model', () => {
     expect(after.total.written + after.total.read).toBeLessThan(t.total.written + t.total.read);
   });
 
+  it('taps on a texel centre fetch one texel with skipsEmptyTexels (after), two without (before); memory traffic unchanged', () => {
+    const s = 0.25;
+    const scene = { subsurface: s, box: 0.5, taps: 9, centred: 4 };
+    const before = frameTraffic(BEFORE, scene);
+    const after = frameTraffic(AFTER, scene);
+    expect(before.blurH.fetched).toBeCloseTo(16 + s * (16 + 9 * 2 * 16), 12); // the box is not confined before
+    expect(after.blurH.fetched).toBeCloseTo(0.5 * 16 + s * (16 + (9 * 2 - 4) * 16), 12);
+    expect(after.blurV.read).toBeCloseTo(frameTraffic(AFTER, { ...scene, centred: 0 }).blurV.read, 12);
+  });
+
   it('the directions not built: no surface attachment saves its 8 B clear; the compose in the blur its pass', () => {
     const scene = { subsurface: 0, box: 0.5, taps: 9 };
     const after = frameTraffic(AFTER, scene);
