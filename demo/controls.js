@@ -26,8 +26,10 @@ const TOGGLE_NAMES = { transmittance: 'transmittance', sss: 'scattering', follow
  * @param {(id: number, side: 'before'|'after') => void} hooks.onFigure
  * @param {() => void} hooks.onReset back to the first view
  * @param {HTMLElement} hooks.container where the panel goes
+ * @param {'webgl'|'webgpu'} [hooks.renderer='webgl'] the page's renderer
+ * @param {(kind: 'webgl'|'webgpu') => void} [hooks.onRenderer] switches to the other one
  */
-export function createControls(state, { onChange, onFigure, onReset, container }) {
+export function createControls(state, { onChange, onFigure, onReset, container, renderer = 'webgl', onRenderer = () => {} }) {
   const gui = new GUI({ title: 'Settings', container, injectStyles: false });
   const add = (folder, key, ...args) => {
     const schema = STATE_SCHEMA[key];
@@ -122,6 +124,9 @@ export function createControls(state, { onChange, onFigure, onReset, container }
   add(more, 'lightColor');
   add(more, 'shot');
   add(more, 'resolutionScale', 0.05);
+  // The other renderer: a reload (?renderer=webgpu), the hash kept.
+  const other = renderer === 'webgpu' ? 'webgl' : 'webgpu';
+  more.add({ switch: () => onRenderer(other) }, 'switch').name(other === 'webgpu' ? '⇄ WebGPU (reloads)' : '⇄ WebGL (reloads)');
 
   markPreset();
   return {

@@ -1,7 +1,10 @@
 // Demo page bootstrap, in named steps (start() at the bottom calls them in order): renderer, head,
 // subsurface pipeline, the before/after divider, the header's camera shots, the settings panel, URL
 // state, the timings overlay, and the test API (demo/testApi.js) that the browser tests and the
-// figure renderer drive. How the state reaches the pipeline is demo/appliers.js.
+// figure renderer drive. How the state reaches the pipeline is demo/appliers.js. With
+// ?renderer=webgpu the renderer and the pipeline are WebGPURenderer and the node
+// (demo/webgpuPipeline.js), where the browser has WebGPU; elsewhere a notice says so and the
+// page is the WebGL one.
 import { ACESFilmicToneMapping, HalfFloatType, Vector3, WebGLRenderer, WebGLRenderTarget } from 'three';
 import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
 import { EffectComposer } from 'three/addons/postprocessing/EffectComposer.js';
@@ -24,6 +27,7 @@ const params = new URLSearchParams(location.search);
 const container = document.getElementById('viewport');
 const notice = document.getElementById('notice');
 const hashNotice = document.getElementById('hash-notice');
+const rendererNotice = document.getElementById('renderer-notice');
 const progress = document.getElementById('progress');
 const kernelCanvas = document.getElementById('kernel-plot');
 const header = document.getElementById('intro');
@@ -88,6 +92,28 @@ async function loadHeadShowingProgress() {
   return head;
 }
 
+/**
+ * The WebGPU page's module when ?renderer=webgpu asks for it and the browser has WebGPU; null
+ * otherwise (the WebGL page), with a notice saying why where it was asked for.
+ */
+async function webgpuModule() {
+  if (params.get('renderer') !== 'webgpu') return null;
+  let missing;
+  try {
+    const webgpu = await import('./webgpuPipeline.js');
+    missing = await webgpu.webgpuMissing();
+    if (!missing) {
+      showNotice(rendererNotice, 'WebGPURenderer, through ', code('three-separable-sss/webgpu'),
+        ' (the divider, per-pass timings and the marble piece\'s own profile: WebGL page only).');
+      return webgpu;
+    }
+  } catch (error) {
+    missing = `its module did not load (${error.message})`;
+  }
+  showNotice(rendererNotice, `WebGPU is not available here: ${missing}. This is the WebGL page (WebGLRenderer and EffectComposer) instead.`);
+  return null;
+}
+
 /** The scene around the head, the orbit controls, the pipeline and the composer it runs in. */
 function createPipeline(renderer, head) {
   const rig = createHeadScene(head.mesh);
@@ -108,10 +134,13 @@ function createPipeline(renderer, head) {
   composer.addPass(sss); // in place of a RenderPass
   const outputPass = new OutputPass();
   composer.addPass(outputPass);
+  return { renderer, head, rig, camera, light, material, marble, controls, sss, composer, outputPass };
+}
 
-  const timings = new PassTimings(renderer, sss);
-  const hud = new TimingsHud(document.getElementById('hud'), timings);
-  return { renderer, head, rig, camera, light, material, marble, controls, sss, composer, outputPass, timings, hud };
+/** The pipeline's parts with the timings overlay. */
+function withTimings(parts) {
+  const timings = new PassTimings(parts.renderer, parts.sss);
+  return { ...parts, timings, hud: new TimingsHud(document.getElementById('hud'), timings) };
 }
 
 /** Follows the viewport's size and the pixel ratio (and the shot's framing, for the window's shape). */
@@ -242,14 +271,25 @@ function createFrame({ controls, composer, timings, hud }) {
   };
 }
 
+/** Reloads the page on the other renderer (the query's `renderer`), keeping the hash. */
+function switchRenderer(kind) {
+  const url = new URL(location.href);
+  if (kind === 'webgpu') url.searchParams.set('renderer', 'webgpu');
+  else url.searchParams.delete('renderer');
+  location.assign(url);
+}
+
 /** The page's steps in order: each named above. */
 async function start() {
   allowPlainTextHtml(); // before lil-gui writes its first title
-  const renderer = createRenderer();
+  const webgpu = await webgpuModule();
+  const renderer = webgpu ? await webgpu.createWebgpuRenderer(container) : createRenderer();
   const head = await loadHeadShowingProgress();
-  const demo = { ...createPipeline(renderer, head), ...stateFromHash(location.hash), kernelCanvas, shotButtons };
+  const parts = webgpu ? webgpu.createWebgpuPipeline(renderer, head) : createPipeline(renderer, head);
+  const demo = { ...withTimings(parts), ...stateFromHash(location.hash), kernelCanvas, shotButtons, rendererKind: webgpu ? 'webgpu' : 'webgl' };
   demo.resize = () => resize(demo);
-  demo.divider = new Divider(document.getElementById('divider'), {
+  // The node shows one image: no divider on the WebGPU page.
+  demo.divider = webgpu ? { show() {} } : new Divider(document.getElementById('divider'), {
     onInput: (fraction) => {
       demo.state.split = fraction;
       demo.apply.split();
@@ -259,7 +299,9 @@ async function start() {
   });
   demo.apply = createAppliers(demo);
   const actions = createActions(demo);
-  demo.panel = createControls(demo.state, { ...actions, container: document.getElementById('panel') });
+  demo.panel = createControls(demo.state, {
+    ...actions, container: document.getElementById('panel'), renderer: demo.rendererKind, onRenderer: switchRenderer,
+  });
   actions.applyAll();
   showProblems(demo.problems);
   listen(demo, actions);

@@ -21,16 +21,20 @@ export function rendererName(gl) {
   return String(gl.getParameter(info ? info.UNMASKED_RENDERER_WEBGL : gl.RENDERER) ?? '');
 }
 
+/** A stage timer that measures nothing (GpuStageTimer's interface, no timer queries). */
+const NO_STAGE_TIMER = Object.freeze({ available: false, begun: new Set(), poll() {}, medians: () => ({}), begin() {}, end() {} });
+
 export class PassTimings {
   /**
-   * @param {import('three').WebGLRenderer} renderer
+   * @param {import('three').WebGLRenderer | import('three/webgpu').WebGPURenderer} renderer
    * @param {import('../src/SubsurfaceScattering.js').SubsurfaceScattering} sss timed through its stageTimer
    */
   constructor(renderer, sss) {
-    this.stages = new GpuStageTimer(renderer, { window: WINDOW });
+    // WebGPURenderer (?renderer=webgpu) has no stage timer here: the frame's CPU time only.
+    this.stages = renderer.isWebGLRenderer ? new GpuStageTimer(renderer, { window: WINDOW }) : NO_STAGE_TIMER;
     sss.stageTimer = this.stages;
     this.sss = sss;
-    this.renderer = rendererName(renderer.getContext());
+    this.renderer = renderer.isWebGLRenderer ? rendererName(renderer.getContext()) : `WebGPURenderer, ${renderer.backend.isWebGPUBackend ? 'WebGPU' : 'WebGL 2'} backend`;
     this.software = isSoftwareRenderer(this.renderer);
     this.frameTimes = [];
     this.frameIntervals = [];
@@ -65,7 +69,8 @@ export class PassTimings {
     const medians = this.stages.medians();
     // Timed before and not now, or the light depth pass of a pipeline with a light (skipped while
     // the light reaches no subsurface mesh from behind, and with transmittance off).
-    const skipped = this.lastFrame === null ? [] : STAGES.filter((s) => !this.ran.has(s)
+    // Nothing is timed without a stage timer (WebGPU): no stage can be told skipped either.
+    const skipped = this.lastFrame === null || this.stages === NO_STAGE_TIMER ? [] : STAGES.filter((s) => !this.ran.has(s)
       && (s in medians || (s === 'lightDepth' && this.sss.lightDepth !== null)));
     for (const s of skipped) delete medians[s];
     return { ...medians, skipped, cpu: median(this.frameTimes), fps: 1000 / median(this.frameIntervals) };

@@ -14,6 +14,8 @@ export function testApi(demo, actions, frame) {
     rig: demo.rig, renderer, composer, head: demo.head, sss, state, panel, timings: demo.timings, hud,
     divider: demo.divider, controls: demo.controls,
     isStandIn: demo.head.isStandIn,
+    /** 'webgl', or 'webgpu' on index.html?renderer=webgpu where the browser has WebGPU. */
+    rendererKind: demo.rendererKind,
     /** The face centre, world units: where tests look for a lit face. */
     facePoint: demo.rig.facePoint,
     /** The messages shown for ignored hash values. */

@@ -32,10 +32,10 @@ import { PASS_BOOLEANS, booleanFields } from './support/booleanFields.js';
 import { FrameChecks, checkTargetSize, checkTargetLimits } from './support/frameChecks.js';
 import { warnDeprecated } from './support/deprecation.js';
 import { PIPELINE_SCHEMA, checkOption, checkPipelineOptions } from './options.js';
-import { estimatePixelsPerMm, nearestViewDepth } from './framePlan.js';
+import { estimatePixelsPerMm } from './framePlan.js';
 import { LightDepthTarget } from './1-light-depth/LightDepthTarget.js';
 import { PipelineMaterials } from './2-scene-split/PipelineMaterials.js';
-import { isShining, lightFromBehind } from './2-scene-split/transmittance.js';
+import { checkTransmittanceSwitch, isShining, lightReachesFromBehind } from './2-scene-split/transmittanceModel.js';
 import { SubsurfaceScenePass } from './2-scene-split/SubsurfaceScenePass.js';
 import { BlurStage } from './3-blur/BlurStage.js';
 import { checkProfileCount } from './3-blur/blurPlan.js';
@@ -287,12 +287,7 @@ export class SubsurfaceScattering extends Pass {
 
   /** @param {boolean} enabled */
   set transmittance(enabled) {
-    checkBoolean('SubsurfaceScattering.transmittance', enabled);
-    if (enabled && !this.lightDepth) {
-      throw new TypeError('SubsurfaceScattering.transmittance: light must be a THREE.SpotLight or THREE.DirectionalLight to turn transmittance on, ' +
-        'and this pipeline has none (pass `light` to the constructor)');
-    }
-    this._transmittance = enabled;
+    this._transmittance = checkTransmittanceSwitch('SubsurfaceScattering', enabled, this.lightDepth, 'this pipeline has none (pass `light` to the constructor)');
     this.subsurfaceMaterials.rebindAll();
   }
 
@@ -443,16 +438,7 @@ export class SubsurfaceScattering extends Pass {
     // The matrices as the scene split's render will see them (three updates them the same way).
     if (scene.matrixWorldAutoUpdate === true) scene.updateMatrixWorld();
     if (camera.parent === null && camera.matrixWorldAutoUpdate === true) camera.updateMatrixWorld();
-    const { light } = this.lightDepth;
-    light.updateMatrixWorld();
-    light.target.updateMatrixWorld();
-    let transmits = false;
-    scene.traverseVisible((object) => {
-      if (transmits || !object.isMesh) return;
-      const materials = Array.isArray(object.material) ? object.material : [object.material];
-      if (materials.some((m) => this.subsurfaceMaterials.entries.get(m)?.options.transmittance) && lightFromBehind(light, camera, nearestViewDepth(object, camera))) transmits = true;
-    });
-    return transmits;
+    return lightReachesFromBehind(this.lightDepth.light, scene, camera, (m) => this.subsurfaceMaterials.entries.get(m)?.options.transmittance);
   }
 
   /** The largest on-screen size of a profile mm over the subsurface meshes the split drew. @private */

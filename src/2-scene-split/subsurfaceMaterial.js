@@ -31,19 +31,14 @@ import { describe } from '../support/rendererSupport.js';
 import { checkThreeRevision, supportedThreeNote, threeRelease } from '../support/threeVersion.js';
 import { MATERIAL_DEFAULTS, MATERIAL_SCHEMA, PIPELINE_SCHEMA, checkOption } from '../options.js';
 import { ATTACHMENT_DEFINES, DRAW_PHASES, currentDraw } from './subsurfaceTarget.js';
+import { MATERIAL_OUTPUTS } from '../4-compose/debugViews.js';
 import {
-  TRANSMITTANCE_CHUNKS, isShining, lightUniformSlots, transmittanceSettings, transmittanceUniformSlots,
-  updateLightUniforms, writeTransmittanceUniforms,
+  LIGHT_TYPES, TRANSMITTANCE_CHUNKS, TRANSMITTED_LIGHT_DEFINES, lightUniformSlots, transmittanceSettings,
+  transmittanceUniformSlots, writeTransmittedLight,
 } from './transmittance.js';
 
-/**
- * What the diffuse attachment receives: the diffuse light, or one ingredient for a debug view.
- * @type {readonly ('diffuse'|'transmittance'|'thickness')[]}
- */
-export const MATERIAL_OUTPUTS = Object.freeze(['diffuse', 'transmittance', 'thickness']);
-
-/** The kinds of light transmittance is shaded with. */
-const LIGHT_TYPES = Object.freeze(['directional', 'spot']);
+/** What the diffuse attachment receives (src/4-compose/debugViews.js). */
+export { MATERIAL_OUTPUTS };
 
 /** What makeSubsurface(material, { ... }) accepts (`strength`: widthScale's old name). */
 const STANDALONE_OPTIONS = Object.freeze(['widthMm', 'widthScale', 'strength', 'worldUnitInMm', 'transmittance']);
@@ -55,6 +50,7 @@ const STANDALONE = Object.freeze({ name: 'makeSubsurface' });
 const declarations = assembleGlsl('makeSubsurface', parsGlsl, { 'common/finite.glsl': finiteGlsl, ...TRANSMITTANCE_CHUNKS });
 const defines = Object.freeze({
   ...ATTACHMENT_DEFINES, ...enumDefines('SSS_OUTPUT', MATERIAL_OUTPUTS, 'diffuse'), ...enumDefines('SSS_LIGHT_TYPE', LIGHT_TYPES, 'spot'),
+  ...TRANSMITTED_LIGHT_DEFINES,
 });
 
 /** material → its patch: { uniforms, bindings: Map<owner, binding>, restore() } */
@@ -160,11 +156,7 @@ function applyBinding(uniforms, binding, scene, camera) {
   uniforms.sssProfileSlot.value = binding.profileSlot;
   uniforms.sssTransmits.value = false;
   if (!transmittance || !scene || !camera) return;
-  const { light, valid } = transmittance.lightDepth;
-  uniforms.sssTransmits.value = valid && isShining(light, scene, camera);
-  uniforms.sssLightType.value = LIGHT_TYPES.indexOf(light.isSpotLight ? 'spot' : 'directional');
-  updateLightUniforms(uniforms, light, scene, camera);
-  writeTransmittanceUniforms(uniforms, transmittance, camera);
+  writeTransmittedLight(uniforms, transmittance, scene, camera);
 }
 
 /** The material options with the old name `strength` read as `widthScale` (the pipeline's `strength` is Jimenez's RGB mix). */

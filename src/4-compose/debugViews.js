@@ -20,6 +20,13 @@ export const DEBUG_VIEWS = Object.freeze(['final', 'diffuse', 'specular', 'depth
 export const DEBUG_VIEW = Object.freeze(Object.fromEntries(DEBUG_VIEWS.map((view) => [view.toUpperCase(), view])));
 
 /**
+ * What the diffuse attachment receives: the diffuse light, or one ingredient for a debug view
+ * (the WebGL material hook's and the WebGPU node material's `sssDebugOutput`, by position).
+ * @type {readonly ('diffuse'|'transmittance'|'thickness')[]}
+ */
+export const MATERIAL_OUTPUTS = Object.freeze(['diffuse', 'transmittance', 'thickness']);
+
+/**
  * What the materials must write into the diffuse attachment for `view` (one of the material
  * hook's MATERIAL_OUTPUTS): the thickness and transmittance views replace the diffuse light with
  * that ingredient; every other view needs the diffuse light itself.

@@ -2,13 +2,16 @@
 // display nodes are. Its input is a scene pass whose MRT is subsurfaceMRT() (stage 2: the
 // subsurface node materials write the diffuse light and the surface there); the node runs stage 3,
 // the two separable blur passes, before the frame (updateBefore), and is itself stage 4, the
-// compose. What the WebGL path's orchestrator does per frame (src/SubsurfaceScattering.js, steps
-// 3 to 5) happens here in the same order, with the same CPU side: the profile tables, the footprint
-// tables, the frame plan and the parameter checks are imported from src/, not copied.
+// compose. With a `light` it runs stage 1 too (./1-light-depth/LightStageNode.js): the light
+// depth pass for transmittance, and the subsurface materials' transmittance uniforms, before the
+// scene pass draws them. What the WebGL path's orchestrator does per frame
+// (src/SubsurfaceScattering.js, steps 0 to 5) happens here in the same order, with the same CPU
+// side: the profile tables, the footprint tables, the frame plan, the light's checks and the
+// parameter checks are imported from src/, not copied.
 //
 //   const scenePass = pass(scene, camera);
 //   scenePass.setMRT(subsurfaceMRT());
-//   pipeline.outputNode = subsurfaceScattering(scenePass, { worldUnitInMm: 1000 });
+//   pipeline.outputNode = subsurfaceScattering(scenePass, { worldUnitInMm: 1000, light });
 import { Node, NodeMaterial, NodeUpdateType, QuadMesh, RenderTarget, RendererUtils } from 'three/webgpu';
 import { FloatType, HalfFloatType, Vector2, Vector3 } from 'three';
 import { passTexture, texture, uniform } from 'three/tsl';
@@ -22,12 +25,15 @@ import { planBlur } from '../3-blur/blurPlan.js';
 import { isPerspective } from '../support/screenScale.js';
 import { checkBoolean, checkNumber, checkOneOf, checkOptions } from '../support/parameterChecks.js';
 import { describe } from '../support/rendererSupport.js';
+import { checkTransmittanceSwitch } from '../2-scene-split/transmittanceModel.js';
+import { LightStageNode } from './1-light-depth/LightStageNode.js';
+import { subsurfaceMeshesOf } from './2-scene-split/subsurfaceNodeMaterial.js';
 import { PIPELINE_SCHEMA, checkOption } from '../options.js';
 import { NODE_DEFAULTS, checkMethod } from './nodeOptions.js';
 import { ATTACHMENT_NAMES } from './2-scene-split/attachments.js';
 import { subsurfaceBlurNode } from './3-blur/subsurfaceBlurTsl.js';
 import { checkWebgpuThree } from './threeVersion.js';
-import { NODE_DEBUG_VIEWS, composeNode, debugViewUniform } from './4-compose/composeTsl.js';
+import { LIGHT_VIEWS, composeNode, debugViewUniform } from './4-compose/composeTsl.js';
 import { DEBUG_VIEWS } from '../4-compose/debugViews.js';
 
 const _quadMesh = /*@__PURE__*/ new QuadMesh();
@@ -54,8 +60,12 @@ export class SubsurfaceScatteringNode extends Node {
     this._uniforms = {
       kernelRadiusMm: uniform(0), strength: uniform(new Vector3(1, 1, 1)), projectionScale: uniform(new Vector2(1, 1)),
       resolution: uniform(new Vector2(1, 1)), depthFalloff: uniform(1), perspective: uniform(1), mmToWorld: uniform(1e-3),
-      marginalRangeMm: uniform(1), debugView: debugViewUniform(), debugDepthRange: uniform(1),
+      marginalRangeMm: uniform(1), debugView: debugViewUniform(), debugDepthRange: uniform(1), debugThicknessRangeMm: uniform(10),
     };
+    const lightDepthSize = checkOption(PIPELINE_SCHEMA, 'lightDepthSize', o.lightDepthSize);
+    /** Stage 1 and the materials' transmittance uniforms, before the scene pass (null without a light). */
+    this._lightStage = checkOption(PIPELINE_SCHEMA, 'light', o.light) === null ? null : new LightStageNode(this, o.light, lightDepthSize);
+    this._transmittance = this._lightStage !== null;
     this._debugView = 'final';
     this._settings = { method: checkMethod(o.method) };
     // Every option through its setter: the WebGL pipeline's schema checks it (src/options.js).
@@ -93,6 +103,22 @@ export class SubsurfaceScatteringNode extends Node {
     this._uniforms.mmToWorld.value = 1 / mm;
     this._updateDepthFalloff();
   }
+
+  /**
+   * Light through thin parts for every subsurface material this node draws (a uniform: no
+   * rebuild). true needs the constructor's `light`. @type {boolean}
+   */
+  get transmittance() { return this._transmittance; }
+
+  set transmittance(enabled) {
+    this._transmittance = checkTransmittanceSwitch('SubsurfaceScatteringNode', enabled, this.lightDepth, 'this node has none (pass `light` to subsurfaceScattering)');
+  }
+
+  /** What the last frame found wrong with the light, one message each (empty when all is well). @type {readonly string[]} */
+  get problems() { return this._lightStage?.checks.current ?? []; }
+
+  /** Stage 1: the light depth map for transmittance, or null without a light. @type {import('./1-light-depth/LightDepthNodeTarget.js').LightDepthNodeTarget|null} */
+  get lightDepth() { return this._lightStage?.lightDepth ?? null; }
 
   /** Whether the blur runs (false: the output equals the scene without scattering). @type {boolean} */
   get scattering() { return this._scattering; }
@@ -157,16 +183,18 @@ export class SubsurfaceScatteringNode extends Node {
   /**
    * One ingredient instead of the final image, as the WebGL pipeline's debugView: 'final',
    * 'diffuse' (the scattered diffuse light), 'specular' (the rest of subsurface pixels), 'mask',
-   * 'depth'. A uniform: switching rebuilds nothing.
-   * @type {'final'|'diffuse'|'specular'|'mask'|'depth'}
+   * 'depth', and with a light 'thickness' (in profile mm: physical mm × (1 − translucency) /
+   * widthMm; debugThicknessRangeMm is white) and 'transmittance' (the light through thin parts,
+   * before the blur). A uniform: switching rebuilds nothing.
+   * @type {import('../4-compose/debugViews.js').DebugView}
    */
   get debugView() { return this._debugView; }
 
   /** @param {import('../4-compose/debugViews.js').DebugView} view */
   set debugView(view) {
     checkOneOf('view', view, DEBUG_VIEWS);
-    if (!NODE_DEBUG_VIEWS.includes(view)) {
-      throw new RangeError(`debugView: view '${view}' needs transmittance, which the node does not have yet (it has ${NODE_DEBUG_VIEWS.map((v) => `'${v}'`).join(', ')})`);
+    if (LIGHT_VIEWS.includes(view) && !this.lightDepth) {
+      throw new RangeError(`debugView: view '${view}' needs the node's light (pass \`light\` to subsurfaceScattering); without one it has ${DEBUG_VIEWS.filter((v) => !LIGHT_VIEWS.includes(v)).map((v) => `'${v}'`).join(', ')}`);
     }
     this._uniforms.debugView.value = DEBUG_VIEWS.indexOf(view);
     this._debugView = view;
@@ -178,6 +206,14 @@ export class SubsurfaceScatteringNode extends Node {
   /** @param {number} depthRange */
   set debugDepthRange(depthRange) {
     this._uniforms.debugDepthRange.value = checkNumber('depthRange', depthRange, { min: 0, minExclusive: true, max: Infinity, unit: 'world units' });
+  }
+
+  /** Profile millimetres the 'thickness' view maps to white (default 10). @type {number} */
+  get debugThicknessRangeMm() { return this._uniforms.debugThicknessRangeMm.value; }
+
+  /** @param {number} mm */
+  set debugThicknessRangeMm(mm) {
+    this._uniforms.debugThicknessRangeMm.value = checkNumber('thicknessRangeMm', mm, { min: 0, minExclusive: true, max: Infinity, unit: 'mm' });
   }
 
   /** 1 / the depth threshold in world units, for the depth rule. @private */
@@ -192,13 +228,7 @@ export class SubsurfaceScatteringNode extends Node {
   }
 
   /** The frame plan (src/3-blur/blurPlan.js): the on-screen reach of the kernel, the taps, whether the blur runs. */
-  _planFrame(camera, width, height) {
-    const meshes = [];
-    this.scenePass.scene.traverseVisible((object) => {
-      if (!object.isMesh) return;
-      const materials = Array.isArray(object.material) ? object.material : [object.material];
-      if (materials.some((m) => m?.isSubsurfaceNodeMaterial)) meshes.push(object);
-    });
+  _planFrame(meshes, camera, width, height) {
     const pixelsPerMm = estimatePixelsPerMm(meshes, camera, { width, height },
       (m) => (m?.isSubsurfaceNodeMaterial ? m.widthMm / this.worldUnitInMm : undefined));
     // Stage 3 plans itself from its own settings, as on the WebGL path (src/3-blur/blurPlan.js).
@@ -238,9 +268,9 @@ export class SubsurfaceScatteringNode extends Node {
     const { scenePass } = this;
     const camera = scenePass.camera;
     const { scene } = scenePass;
-    if (scene.fog && !this._warnedFog) {
+    if (scene.fogNode && !this._warnedFog) {
       this._warnedFog = true; // said once, not silently wrong
-      console.warn('SubsurfaceScatteringNode: scene.fog fogs the colour output only; the diffuse light of subsurface materials is not fogged on this renderer yet (the WebGL pipeline fades it)');
+      console.warn('SubsurfaceScatteringNode: a custom scene.fogNode fogs the colour output only; the diffuse light of subsurface materials fades with scene.fog (Fog, FogExp2), not with a fog node');
     }
     if (scene.matrixWorldAutoUpdate === true) scene.updateMatrixWorld();
     if (camera.parent === null && camera.matrixWorldAutoUpdate === true) camera.updateMatrixWorld();
@@ -248,7 +278,7 @@ export class SubsurfaceScatteringNode extends Node {
     renderer.getDrawingBufferSize(_size);
     scenePass.setSize(_size.width, _size.height);
     const { width, height } = scenePass.renderTarget;
-    this.plan = this._planFrame(camera, width, height);
+    this.plan = this._planFrame(subsurfaceMeshesOf(scene).meshes, camera, width, height);
     const diffuse = scenePass.getTexture(ATTACHMENT_NAMES.DIFFUSE);
     if (!this.plan.blur) {
       this._scatteredNode.value = diffuse; // the compose reads the unblurred light: the output equals no SSS
@@ -280,7 +310,16 @@ export class SubsurfaceScatteringNode extends Node {
     RendererUtils.restoreRendererState(renderer, _rendererState);
   }
 
-  setup() {
+  /** @param {import('three/webgpu').NodeBuilder} builder */
+  setup(builder) {
+    // three runs a node's inputs' updateBefore first (in the order they were built), so the
+    // scene pass would draw before this node's updateBefore: the light stage is built ahead of it.
+    this._lightStage?.build(builder);
+    // WebGPU multisamples no 32-bit float format (RGBA32Float): an MSAA scene pass keeps the
+    // surface in half float there (depth steps of 1/2048 of the distance; WebGL 2 keeps 32 bits).
+    if (builder.renderer.backend.isWebGPUBackend && this.scenePass.renderTarget.samples > 0) {
+      this.scenePass.getTexture(ATTACHMENT_NAMES.SURFACE).type = HalfFloatType;
+    }
     return composeNode({
       colour: this.scenePass.getTextureNode(ATTACHMENT_NAMES.COLOR),
       unscattered: this.scenePass.getTextureNode(ATTACHMENT_NAMES.DIFFUSE),
@@ -288,11 +327,16 @@ export class SubsurfaceScatteringNode extends Node {
       surface: this.scenePass.getTextureNode(ATTACHMENT_NAMES.SURFACE),
       view: this._uniforms.debugView,
       depthRange: this._uniforms.debugDepthRange,
+      thicknessRangeMm: this._uniforms.debugThicknessRangeMm,
     });
   }
 
-  /** Frees the node's targets, tables and materials (the scene pass is the caller's). */
+  /**
+   * Frees the node's targets, tables and materials (the scene pass is the caller's); the
+   * subsurface materials it drew lose their transmittance (they are rebuilt without it).
+   */
   dispose() {
+    this._lightStage?.dispose();
     this._horizontalTarget.dispose();
     this._scatteredTarget.dispose();
     this.footprintTable.dispose();

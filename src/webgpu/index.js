@@ -6,7 +6,10 @@
 //   const skin = subsurfaceMaterial(new THREE.MeshStandardMaterial({ map }), { widthMm: 1 });
 //   const scenePass = pass(scene, camera);
 //   scenePass.setMRT(subsurfaceMRT());
-//   pipeline.outputNode = subsurfaceScattering(scenePass, { worldUnitInMm: 1000 });
+//   pipeline.outputNode = subsurfaceScattering(scenePass, { worldUnitInMm: 1000, light });
+
+// Stage 1: linear depth seen from the light, for transmittance (the node makes one for its `light`).
+export { LightDepthNodeTarget } from './1-light-depth/LightDepthNodeTarget.js';
 
 // Stage 2: the diffuse/specular split (node materials) and the MRT it writes into.
 export {

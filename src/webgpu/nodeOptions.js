@@ -17,6 +17,9 @@ export const NODE_DEFAULTS = Object.freeze({
   followSurface: PIPELINE_DEFAULTS.followSurface,
   depthThresholdMm: PIPELINE_DEFAULTS.depthThresholdMm,
   foreshortening: PIPELINE_DEFAULTS.foreshortening,
+  /** The light shining through thin parts (transmittance); null: none. */
+  light: /** @type {import('three').SpotLight|import('three').DirectionalLight|null} */ (PIPELINE_DEFAULTS.light),
+  lightDepthSize: /** @type {number} */ (PIPELINE_DEFAULTS.lightDepthSize),
 });
 
 /** The WebGL pipeline's methods are accepted by name; the node has 'footprint' only (the others validate the WebGL path). */

@@ -124,7 +124,13 @@ const SCENES = {
     });
     return base;
   },
-  /** A slab `thicknessMm` thick, lit from behind, seen from the front (transmittance). */
+  /**
+   * A slab `thicknessMm` thick, lit from behind, seen from the front (transmittance). With
+   * `occluder`, a sheet between the light and the slab's upper right quarter (as the camera sees
+   * it) adds `occluderGapMm` to the thickness the light crosses there: a picture that is not
+   * symmetric, so a flipped light depth map shows. `fog`: [near, far] of a THREE.Fog; `spot`: a
+   * SpotLight in place of the DirectionalLight (below).
+   */
   backlit(o) {
     const scene = new THREE.Scene();
     const camera = camera16x9(o.aspect, o.fovY, o.distance);
@@ -132,8 +138,16 @@ const SCENES = {
     const thickness = o.thicknessMm / o.worldUnitInMm;
     const slab = new THREE.Mesh(new THREE.BoxGeometry(o.slabSize, o.slabSize, thickness), material);
     scene.add(slab);
-    const light = new THREE.DirectionalLight(0xffffff, o.intensity);
-    light.position.set(0, 0, -10);
+    if (o.fog) scene.fog = new THREE.Fog(0x3366cc, ...o.fog); // [near, far], world units
+    if (o.occluder) {
+      const sheet = new THREE.Mesh(new THREE.PlaneGeometry(o.slabSize / 2, o.slabSize / 2), new THREE.MeshStandardMaterial({ side: THREE.DoubleSide }));
+      sheet.position.set(o.slabSize / 4, o.slabSize / 4, -thickness / 2 - o.occluderGapMm / o.worldUnitInMm);
+      scene.add(sheet);
+    }
+    // With `spot`, a spot light off the axis (decay 2, its intensity scaled to give the directional
+    // light's irradiance at the slab's middle) whose cone edge crosses the view.
+    const light = o.spot ? new THREE.SpotLight(0xffffff, o.intensity * 113, 0, Math.PI / 12, 0.5, 2) : new THREE.DirectionalLight(0xffffff, o.intensity);
+    light.position.set(o.spot ? 3 : 0, o.spot ? 2 : 0, -10);
     light.shadow.camera.left = light.shadow.camera.bottom = -o.slabSize;
     light.shadow.camera.right = light.shadow.camera.top = o.slabSize;
     light.shadow.camera.near = 1;
@@ -144,7 +158,7 @@ const SCENES = {
 };
 
 const DEFAULTS = {
-  width: 192, height: 108, fovY: 20, distance: 10, slabSize: 20, intensity: Math.PI,
+  width: 192, height: 108, fovY: 20, distance: 10, slabSize: 20, intensity: Math.PI, occluderGapMm: 1,
   worldUnitInMm: 10, widthMm: 1, pipeline: 'sss', type: 'half', reads: ['output'],
 };
 
@@ -234,6 +248,62 @@ async function flat({ width = 256, height = 256, sss = {}, ...scene }) {
   return result;
 }
 
+/**
+ * The light depth tests' cards (test/browser/1-light-depth/cardDepths.js has what the map holds):
+ * a DirectionalLight 10 units up +z looking down (light-space x and y are world x and y, over
+ * [−2, 2]²), a back wall at 10 from it and 2 × 2 cards at 7 in three quarters, each with its own
+ * shape: upper left cut by its map's alpha, upper right by its alphaMap (offset half a texture),
+ * lower left by a clipping plane; lower right glass, a transmissive sheet, a hidden material and
+ * points, none of which is a surface to the light. `mapped`: the upper left card.
+ */
+function lightDepthCards() {
+  const scene = new THREE.Scene();
+  const light = new THREE.DirectionalLight(0xffffff, 1);
+  light.position.set(0, 0, 10); // looking down −z: light-space x and y are world x and y
+  Object.assign(light.shadow.camera, { left: -2, right: 2, bottom: -2, top: 2, near: 1, far: 20 });
+  scene.add(light, light.target);
+  const texel = (rgba) => {
+    const t = new THREE.DataTexture(new Uint8Array(rgba), 2, 1);
+    t.magFilter = t.minFilter = THREE.NearestFilter;
+    t.wrapS = THREE.RepeatWrapping;
+    t.needsUpdate = true;
+    return t;
+  };
+  const card = (material, x, y, z) => {
+    const mesh = new THREE.Mesh(new THREE.PlaneGeometry(2, 2), material);
+    mesh.position.set(x, y, z);
+    scene.add(mesh);
+    return mesh;
+  };
+  card(new THREE.MeshStandardMaterial(), 0, 0, 0).scale.set(2, 2, 1); // the back wall, 10 from the light
+  // Upper left: alpha from the map, left texel cut away.
+  const mapped = card(new THREE.MeshStandardMaterial({ map: texel([255, 255, 255, 0, 255, 255, 255, 255]), alphaTest: 0.5 }), -1, 1, 3);
+  // Upper right: alpha from alphaMap (its green for WebGLRenderer, its red for WebGPURenderer's node
+  // materials: both alike here), shifted half a texture: the left half reads the cut texel.
+  const alphaMap = texel([255, 255, 255, 255, 0, 0, 0, 255]);
+  alphaMap.offset.set(0.5, 0);
+  card(new THREE.MeshStandardMaterial({ alphaMap, alphaTest: 0.5 }), 1, 1, 3);
+  // Lower left: a clipping plane keeps x ≥ −1.
+  card(new THREE.MeshStandardMaterial({ clippingPlanes: [new THREE.Plane(new THREE.Vector3(1, 0, 0), 1)] }), -1, -1, 3);
+  // Lower right: glass, a transmissive sheet, a hidden material and points: none is a surface here.
+  card(new THREE.MeshStandardMaterial({ transparent: true, opacity: 0.3 }), 1, -1, 3);
+  card(new THREE.MeshPhysicalMaterial({ transmission: 1 }), 1, -1, 4);
+  card(new THREE.MeshStandardMaterial({ visible: false }), 1, -1, 5);
+  const points = new THREE.Points(new THREE.PlaneGeometry(2, 2, 32, 32), new THREE.PointsMaterial({ size: 40, sizeAttenuation: false }));
+  points.position.set(1, -1, 6);
+  scene.add(points);
+  return { scene, light, mapped };
+}
+
+/** The cards' depths (cardDepths.js's names) from a 64 × 64 light map, rows bottom-up, `stride` floats a texel. */
+function cardDepths(data, stride) {
+  const depthAt = (x, y) => data[(Math.floor(((y + 2) / 4) * 64) * 64 + Math.floor(((x + 2) / 4) * 64)) * stride];
+  return Object.fromEntries([
+    ['mapCut', -1.5, 1.5], ['mapKept', -0.5, 1.5], ['alphaMapCut', 0.5, 1.5], ['alphaMapKept', 1.5, 1.5],
+    ['clipped', -1.5, -1.5], ['unclipped', -0.5, -1.5], ['glass', 0.5, -0.5], ['glassToo', 1.5, -1.5],
+  ].map(([name, x, y]) => [name, depthAt(x, y)]));
+}
+
 /** Builds one of SCENES with the defaults above (aspect from width and height). */
 function buildScene(name, options = {}) {
   const o = { ...DEFAULTS, ...options };
@@ -242,5 +312,6 @@ function buildScene(name, options = {}) {
 
 window.lab = {
   THREE, SSS, EffectComposer, RenderPass, ShaderPass, OutputPass, createRenderer, createComposer, read, dataTexture, run, buildScene, flat, DEFAULTS,
+  lightDepthCards, cardDepths,
 };
 window.testReady = true;

@@ -6,7 +6,7 @@ import * as THREE from 'three/webgpu';
 import { pass } from 'three/tsl';
 import * as NODE from '/src/webgpu/index.js';
 import { flatScene } from './flatScene.js';
-import { HEAD_WORLD_UNIT_IN_MM } from '/demo/headScene.js';
+import { HEAD_WORLD_UNIT_IN_MM, setLightDirection } from '/demo/headScene.js';
 import { headRig } from './headRig.js';
 import './lab.js'; // window.lab: the WebGL pipeline's side of the comparisons
 
@@ -49,9 +49,9 @@ async function readFloats(renderer, target, index = 0) {
   return rows;
 }
 
-/** The subsurface pass and node over `scene` seen by `camera`, in a RenderPipeline. */
-function subsurfacePipeline(renderer, scene, camera, { type = THREE.HalfFloatType, sss = {} } = {}) {
-  const scenePass = pass(scene, camera, { type });
+/** The subsurface pass (MSAA with `samples`) and node over `scene` seen by `camera`, in a RenderPipeline. */
+function subsurfacePipeline(renderer, scene, camera, { type = THREE.HalfFloatType, samples = 0, sss = {} } = {}) {
+  const scenePass = pass(scene, camera, { type, samples });
   scenePass.setMRT(NODE.subsurfaceMRT());
   const node = NODE.subsurfaceScattering(scenePass, sss);
   const pipeline = new THREE.RenderPipeline(renderer);
@@ -88,16 +88,20 @@ const toBytes = (floats) => Uint8Array.from(floats, (v) => Math.round(Math.min(M
  * bottom-up: the WebGL pipeline in an EffectComposer with OutputPass, and the node in a
  * RenderPipeline on `backend`; with `sss: false` each renderer's plain frame instead (the baseline
  * difference between the two renderers). Shadows off: the renderers filter shadow maps differently.
- * `fovDeg` narrows the demo's 25° view onto the face (more pixels per mm: more visible scattering).
+ * `fovDeg` narrows the demo's 25° view onto the face (more pixels per mm: more visible scattering);
+ * `light`: [azimuth, elevation] in degrees (demo/headScene.js's setLightDirection), and the light
+ * sends transmittance on both; `view`: both pipelines' debug view.
  */
-async function head({ width = 320, height = 180, backend = 'webgpu', sss = true, fovDeg }) {
+async function head({ width = 320, height = 180, backend = 'webgpu', sss = true, fovDeg, light, view = 'final' }) {
   const L = window.lab;
   const glRig = await headRig(width / height, fovDeg);
+  if (light) setLightDirection(glRig, ...light);
   const gl = L.createRenderer(width, height);
   gl.toneMapping = L.THREE.ACESFilmicToneMapping;
   const composer = L.createComposer(gl);
   if (sss) {
-    const pipeline = new L.SSS.SubsurfaceScattering({ scene: glRig.scene, camera: glRig.camera, worldUnitInMm: HEAD_WORLD_UNIT_IN_MM, light: null });
+    const pipeline = new L.SSS.SubsurfaceScattering({ scene: glRig.scene, camera: glRig.camera, worldUnitInMm: HEAD_WORLD_UNIT_IN_MM, light: light ? glRig.light : null });
+    pipeline.debugView = view;
     pipeline.makeSubsurface(glRig.head.material, { widthMm: 1 });
     composer.addPass(pipeline);
   } else {
@@ -111,13 +115,15 @@ async function head({ width = 320, height = 180, backend = 'webgpu', sss = true,
   gl.forceContextLoss();
 
   const rig = await headRig(width / height, fovDeg);
+  if (light) setLightDirection(rig, ...light);
   const renderer = await createRenderer(width, height, { backend });
   renderer.toneMapping = THREE.ACESFilmicToneMapping;
   const target = new THREE.RenderTarget(width, height, { type: THREE.HalfFloatType });
   let disposeAll;
   if (sss) {
     rig.head.material = NODE.subsurfaceMaterial(rig.head.material, { widthMm: 1 });
-    const built = subsurfacePipeline(renderer, rig.scene, rig.camera, { sss: { worldUnitInMm: HEAD_WORLD_UNIT_IN_MM } });
+    const built = subsurfacePipeline(renderer, rig.scene, rig.camera, { sss: { worldUnitInMm: HEAD_WORLD_UNIT_IN_MM, light: light ? rig.light : null } });
+    built.node.debugView = view;
     built.pipeline.outputColorTransform = true;
     renderer.setRenderTarget(target);
     built.pipeline.render();
@@ -232,5 +238,92 @@ async function debugViews({ backend = 'webgpu', width = 96, height = 54 }) {
   return views;
 }
 
-window.wgpu = { THREE, NODE, pass, createRenderer, readFloats, subsurfacePipeline, flat, head, disposal, plainDraw, debugViews };
+/**
+ * One of the WebGL lab's scenes (lab.js's SCENES, its defaults: 10 mm per unit) through the node,
+ * its subsurface materials as node materials, the scene pass multisampled with `samples`, and the
+ * scene's light for transmittance where `transmittance`: the diffuse attachment (float, before
+ * the blur), whether the light depth pass ran, and the node's output in each of `views` (linear,
+ * float). `lightZ` moves the light (+10: in front of the back-lit slab).
+ */
+async function labScene({
+  backend = 'webgpu', width = 96, height = 54, scene: name = 'backlit', transmittance = true, samples = 0, lightZ, material = {}, views = [], ...scene
+}) {
+  const renderer = await sharedRenderer(backend, width, height);
+  const built = window.lab.buildScene(name, { width, height, ...scene });
+  if (lightZ !== undefined) built.light.position.z = lightZ;
+  const skins = new Map(built.subsurface.map((plain) => [plain, NODE.subsurfaceMaterial(plain, { widthMm: 1, ...material })]));
+  built.scene.traverse((object) => { if (skins.has(object.material)) object.material = skins.get(object.material); });
+  const { scenePass, node, pipeline } = subsurfacePipeline(renderer, built.scene, built.camera, {
+    type: THREE.FloatType, samples, sss: { worldUnitInMm: window.lab.DEFAULTS.worldUnitInMm, light: transmittance ? built.light : null },
+  });
+  const target = new THREE.RenderTarget(width, height, { type: THREE.FloatType });
+  const render = () => {
+    renderer.setRenderTarget(target);
+    pipeline.render();
+    renderer.setRenderTarget(null);
+  };
+  render();
+  const result = { width, height, diffuse: await readFloats(renderer, scenePass.renderTarget, 'diffuse'), lightDepthRendered: node.lightDepth?.valid };
+  for (const view of views) {
+    Object.assign(node, { debugView: view, debugThicknessRangeMm: 10 });
+    render();
+    result[view] = await readFloats(renderer, target);
+  }
+  node.dispose();
+  pipeline.dispose();
+  scenePass.dispose();
+  target.dispose();
+  for (const [plain, skin] of skins) {
+    skin.dispose();
+    plain.dispose();
+  }
+  return result;
+}
+
+/**
+ * The WebGL light depth test's cards (lab.js's lightDepthCards; the clipped one in a
+ * ClippingGroup) into the node's light depth map, 64 × 64: the depths at lab.cardDepths' points, and the shaped depth materials made, left after
+ * one card's material is disposed, and after the map is.
+ */
+async function lightDepthCards({ backend = 'webgpu' }) {
+  const renderer = await sharedRenderer(backend, 16, 16);
+  const { scene, light, mapped } = window.lab.lightDepthCards();
+  // WebGPURenderer clips by ClippingGroup, not by material.clippingPlanes: the clipped card goes
+  // into one with its material's planes (the same cut, each renderer's way).
+  const clipped = scene.children.find((object) => object.material?.clippingPlanes?.length);
+  const group = new THREE.ClippingGroup();
+  group.clippingPlanes = clipped.material.clippingPlanes;
+  scene.add(group);
+  group.add(clipped);
+  const target = new NODE.LightDepthNodeTarget(light, { size: 64 });
+  target.render(renderer, scene);
+  const data = await renderer.readRenderTargetPixelsAsync(target.renderTarget, 0, 0, 64, 64);
+  // Rows bottom-up, as the WebGL lab reads them (the WebGPU backend's are top-down).
+  const rows = renderer.backend.isWebGPUBackend ? Float32Array.from({ length: 64 * 64 }, (_, i) => data[(63 - Math.floor(i / 64)) * 64 + (i % 64)]) : data;
+  const variants = target._shaped.size;
+  mapped.material.dispose();
+  const afterOneDisposed = target._shaped.size;
+  target.dispose();
+  return { samples: window.lab.cardDepths(rows, 1), variants, afterOneDisposed, left: target._shaped.size };
+}
+
+/** One of the WebGL lab's scenes drawn plainly by WebGPURenderer on `backend` (a scene pass, MSAA with `samples`), linear float RGBA. */
+async function labScenePlain({ backend = 'webgpu', width = 96, height = 54, scene: name = 'mixed', samples = 0, ...scene }) {
+  const renderer = await sharedRenderer(backend, width, height);
+  const built = window.lab.buildScene(name, { width, height, ...scene });
+  const scenePass = pass(built.scene, built.camera, { type: THREE.FloatType, samples });
+  const pipeline = new THREE.RenderPipeline(renderer, scenePass);
+  pipeline.outputColorTransform = false;
+  const target = new THREE.RenderTarget(width, height, { type: THREE.FloatType });
+  renderer.setRenderTarget(target);
+  pipeline.render();
+  renderer.setRenderTarget(null);
+  const image = await readFloats(renderer, target);
+  pipeline.dispose();
+  scenePass.dispose();
+  target.dispose();
+  return image;
+}
+
+window.wgpu = { THREE, NODE, pass, createRenderer, readFloats, subsurfacePipeline, flat, head, disposal, plainDraw, debugViews, labScene, labScenePlain, lightDepthCards };
 window.testReady = true;

@@ -17,10 +17,11 @@
 		}
 		// Wrap lighting on the back side: saturate(0.3 + dot(-N, L)) (REFERENCE §5), for light that
 		// comes from behind the point as the camera sees it (view space: +z points to the camera).
+		// The constants are src/2-scene-split/transmittanceModel.js's TRANSMITTED_LIGHT, as defines.
 		// Light from the camera's side reaches what the camera sees through its lit, visible
 		// neighbourhood, which the blur already spreads: counted again it made a bright band
 		// along a front light's terminator.
-		float sssWrap = saturate( 0.3 + dot( - nonPerturbedNormal, sssToLight ) ) * smoothstep( 0.0, 0.25, - sssToLight.z );
+		float sssWrap = saturate( SSS_WRAP_OFFSET + dot( - nonPerturbedNormal, sssToLight ) ) * smoothstep( 0.0, SSS_FROM_BEHIND_RANGE, - sssToLight.z );
 		// Most of a front-lit surface gets none (sssWrap is 0 wherever the light is on the camera's
 		// side of the point): the map and the profile are read only where some light comes through.
 		float sssWeight = sssAttenuation * sssWrap;

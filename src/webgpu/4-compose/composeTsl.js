@@ -3,13 +3,14 @@
 // shaders/4-compose/compose.frag.glsl: pixels that are not subsurface keep exactly what their
 // material wrote; the result is never NaN or Inf. The debug views (src/4-compose/debugViews.js's,
 // by name) are a uniform here, so switching one rebuilds nothing; the thickness and transmittance
-// views need transmittance, which the node does not have yet.
+// views read what the materials wrote into the diffuse attachment instead of the light (the node
+// tells them: src/webgpu/2-scene-split/subsurfaceNodeMaterial.js).
 import { Fn, If, float, ivec2, screenCoordinate, select, textureLoad, uniform, vec3, vec4 } from 'three/tsl';
 import { DEBUG_VIEW, DEBUG_VIEWS } from '../../4-compose/debugViews.js';
 import { finite3 } from '../3-blur/surfaceTsl.js';
 
-/** The views the node can show (all but those needing transmittance). */
-export const NODE_DEBUG_VIEWS = Object.freeze(DEBUG_VIEWS.filter((v) => v !== DEBUG_VIEW.THICKNESS && v !== DEBUG_VIEW.TRANSMITTANCE));
+/** The views that need the node's light (transmittance). */
+export const LIGHT_VIEWS = Object.freeze([DEBUG_VIEW.THICKNESS, DEBUG_VIEW.TRANSMITTANCE]);
 
 /** The uniform the compose reads: a view's position in DEBUG_VIEWS, compared by name below. */
 export const debugViewUniform = () => uniform(DEBUG_VIEWS.indexOf(DEBUG_VIEW.FINAL), 'int');
@@ -25,12 +26,14 @@ const is = (u, view) => u.equal(DEBUG_VIEWS.indexOf(view));
  * @param {object} o.surface r: linear view depth (world units)
  * @param {object} o.view debugViewUniform()
  * @param {object} o.depthRange world units mapped to white in the depth view (a float uniform)
+ * @param {object} o.thicknessRangeMm profile mm mapped to white in the thickness view (a float uniform)
  */
-export function composeNode({ colour, unscattered, scattered, surface, view, depthRange }) {
+export function composeNode({ colour, unscattered, scattered, surface, view, depthRange, thicknessRangeMm }) {
   return Fn(() => {
     const pixel = ivec2(screenCoordinate.xy).toVar();
     const light = textureLoad(colour, pixel).toVar();
-    const subsurface = textureLoad(unscattered, pixel).a.greaterThan(0).toVar();
+    const before = textureLoad(unscattered, pixel).toVar();
+    const subsurface = before.a.greaterThan(0).toVar();
     const diffuse = select(subsurface, textureLoad(scattered, pixel).rgb, vec3(0)).toVar();
     const result = light.rgb.add(diffuse).toVar();
     If(is(view, DEBUG_VIEW.DIFFUSE), () => { result.assign(diffuse); });
@@ -40,6 +43,8 @@ export function composeNode({ colour, unscattered, scattered, surface, view, dep
       const viewDepth = textureLoad(surface, pixel).r;
       result.assign(vec3(select(viewDepth.greaterThan(0), viewDepth.div(depthRange).oneMinus(), float(0))));
     });
+    If(is(view, DEBUG_VIEW.THICKNESS), () => { result.assign(select(subsurface, vec3(before.r.div(thicknessRangeMm)), vec3(0))); });
+    If(is(view, DEBUG_VIEW.TRANSMITTANCE), () => { result.assign(select(subsurface, before.rgb, vec3(0))); });
     // Never hand NaN or Inf to tone mapping.
     return vec4(select(finite3(result), result, vec3(0)), light.a);
   })();

@@ -5,6 +5,7 @@ import { mat4 } from 'gl-matrix';
 import { openPage, runLab } from '../../harness/page.js';
 import { at } from '../../harness/images.js';
 import { transmittedFractionOracle, thicknessFromLightDepth } from '../../oracle/transmittance.js';
+import { CARD_DEPTHS } from './cardDepths.js';
 
 let page;
 beforeAll(async () => { page = await openPage('/test/pages/lab.html'); });
@@ -126,43 +127,10 @@ describe('transmittance', () => {
 describe('light depth of what the light sees', () => {
   it('keeps cut-outs (map or alphaMap alpha test, with the texture\'s offset) and clipping planes, leaves out glass, hidden materials and points, and puts every material back', async () => {
     const r = await page.evaluate(async () => {
-      const { THREE, SSS, createRenderer, read } = window.lab;
+      const { SSS, createRenderer, read, lightDepthCards, cardDepths } = window.lab;
       const renderer = createRenderer(16, 16);
       renderer.localClippingEnabled = true;
-      const scene = new THREE.Scene();
-      const light = new THREE.DirectionalLight(0xffffff, 1);
-      light.position.set(0, 0, 10); // looking down −z: light-space x and y are world x and y
-      Object.assign(light.shadow.camera, { left: -2, right: 2, bottom: -2, top: 2, near: 1, far: 20 });
-      scene.add(light, light.target);
-      const texel = (rgba) => {
-        const t = new THREE.DataTexture(new Uint8Array(rgba), 2, 1);
-        t.magFilter = t.minFilter = THREE.NearestFilter;
-        t.wrapS = THREE.RepeatWrapping;
-        t.needsUpdate = true;
-        return t;
-      };
-      const card = (material, x, y, z) => {
-        const mesh = new THREE.Mesh(new THREE.PlaneGeometry(2, 2), material);
-        mesh.position.set(x, y, z);
-        scene.add(mesh);
-        return mesh;
-      };
-      card(new THREE.MeshStandardMaterial(), 0, 0, 0).scale.set(2, 2, 1); // the back wall, 10 from the light
-      // Upper left: alpha from the map, left texel cut away.
-      const mapped = card(new THREE.MeshStandardMaterial({ map: texel([255, 255, 255, 0, 255, 255, 255, 255]), alphaTest: 0.5 }), -1, 1, 3);
-      // Upper right: alpha from alphaMap's green, shifted half a texture: the left half reads the cut texel.
-      const alphaMap = texel([0, 255, 0, 255, 0, 0, 0, 255]);
-      alphaMap.offset.set(0.5, 0);
-      card(new THREE.MeshStandardMaterial({ alphaMap, alphaTest: 0.5 }), 1, 1, 3);
-      // Lower left: a clipping plane keeps x ≥ −1.
-      card(new THREE.MeshStandardMaterial({ clippingPlanes: [new THREE.Plane(new THREE.Vector3(1, 0, 0), 1)] }), -1, -1, 3);
-      // Lower right: glass, a transmissive sheet, a hidden material and points: none is a surface here.
-      card(new THREE.MeshStandardMaterial({ transparent: true, opacity: 0.3 }), 1, -1, 3);
-      card(new THREE.MeshPhysicalMaterial({ transmission: 1 }), 1, -1, 4);
-      card(new THREE.MeshStandardMaterial({ visible: false }), 1, -1, 5);
-      const points = new THREE.Points(new THREE.PlaneGeometry(2, 2, 32, 32), new THREE.PointsMaterial({ size: 40, sizeAttenuation: false }));
-      points.position.set(1, -1, 6);
-      scene.add(points);
+      const { scene, light, mapped } = lightDepthCards();
       const before = [];
       scene.traverse((o) => { if (o.material) before.push(o.material); });
 
@@ -171,12 +139,7 @@ describe('light depth of what the light sees', () => {
       const data = await read(renderer, target.renderTarget);
       const after = [];
       scene.traverse((o) => { if (o.material) after.push(o.material); });
-      const depthAt = (x, y) => data[(Math.floor(((y + 2) / 4) * 64) * 64 + Math.floor(((x + 2) / 4) * 64)) * 4];
-      const samples = {};
-      for (const [name, x, y] of [
-        ['mapCut', -1.5, 1.5], ['mapKept', -0.5, 1.5], ['alphaMapCut', 0.5, 1.5], ['alphaMapKept', 1.5, 1.5],
-        ['clipped', -1.5, -1.5], ['unclipped', -0.5, -1.5], ['glass', 0.5, -0.5], ['glassToo', 1.5, -1.5],
-      ]) samples[name] = depthAt(x, y);
+      const samples = cardDepths(data, 4);
       const variants = target._shaped.size;
       mapped.material.dispose();
       const afterOneDisposed = target._shaped.size;
@@ -184,16 +147,8 @@ describe('light depth of what the light sees', () => {
       renderer.dispose();
       return { samples, same: before.length === after.length && before.every((m, i) => m === after[i]), variants, afterOneDisposed, left: target._shaped.size };
     });
-    const s = r.samples;
-    // Distances along the light's axis: the wall at 10, the cards at 7 (version 0.1 drew every card whole: 7 everywhere above, 4 below right).
-    expect(s.mapCut).toBeCloseTo(10, 4);
-    expect(s.mapKept).toBeCloseTo(7, 4);
-    expect(s.alphaMapCut).toBeCloseTo(10, 4);
-    expect(s.alphaMapKept).toBeCloseTo(7, 4);
-    expect(s.clipped).toBeCloseTo(10, 4);
-    expect(s.unclipped).toBeCloseTo(7, 4);
-    expect(s.glass).toBeCloseTo(10, 4);
-    expect(s.glassToo).toBeCloseTo(10, 4);
+    // Distances along the light's axis (version 0.1 drew every card whole: 7 everywhere above, 4 below right).
+    for (const [name, depth] of Object.entries(CARD_DEPTHS)) expect(r.samples[name], name).toBeCloseTo(depth, 4);
     expect(r.same).toBe(true);
     expect(r.variants).toBe(3); // one depth material per cut-out or clipped material, the rest share one
     expect(r.afterOneDisposed).toBe(2);

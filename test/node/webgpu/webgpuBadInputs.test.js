@@ -17,6 +17,7 @@ const NODE_LINES = [
   /^worldUnitInMm: /, /^profile/, /^method: /, /^samples: /, /^strength: /, /^followSurface: /, /^depthThresholdMm: /,
   /^foreshortening: /, /^sss\.worldUnitInMm = /, /^samples = /, /^method = /, /^profile = /, /^strength = /, /^followSurface = /,
   /^depthThresholdMm = /, /^foreshortening = /, /^debugView = /, /^debugDepthRange = /, /^widthMm: /,
+  /^light: /, /^lightDepthSize: /, /^transmittance = /, /^transmittance: /, /^translucency: /, /^shrinkMm: /, /^debugThicknessRangeMm = /,
 ];
 const NODE_OPTIONS = Object.keys(NODE.NODE_DEFAULTS);
 
@@ -77,16 +78,20 @@ const NODE_CASES = [
   ['subsurfaceScattering(scene)', (t) => t.NODE.subsurfaceScattering(t.scene), 'TypeError', /scenePass must be a PassNode .*got Scene/],
   ['options: null', (t) => t.NODE.subsurfaceScattering(pass(t.scene, t.camera), null), 'TypeError', /subsurfaceScattering options must be an object, got null/],
   ['a misspelt option', (t) => t.NODE.subsurfaceScattering(pass(t.scene, t.camera), { sampels: 17 }), 'TypeError', /unknown option "sampels" \(accepted: worldUnitInMm, profile, method, samples, /],
-  ["a WebGL pipeline's option", (t) => t.NODE.subsurfaceScattering(pass(t.scene, t.camera), { lightDepthSize: 1024 }), 'TypeError', /unknown option "lightDepthSize"/],
+  ["a WebGL pipeline's option", (t) => t.NODE.subsurfaceScattering(pass(t.scene, t.camera), { multisampling: 4 }), 'TypeError', /unknown option "multisampling"/],
   ["method: 'marginal' (WebGL only)", (t) => t.make({ method: 'marginal' }), 'RangeError', /method 'marginal' is not available on the node \(only 'footprint'/],
   ["method = 'dense'", (t) => { t.sss.method = 'dense'; }, 'RangeError', /method 'dense' is not available on the node/],
-  ["debugView = 'thickness' (needs transmittance)", (t) => { t.sss.debugView = 'thickness'; }, 'RangeError', /view 'thickness' needs transmittance, which the node does not have yet/],
+  ["debugView = 'thickness' without a light", (t) => { t.make({ light: null }).debugView = 'thickness'; }, 'RangeError', /view 'thickness' needs the node's light .*without one it has 'final', 'diffuse', 'specular', 'depth', 'mask'$/],
+  ["debugView = 'thickness' with a light: taken", (t) => { t.make({ light: t.light }).debugView = 'thickness'; }, 'ok'],
   ["scattering = 'no'", (t) => { t.sss.scattering = 'no'; }, 'TypeError', /SubsurfaceScatteringNode\.scattering must be a boolean \(true or false\), got "no"/],
   ['subsurfaceMaterial(null)', (t) => t.NODE.subsurfaceMaterial(null), 'TypeError', /subsurfaceMaterial: material must be a THREE\.MeshStandardMaterial or MeshPhysicalMaterial \(or its node version\), got null/],
   ['subsurfaceMaterial(a MeshBasicMaterial)', (t) => t.NODE.subsurfaceMaterial(new t.THREE.MeshBasicMaterial()), 'TypeError', /material must be .*got MeshBasicMaterial/],
   ['subsurfaceMaterial(material, null)', (t) => t.NODE.subsurfaceMaterial(t.material, null), 'TypeError', /subsurfaceMaterial options must be an object, got null/],
-  ['subsurfaceMaterial(material, { widthmm })', (t) => t.NODE.subsurfaceMaterial(t.material, { widthmm: 2 }), 'TypeError', /subsurfaceMaterial options: unknown option "widthmm" \(accepted: widthMm\)/],
+  ['subsurfaceMaterial(material, { widthmm })', (t) => t.NODE.subsurfaceMaterial(t.material, { widthmm: 2 }), 'TypeError', /subsurfaceMaterial options: unknown option "widthmm" \(accepted: widthMm, transmittance, translucency, shrinkMm\)/],
   ["material.widthMm = 'wide'", (t) => { t.NODE.subsurfaceMaterial(t.material).widthMm = 'wide'; }, 'TypeError', /widthMm must be a finite number, got "wide"/],
+  ['material.translucency = 1', (t) => { t.NODE.subsurfaceMaterial(t.material).translucency = 1; }, 'RangeError', /translucency must be in \[0, 1\), got 1/],
+  ['material.shrinkMm = -1', (t) => { t.NODE.subsurfaceMaterial(t.material).shrinkMm = -1; }, 'RangeError', /shrinkMm must be in \[0, 1000\] mm, got -1/],
+  ["material.transmittance = 'yes'", (t) => { t.NODE.subsurfaceMaterial(t.material).transmittance = 'yes'; }, 'TypeError', /transmittance must be a boolean \(true or false\), got "yes"/],
 ];
 
 describe("the node's own bad inputs", () => {

@@ -1,0 +1,75 @@
+// Stage 1 for WebGPURenderer: linear depth seen from the light, for transmittance, as the WebGL
+// path's LightDepthTarget (src/1-light-depth/LightDepthTarget.js) stores it: distance along the
+// light's view axis in world units, single-channel float, 0 = no surface. The camera and what the
+// light sees (and which materials keep their cut-out and clipping) are LightDepthView's, shared
+// with it; the depth materials are node materials, drawn in place of each object's through a
+// render object function (as three's shadow maps do).
+import { MeshBasicNodeMaterial, NodeMaterial, RenderTarget, RendererUtils } from 'three/webgpu';
+import { DoubleSide, FloatType, NearestFilter, RedFormat } from 'three';
+import { positionView, vec4 } from 'three/tsl';
+import { LightDepthView, boundsNoVolume } from '../../1-light-depth/LightDepthView.js';
+
+let _state;
+
+/** Distance along the light's view axis: linear, unlike the depth buffer (Jimenez et al. 2010). */
+const LIGHT_DEPTH = /*@__PURE__*/ vec4(positionView.z.negate(), 0, 0, 1);
+
+/** A depth material's settings: both sides (thin open shells still record their nearest surface), no fog (it would blend the depths). */
+const asDepthMaterial = (material, name) => Object.assign(material, { name, side: DoubleSide, fog: false });
+
+/** Renders the scene from a SpotLight or DirectionalLight into linear light depth (see the file's header). */
+export class LightDepthNodeTarget extends LightDepthView {
+  /**
+   * @param {import('three').SpotLight | import('three').DirectionalLight} light
+   * @param {{ size?: number, near?: number, far?: number }} [options] see LightDepthView
+   */
+  constructor(light, options = {}) {
+    super('LightDepthNodeTarget', light, options);
+    this.material = asDepthMaterial(new NodeMaterial(), 'LightDepthNodeMaterial');
+    this.material.fragmentNode = LIGHT_DEPTH;
+    this.renderTarget = new RenderTarget(1, 1, {
+      type: FloatType, format: RedFormat, minFilter: NearestFilter, magFilter: NearestFilter, depthBuffer: true,
+    });
+    this.renderTarget.texture.name = 'LightDepthNodeTarget.texture';
+    this.setSize(this.size);
+  }
+
+  /**
+   * Renders `scene` from the light; the renderer's state and the scene's background, environment
+   * and override are put back after (also on an exception).
+   * @param {import('three/webgpu').Renderer} renderer
+   * @param {import('three').Scene} scene
+   */
+  render(renderer, scene) {
+    this.updateCamera();
+    _state = RendererUtils.resetRendererAndSceneState(renderer, scene, _state);
+    try {
+      renderer.setRenderObjectFunction((object, s, camera, geometry, own, group, lightsNode, clippingContext, passId) => {
+        const depthMaterial = boundsNoVolume(object) ? null : this.depthMaterialFor(own);
+        if (depthMaterial) renderer.renderObject(object, s, camera, geometry, depthMaterial, group, lightsNode, clippingContext, passId);
+      });
+      renderer.setRenderTarget(this.renderTarget);
+      renderer.setClearColor(0x000000, 0); // 0 = no surface
+      renderer.render(scene, this.camera);
+      this.valid = true;
+    } finally {
+      RendererUtils.restoreRendererAndSceneState(renderer, scene, _state);
+    }
+  }
+
+  /**
+   * A depth material of its own for a cut-out or clipped material (LightDepthView._shapedMaterial
+   * gives it the map, alphaMap, alphaTest and clipping planes): a basic node material, whose alpha
+   * test three builds from them, with the light depth as its output.
+   */
+  createShapedMaterial(material) {
+    const shaped = asDepthMaterial(new MeshBasicNodeMaterial(), `LightDepthNodeMaterial(${material.name || material.type})`);
+    shaped.outputNode = LIGHT_DEPTH;
+    return shaped;
+  }
+
+  /** The opacity the alpha test compares with the map's alpha. */
+  updateShapedMaterial(shaped, material) {
+    shaped.opacity = material.opacity;
+  }
+}

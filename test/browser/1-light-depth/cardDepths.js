@@ -1,0 +1,6 @@
+// What the light depth map holds on test/pages/lab.js's lightDepthCards, by lab.cardDepths' names:
+// distances along the light's axis, the wall at 10, the cards at 7 where they are surfaces to the
+// light. Both light depth targets are held to it (the WebGL path's and the WebGPU node's).
+export const CARD_DEPTHS = Object.freeze({
+  mapCut: 10, mapKept: 7, alphaMapCut: 10, alphaMapKept: 7, clipped: 10, unclipped: 7, glass: 10, glassToo: 10,
+});
