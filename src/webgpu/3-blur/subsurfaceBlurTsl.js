@@ -53,12 +53,19 @@ export function subsurfaceBlurNode(o) {
       const offset0 = float(at0.sub(along(pixel, axis)));
       const offset1 = float(at1.sub(along(pixel, axis)));
       const tap0 = tapWeight(withAlong(pixel, axis, at0), centreDepth.add(slope.mul(offset0)), centre);
-      const tap1 = tapWeight(withAlong(pixel, axis, at1), centreDepth.add(slope.mul(offset1)), centre);
       const weight0 = fraction.oneMinus().mul(tap0.weight).toVar();
-      const weight1 = fraction.mul(tap1.weight).toVar();
+      // A tap on a texel centre weighs its second texel 0: not fetched (subsurfaceBlur.frag.glsl's
+      // SSS_SKIP_EMPTY_TEXELS; the same sums).
+      const weight1 = float(0).toVar();
+      const colour1 = vec3(0).toVar();
+      If(fraction.greaterThan(0), () => {
+        const tap1 = tapWeight(withAlong(pixel, axis, at1), centreDepth.add(slope.mul(offset1)), centre);
+        weight1.assign(fraction.mul(tap1.weight));
+        colour1.assign(tap1.colour);
+      });
       const kept = weight0.add(weight1);
       If(kept.greaterThan(0), () => {
-        sum.addAssign(weight.mul(tap0.colour.mul(weight0).add(tap1.colour.mul(weight1))));
+        sum.addAssign(weight.mul(tap0.colour.mul(weight0).add(colour1.mul(weight1))));
         weightSum.addAssign(weight.mul(kept));
       });
     });
