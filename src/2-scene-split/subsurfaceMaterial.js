@@ -32,6 +32,7 @@ import { checkThreeRevision, supportedThreeNote, threeRelease } from '../support
 import { MATERIAL_DEFAULTS, MATERIAL_SCHEMA, PIPELINE_SCHEMA, checkOption } from '../options.js';
 import { ATTACHMENT_DEFINES, DRAW_PHASES, currentDraw } from './subsurfaceTarget.js';
 import { MATERIAL_OUTPUTS } from '../4-compose/debugViews.js';
+import { LightDepthTarget } from '../1-light-depth/LightDepthTarget.js';
 import {
   LIGHT_TYPES, TRANSMITTANCE_CHUNKS, TRANSMITTED_LIGHT_DEFINES, lightUniformSlots, transmittanceSettings,
   transmittanceUniformSlots, writeTransmittedLight,
@@ -241,7 +242,7 @@ export function makeSubsurface(material, options = {}, owner = STANDALONE) {
       checkOption(MATERIAL_SCHEMA, 'widthMm', o.widthMm);
       checkOption(MATERIAL_SCHEMA, 'widthScale', o.widthScale);
       checkOption(PIPELINE_SCHEMA, 'worldUnitInMm', o.worldUnitInMm);
-      this.transmittance = o.transmittance ? transmittanceSettings({ ...o.transmittance, worldUnitInMm: o.worldUnitInMm, widthMm: o.widthMm }) : null;
+      this.transmittance = o.transmittance ? transmittanceSettings({ ...o.transmittance, worldUnitInMm: o.worldUnitInMm, widthMm: o.widthMm }, LightDepthTarget) : null;
       this.options = o;
       if (latest(state.bindings) === this) applyBinding(state.uniforms, this); // the uniforms show the latest settings
     },

@@ -8,6 +8,7 @@ import transmittanceGlsl from '../../shaders/2-scene-split/transmittance.glsl?ra
 import profileLookupGlsl from '../../shaders/common/profileLookup.glsl?raw';
 import { assembleGlsl } from '../support/glsl.js';
 import { transmittanceSettings, transmittanceUniformSlots, writeTransmittanceUniforms } from './transmittanceModel.js';
+import { LightDepthTarget } from '../1-light-depth/LightDepthTarget.js';
 
 export {
   TRANSMITTED_LIGHT, TRANSMITTED_LIGHT_DEFINES, LIGHT_TYPES, transmittanceUniformSlots, transmittanceSettings, writeTransmittanceUniforms,
@@ -41,12 +42,12 @@ export const transmittanceChunk = assembleGlsl('transmittanceChunk', '#include "
  * @returns {{ uniforms: object, update(camera: import('three').Camera): void, set(options: object): void }}
  */
 export function createTransmittanceUniforms(options, uniforms = transmittanceUniformSlots()) {
-  let settings = transmittanceSettings(options);
+  let settings = transmittanceSettings(options, LightDepthTarget);
   writeTransmittanceUniforms(uniforms, settings);
   return {
     uniforms,
     set(next) {
-      settings = transmittanceSettings({ ...settings, ...Object.fromEntries(Object.entries(next).filter(([, v]) => v !== undefined)) });
+      settings = transmittanceSettings({ ...settings, ...Object.fromEntries(Object.entries(next).filter(([, v]) => v !== undefined)) }, LightDepthTarget);
       writeTransmittanceUniforms(uniforms, settings);
     },
     update(camera) {

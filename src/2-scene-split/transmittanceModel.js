@@ -60,14 +60,17 @@ export function checkTransmittanceSwitch(who, enabled, lightDepth, noLight) {
 
 /**
  * Checked transmittance settings (see createTransmittanceUniforms' options), frozen.
+ * @param {object} options
+ * @param {Function} [Accepted] the light depth maps the caller's renderer can read: LightDepthTarget
+ *   (WebGLRenderer) or LightDepthNodeTarget (WebGPURenderer); both are LightDepthViews
  * @returns {Readonly<{ lightDepth: LightDepthView, lookup: ProfileLookup, worldUnitInMm: number, widthMm: number, translucency: number, shrinkMm: number }>}
  */
-export function transmittanceSettings(options) {
+export function transmittanceSettings(options, Accepted = LightDepthView) {
   if (options === null || typeof options !== 'object') throw new TypeError(`transmittance options must be an object { lightDepth, lookup, worldUnitInMm, ... }, got ${describe(options)}`);
   const {
     lightDepth, lookup, worldUnitInMm, widthMm = MATERIAL_DEFAULTS.widthMm, translucency = MATERIAL_DEFAULTS.translucency, shrinkMm = MATERIAL_DEFAULTS.shrinkMm,
   } = options;
-  if (!(lightDepth instanceof LightDepthView)) throw new TypeError(`transmittance: lightDepth must be a LightDepthTarget, got ${describe(lightDepth)}`);
+  if (!(lightDepth instanceof Accepted)) throw new TypeError(`transmittance: lightDepth must be a ${Accepted.name}, got ${describe(lightDepth)}`);
   if (!(lookup instanceof ProfileLookup)) throw new TypeError(`transmittance: lookup must be a ProfileLookup, got ${describe(lookup)}`);
   checkOption(PIPELINE_SCHEMA, 'worldUnitInMm', worldUnitInMm);
   for (const [name, value] of Object.entries({ widthMm, translucency, shrinkMm })) checkOption(MATERIAL_SCHEMA, name, value);

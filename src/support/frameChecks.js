@@ -157,7 +157,7 @@ export class FrameChecks {
     while (root.parent) root = root.parent;
     if (root !== scene) {
       this.problem('lightRemoved', 'the light is not in the scene (removed, or never added): there is no transmittance until it is added (with its target), ' +
-        'or call setTransmittance(false)');
+        'or set transmittance to false');
       return false;
     }
     const frustum = lightDepth.frustumProblem();

@@ -213,7 +213,7 @@ export class SubsurfaceScatteringNode extends Node {
 
   /** @param {number} mm */
   set debugThicknessRangeMm(mm) {
-    this._uniforms.debugThicknessRangeMm.value = checkNumber('thicknessRangeMm', mm, { min: 0, minExclusive: true, max: Infinity, unit: 'mm' });
+    this._uniforms.debugThicknessRangeMm.value = checkNumber('debugThicknessRangeMm', mm, { min: 0, minExclusive: true, max: Infinity, unit: 'mm' });
   }
 
   /** 1 / the depth threshold in world units, for the depth rule. @private */

@@ -101,7 +101,7 @@ export const CALL_CASES = [
   ["foreshortening = 'no'", (t) => { t.sss.foreshortening = 'no'; }, 'TypeError', /^foreshortening must be a boolean \(true or false\), got "no"$/],
   ["debugView = 'masks'", (t) => { t.sss.debugView = 'masks'; }, 'RangeError', /view must be one of 'final', 'diffuse', .*got "masks"/],
   ['debugDepthRange = 0', (t) => { t.sss.debugDepthRange = 0; }, 'RangeError', /depthRange must be in \(0, ∞\) world units, got 0/],
-  ["debugThicknessRangeMm = 'x'", (t) => { t.sss.debugThicknessRangeMm = 'x'; }, 'TypeError', /thicknessRangeMm must be a finite number, got "x"/],
+  ["debugThicknessRangeMm = 'x'", (t) => { t.sss.debugThicknessRangeMm = 'x'; }, 'TypeError', /[tT]hicknessRangeMm must be a finite number, got "x"/],
   ["setDebugView('masks') (deprecated)", (t) => t.sss.setDebugView('masks'), 'RangeError', /view must be one of 'final', 'diffuse', .*got "masks"/],
   ["setDebugView('depth', null)", (t) => t.sss.setDebugView('depth', null), 'TypeError', /setDebugView options must be an object, got null/],
   ['split = NaN', (t) => { t.sss.split = NaN; }, 'TypeError', /split must be a finite number, got NaN/],

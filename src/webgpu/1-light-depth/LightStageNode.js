@@ -72,7 +72,7 @@ export class LightStageNode extends Node {
       u.sssTransmits.value = false;
       if (!owner.transmittance || !material.transmittance) continue;
       const { widthMm, translucency, shrinkMm } = material;
-      writeTransmittedLight(u, transmittanceSettings({ lightDepth, lookup, worldUnitInMm: owner.worldUnitInMm, widthMm, translucency, shrinkMm }), scene, camera);
+      writeTransmittedLight(u, transmittanceSettings({ lightDepth, lookup, worldUnitInMm: owner.worldUnitInMm, widthMm, translucency, shrinkMm }, LightDepthNodeTarget), scene, camera);
     }
   }
 

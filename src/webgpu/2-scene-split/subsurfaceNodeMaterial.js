@@ -114,7 +114,9 @@ function withSubsurface(Base) {
       let diffuse = this._subsurfaceLit ? lightsNode.totalDiffuseNode : vec3(0);
       // The light through thin parts joins the diffuse light before the blur (transmittedLight.glsl).
       const t = this.transmittanceNodes && this._subsurfaceLit
-        ? transmittedLight(this.transmittanceNodes, { position: positionView, normal: negateOnBackSide(normalViewGeometry), albedo: diffuseColor.rgb })
+        // nonPerturbedNormal as three's GLSL has it: flat shading's derivative normal already faces
+        // the camera (normal_fragment_begin does not flip it); a smooth one flips on back faces.
+        ? transmittedLight(this.transmittanceNodes, { position: positionView, normal: builder.isFlatShading() ? normalViewGeometry : negateOnBackSide(normalViewGeometry), albedo: diffuseColor.rgb })
         : null;
       let lit = t ? diffuse.add(t.transmitted) : diffuse;
       // The clear coat dims everything under it, the diffuse light included (PhysicalLightingModel.finish).
@@ -149,6 +151,11 @@ function withSubsurface(Base) {
 
     copy(source) {
       super.copy(source);
+      // NodeMaterial.copy assigns the source's objects: a copy gets uniforms of its own.
+      this.subsurfaceWidth = uniform(source.subsurfaceWidth?.value ?? MATERIAL_DEFAULTS.widthMm);
+      this._subsurface = { ...(source._subsurface ?? this._subsurface) };
+      this.transmittanceNodes = null;
+      this.needsUpdate = true;
       if (source.isSubsurfaceNodeMaterial) {
         for (const name of MATERIAL_OPTIONS) this[name] = source[name];
       }

@@ -112,4 +112,15 @@ describe("the node's own bad inputs", () => {
       t.dispose();
     }
   });
+
+  it('a clone of a subsurface node material has uniforms of its own: changing it leaves the original as it was', () => {
+    const a = NODE.subsurfaceMaterial(new THREE.MeshStandardMaterial(), { widthMm: 2, translucency: 0.3 });
+    const b = a.clone();
+    expect([b.isSubsurfaceNodeMaterial, b.widthMm, b.translucency]).toEqual([true, 2, 0.3]);
+    expect(b.subsurfaceWidth).not.toBe(a.subsurfaceWidth);
+    expect(b.transmittanceNodes).toBeNull();
+    Object.assign(b, { widthMm: 5, translucency: 0.6 });
+    expect([a.widthMm, a.translucency]).toEqual([2, 0.3]);
+  });
 });
+
