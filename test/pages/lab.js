@@ -106,22 +106,30 @@ const SCENES = {
    * Two half slabs side by side at the same depth, meeting at x = 0 (the centre column's edge):
    * `sides` = [left, right], each { albedo, pattern (optional), material: makeSubsurface options }
    * or null (left out); `seamShiftWorld` moves both (half a pixel: the seam through a pixel's middle).
+   * With `band` (a side too), the halves cover the upper half of the view only and the band the
+   * lower half, the whole width, meeting them at y = 0 (a row's edge); it is bound between them
+   * (left, band, right: slots 0, 1, 2 when all three profiles differ).
    */
   sideBySide(o) {
     const base = SCENES.slab({ ...o, pattern: 'uniform' });
     base.scene.remove(base.scene.children[0]);
     base.subsurface = [];
     base.subsurfaceOptions = [];
-    o.sides.forEach((side, i) => {
+    const height = o.band ? o.slabSize / 2 : o.slabSize;
+    const add = (side, width, x, y) => {
       if (!side) return;
       const map = PATTERNS[side.pattern ?? 'uniform'](o);
       const material = new THREE.MeshStandardMaterial({ color: new THREE.Color().setScalar(side.albedo), roughness: 1, metalness: 0, map });
-      const half = new THREE.Mesh(new THREE.PlaneGeometry(o.slabSize / 2, o.slabSize), material);
-      half.position.x = (i === 0 ? -1 : 1) * (o.slabSize / 4) + (o.seamShiftWorld ?? 0);
-      base.scene.add(half);
+      const piece = new THREE.Mesh(new THREE.PlaneGeometry(width, height), material);
+      piece.position.set(x, y, 0);
+      base.scene.add(piece);
       base.subsurface.push(material);
       base.subsurfaceOptions.push(side.material ?? {});
-    });
+    };
+    const y = o.band ? o.slabSize / 4 : 0;
+    add(o.sides[0], o.slabSize / 2, -o.slabSize / 4 + (o.seamShiftWorld ?? 0), y);
+    add(o.band, o.slabSize, 0, -o.slabSize / 4);
+    add(o.sides[1], o.slabSize / 2, o.slabSize / 4 + (o.seamShiftWorld ?? 0), y);
     return base;
   },
   /**

@@ -90,6 +90,25 @@ describe('skin and marble in one pipeline', () => {
     expect(worstIn(two, both.output, alone.output, seam + 1, seam + 8)).toBeLessThan(2e-4);
   });
 
+  it('with MSAA and three profiles, a pixel slots 0 and 2 share sends no light into slot 1 (their mean slot)', async () => {
+    // Skin (slot 0) and marble (slot 2) over the upper half, their seam through a column's middle;
+    // a dark milk band (slot 1) over the lower half. The shared column's mean slot is 1, milk's;
+    // only its spread (the slot's square in the surface's alpha) tells it from milk. The band's
+    // rows next to it must stay as the band alone gives them.
+    const MILK = { albedo: 0.05, pattern: 'uniform', material: { profile: 'milk' } };
+    const shared = { samples: 4, seamShiftWorld: 6.27 / 192 / 2, band: MILK };
+    const flat = (side) => ({ ...side, pattern: 'uniform' });
+    const three = await frame([flat(SKIN), flat(MARBLE)], shared);
+    const bandAlone = await frame([null, null], shared);
+    expect([three.profileCount, three.glError]).toEqual([3, 0]);
+    // The band's top rows (y < 54 is the lower half in read-back rows), the columns around the seam.
+    let worst = 0;
+    for (let y = 44; y < 54; y++) for (let x = seam - 3; x < seam + 4; x++) {
+      for (let c = 0; c < 3; c++) worst = Math.max(worst, Math.abs(three.output[at(three.width, x, y) + c] - bandAlone.output[at(three.width, x, y) + c]));
+    }
+    expect(worst).toBeLessThan(2e-4);
+  });
+
   it("shines through with the material's own profile (its transmittance table)", async () => {
     // A 3 mm slab lit from behind: the transmitted light is T(thickness) of the material's profile.
     // A 64-texel light depth map is plenty for a flat slab.
