@@ -39,7 +39,11 @@ export class LightStageNode extends Node {
     this.updateBeforeType = NodeUpdateType.FRAME;
   }
 
-  /** @param {import('three/webgpu').NodeFrame} frame */
+  /**
+   * Stage 1 and the materials' uniforms, once a frame before the scene pass (updateBeforeType FRAME).
+   * @param {import('three/webgpu').NodeFrame} frame
+   * @returns {undefined}
+   */
   updateBefore({ renderer }) {
     const { scene, camera } = this.owner.scenePass;
     // The matrices as the scene pass's render will see them (three updates them the same way).

@@ -45,8 +45,9 @@ function sceneFogFactor(builder, material) {
  */
 function withSubsurface(Base) {
   return class extends Base {
-    constructor(parameters) {
-      super(parameters);
+    // A rest parameter: TypeScript's mixin pattern (its declarations stay one constructor type).
+    constructor(...args) {
+      super(...args);
       /** Scales the profile: 1 is its physical size (the width uniform the surface output writes). */
       this.subsurfaceWidth = uniform(MATERIAL_DEFAULTS.widthMm);
       this._subsurface = { transmittance: MATERIAL_DEFAULTS.transmittance, translucency: MATERIAL_DEFAULTS.translucency, shrinkMm: MATERIAL_DEFAULTS.shrinkMm };
