@@ -150,7 +150,7 @@ export class SubsurfaceScattering extends Pass {
       lightDepth: this.transmittance ? this.lightDepth : null,
       profile: this.profile,
       lookupOf: (profile) => this._lookupOf(profile),
-      checkProfiles: (profiles) => checkProfileCount(this.method, profileSlots(profiles, this.profile).profiles.length),
+      checkProfiles: (profiles) => this._checkProfiles(this.method, profiles, this.profile, 'makeSubsurface'),
       debugOutput: materialOutputOf(this._debug.view),
     }));
     /** What the last frame ran: { samples, kernelPixels, blur, passes } (see src/3-blur/blurPlan.js). */
@@ -237,7 +237,7 @@ export class SubsurfaceScattering extends Pass {
   set profile(profile) {
     const next = getProfile(checkOption(PIPELINE_SCHEMA, 'profile', profile));
     if (next === this.profile) return;
-    checkProfileCount(this.method, profileSlots(this.subsurfaceMaterials.profiles(next), next, 'SubsurfaceScattering.profile').profiles.length);
+    this._checkProfiles(this.method, this.subsurfaceMaterials.profiles(next), next, 'SubsurfaceScattering.profile');
     this.profileLookup.setProfile(next); // tens of ms: only on a change
     this.subsurfaceMaterials.rebindAll(); // a material naming this profile or the last one changes tables
     this._useProfiles();
@@ -506,6 +506,15 @@ export class SubsurfaceScattering extends Pass {
   }
 
   /**
+   * Refuses materials' `profiles` that `method` cannot blur in one frame, or more than MAX_PROFILES
+   * (the error names `caller`); `fallback`: the pipeline's profile.
+   * @private
+   */
+  _checkProfiles(method, profiles, fallback, caller) {
+    checkProfileCount(method, profileSlots(profiles, fallback, caller).profiles.length);
+  }
+
+  /**
    * Points the blur, the multi-target and each material at the slots of the profiles the materials
    * use now (src/profiles/profileSlots.js): one profile, the frame as without this feature.
    * @private
@@ -594,7 +603,7 @@ export class SubsurfaceScattering extends Pass {
     if (profile !== undefined) {
       const next = getProfile(checkOption(PIPELINE_SCHEMA, 'profile', profile));
       const method = kernel.method === undefined ? this.method : checkOption(PIPELINE_SCHEMA, 'method', kernel.method);
-      checkProfileCount(method, profileSlots(this.subsurfaceMaterials.profiles(next), next, 'setKernel').profiles.length);
+      this._checkProfiles(method, this.subsurfaceMaterials.profiles(next), next, 'setKernel');
     }
     this.blur.setKernel(kernel);
     if (profile !== undefined) this.profile = profile;

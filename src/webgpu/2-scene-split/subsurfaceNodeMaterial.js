@@ -152,9 +152,9 @@ function withSubsurface(Base) {
 
     copy(source) {
       super.copy(source);
-      // NodeMaterial.copy assigns the source's objects: a copy gets uniforms of its own.
-      this.subsurfaceWidth = uniform(source.subsurfaceWidth?.value ?? MATERIAL_DEFAULTS.widthMm);
-      this._subsurface = { ...(source._subsurface ?? this._subsurface) };
+      // NodeMaterial.copy assigns the source's objects: a copy gets uniforms of its own (the
+      // options below set their values).
+      this.subsurfaceWidth = uniform(MATERIAL_DEFAULTS.widthMm);
       this.transmittanceNodes = null;
       this.needsUpdate = true;
       if (source.isSubsurfaceNodeMaterial) {
