@@ -129,7 +129,7 @@ export class SubsurfaceScattering extends Pass {
     this.scenePass = new SubsurfaceScenePass(o.scene, o.camera, { type: o.type, owner: this });
     /** @internal */
     this.blur = new BlurStage({
-      type: o.type, profileLookup: this.profileLookup, method: o.method, samples: o.samples, strength: o.strength, falloff: o.falloff,
+      type: o.type, profileLookup: this.profileLookup, method: o.method, samples: o.samples, strength: o.strength, falloff: o.falloff, kernelGroups: o.kernelGroups,
       surface: {
         camera: o.camera, surfaceTexture: this.scenePass.surfaceTexture, diffuseTexture: this.scenePass.diffuseTexture,
         followSurface: o.followSurface, depthThresholdWorld: o.depthThresholdMm / o.worldUnitInMm, foreshortening: o.foreshortening,
@@ -225,6 +225,16 @@ export class SubsurfaceScattering extends Pass {
 
   /** @param {number|'auto'} samples */
   set samples(samples) { this.blur.setKernel({ samples: checkOption(PIPELINE_SCHEMA, 'samples', samples) }); }
+
+  /**
+   * The isotropic blur's groups (method 'footprint'): 'auto', or 1..3 (1: one kernel, exact along
+   * the screen axes only). This frame's count: `plan.groups`.
+   * @type {number|'auto'}
+   */
+  get kernelGroups() { return this.blur.kernelGroups; }
+
+  /** @param {number|'auto'} groups */
+  set kernelGroups(groups) { this.blur.kernelGroups = checkOption(PIPELINE_SCHEMA, 'kernelGroups', groups); }
 
   /**
    * The diffusion profile of the materials that name none (a preset's name or a profile object;

@@ -7,6 +7,7 @@
 import { FloatType, HalfFloatType } from 'three';
 import { getProfile } from './profiles/presets.js';
 import { MAX_PROFILES } from './profiles/profileSlots.js';
+import { MAX_KERNEL_GROUPS, checkKernelGroups } from './3-blur/kernelGroups.js';
 import { describe } from './support/rendererSupport.js';
 import {
   checkBoolean, checkInteger, checkNumber, checkOddInteger, checkOneOf, checkOptions, checkRgb,
@@ -169,6 +170,11 @@ export const PIPELINE_SCHEMA = Object.freeze({
     default: 'auto', type: "number|'auto'",
     doc: "taps per direction, odd, 3..63 (a budget for 'footprint'); 'auto': as few as the on-screen scale needs",
     check: checkSamples,
+  },
+  kernelGroups: {
+    default: 'auto', type: "number|'auto'",
+    doc: `method 'footprint': the profile's Gaussians blurred in groups, 1..${MAX_KERNEL_GROUPS}, so the blur is the same in every direction (1: one kernel, exact along the screen axes only); 'auto': the fewest within the isotropy budget at the on-screen scale`,
+    check: (value, name) => checkKernelGroups(value, name),
   },
   strength: {
     default: undefined, type: 'number[]', doc: 'RGB, 0..1: mix with no scattering (the reference model)',

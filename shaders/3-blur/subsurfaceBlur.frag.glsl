@@ -4,7 +4,9 @@
 // FORESHORTEN (0 or 1: grazing-angle correction, below), SSS_COVERAGE (0 or 1: the inputs were
 // resolved from MSAA, shaders/common/surfaceSample.glsl), SSS_MAX_SLOPE, SSS_MIN_KERNEL_PIXELS,
 // SSS_ENERGY_LEFT (the numbers of src/3-blur/samplingModel.js), PROFILE_COUNT (the profiles in the
-// frame; above 1 each pixel blurs with its own, shaders/common/surfaceSample.glsl) and KERNEL_MODE:
+// frame; above 1 each pixel blurs with its own, shaders/common/surfaceSample.glsl), SSS_GROUPS (1:
+// one kernel; 3: the isotropic blur's groups, 'footprint' only, shaders/3-blur/kernelGroups.glsl:
+// the horizontal pass then writes the groups, the vertical one sums them) and KERNEL_MODE:
 //   KERNEL_MODE_TAPS: fixed weights and offsets (computeKernel's reference or marginal kernel);
 //   KERNEL_MODE_FOOTPRINT: per pixel, footprints of whole pixels from the FootprintTable, weighted
 //     by the profile marginal's exact energy from the ProfileLookup.
@@ -12,7 +14,7 @@
 // The sampling model this implements is stated once, numbered, in docs/ARCHITECTURE.md ("Stage 3:
 // the sampling model"); the float64 oracle in test/oracle/convolution.js implements the same.
 
-uniform sampler2D tDiffuse;  // the multi-target's diffuse light (or the horizontal pass's output); alpha: the mask
+uniform sampler2D tDiffuse;  // the multi-target's diffuse light (or the horizontal pass's output, SSS_GROUPS 1); alpha: the mask
 uniform sampler2D tSurface;  // the multi-target's surface: r linear view depth (world units), g world units per profile mm
 uniform vec4 kernel[ SAMPLES ]; // (weight R, G, B, offset in kernel mm), centre tap first
 uniform int tapCount;           // KERNEL_MODE_TAPS: the kernel's taps (<= SAMPLES; 'auto' sets it per frame)
@@ -28,6 +30,22 @@ uniform bool perspective;       // false for an orthographic camera: the step do
 #include "common/surfaceSample.glsl"
 #include "common/surfaceSlope.glsl"
 #include "common/surfaceTap.glsl"
+
+#if SSS_GROUPS > 1
+	#if KERNEL_MODE != KERNEL_MODE_FOOTPRINT
+		#error "SSS_GROUPS > 1 needs KERNEL_MODE_FOOTPRINT"
+	#endif
+	#include "3-blur/kernelGroups.glsl"
+	#if PROFILE_COUNT > 1
+		#define SSS_GROUP_SLOT sssSlot
+	#else
+		#define SSS_GROUP_SLOT 0
+	#endif
+#endif
+#if SSS_GROUPS == 1 || AXIS == 1
+	layout( location = 0 ) out highp vec4 sssFragColor; // GLSL 3 (the horizontal groups write two integer attachments)
+	#define gl_FragColor sssFragColor
+#endif
 
 #if KERNEL_MODE == KERNEL_MODE_TAPS && PROFILE_COUNT > 1
 	// Several profiles: row p holds slot p's kernel, laid out as `kernel` (SubsurfaceBlurPass.setKernel).
@@ -62,32 +80,155 @@ uniform bool perspective;       // false for an orthographic camera: the step do
 
 varying vec2 vUv;
 
-// Adds one tap at `offsetPx` along the axis with kernel weight `weight` to the sums. Texels are
-// compared with the depth the centre's plane predicts there: centreDepth + slope * (texel offset).
-void addTap( const in float offsetPx, const in vec3 weight, const in ivec2 pixel, const in float centreDepth, const in float slope, const in vec3 centre, inout vec3 sum, inout vec3 weightSum ) {
+// The two texels around a tap at `offsetPx` along the axis (centres at integer + 0.5, clamped) and
+// the second one's share; false when the tap is off screen.
+bool sssTapTexels( const in float offsetPx, const in ivec2 pixel, out ivec2 texel0, out ivec2 texel1, out float fraction ) {
 	float position = float( pixel[ AXIS ] ) + 0.5 + offsetPx;
-	if ( position < 0.0 || position >= resolution[ AXIS ] ) return;
-	// The two texels around the tap along the axis (centres at integer + 0.5, clamped).
+	texel0 = texel1 = pixel;
+	fraction = 0.0;
+	if ( position < 0.0 || position >= resolution[ AXIS ] ) return false;
 	float u = position - 0.5;
 	float below = floor( u );
-	float fraction = u - below;
+	fraction = u - below;
 	int last = int( resolution[ AXIS ] ) - 1;
-	ivec2 texel0 = pixel;
-	ivec2 texel1 = pixel;
 	texel0[ AXIS ] = clamp( int( below ), 0, last );
 	texel1[ AXIS ] = clamp( int( below ) + 1, 0, last );
+	return true;
+}
+
+// The light of a tap at `offsetPx`: its two texels' light, each times its share and the tap rule's
+// weight, in `light`; returns the sum of those weights (0: nothing kept). Texels are compared with
+// the depth the centre's plane predicts there: centreDepth + slope * (texel offset).
+float sssLinearTap( const in float offsetPx, const in ivec2 pixel, const in float centreDepth, const in float slope, const in vec3 centre, out vec3 light ) {
+	ivec2 texel0, texel1;
+	float fraction;
+	light = vec3( 0.0 );
+	if ( ! sssTapTexels( offsetPx, pixel, texel0, texel1, fraction ) ) return 0.0;
 	vec3 colour0, colour1 = vec3( 0.0 );
 	float weight0 = ( 1.0 - fraction ) * sssTapWeight( texel0, centreDepth + slope * float( texel0[ AXIS ] - pixel[ AXIS ] ), centre, colour0 );
 	float weight1 = 0.0;
 	// A tap on a texel centre (every footprint one pixel wide: most of them at small scales) weighs
 	// its second texel 0: not fetching it gives the same sums (SSS_SKIP_EMPTY_TEXELS 0: fetched).
 	if ( SSS_SKIP_EMPTY_TEXELS == 0 || fraction > 0.0 ) weight1 = fraction * sssTapWeight( texel1, centreDepth + slope * float( texel1[ AXIS ] - pixel[ AXIS ] ), centre, colour1 );
-	float kept = weight0 + weight1;
+	light = colour0 * weight0 + colour1 * weight1;
+	return weight0 + weight1;
+}
+
+// Adds one tap at `offsetPx` along the axis with kernel weight `weight` to the sums.
+void addTap( const in float offsetPx, const in vec3 weight, const in ivec2 pixel, const in float centreDepth, const in float slope, const in vec3 centre, inout vec3 sum, inout vec3 weightSum ) {
+	vec3 light;
+	float kept = sssLinearTap( offsetPx, pixel, centreDepth, slope, centre, light );
 	if ( kept <= 0.0 ) return;
-	sum += weight * ( colour0 * weight0 + colour1 * weight1 );
+	sum += weight * light;
 	weightSum += weight * kept;
 }
 
+#if SSS_GROUPS > 1
+	// A footprint's energy `weight` split between the frame's groups (kernelGroups.glsl): `column`
+	// 0 is the centre, j + 1 footprint j, of footprint table row `row`. The parts sum to `weight`.
+	void sssSplit( const in vec3 weight, const in int column, const in int row, out SssGroupLight parts ) {
+		vec3 first, second;
+		sssGroupFractions( column, row, first, second );
+		parts = SssGroupLight( weight, vec3( 0.0 ), vec3( 0.0 ) );
+		if ( groupCount < 2 ) return;
+		parts.first = weight * first;
+		if ( groupCount == 2 ) {
+			parts.second = weight - parts.first;
+			return;
+		}
+		parts.second = weight * second;
+		parts.third = max( weight - parts.first - parts.second, vec3( 0.0 ) ); // halves: first + second may pass 1 by 1e-3
+	}
+
+	// Adds `light` kept with `kept` at the groups' weights `parts` to their sums.
+	void sssAddGroups( const in SssGroupLight parts, const in SssGroupLight light, const in float kept, inout SssGroupLight sums, inout SssGroupLight weightSums ) {
+		sums.first += parts.first * light.first;
+		sums.second += parts.second * light.second;
+		sums.third += parts.third * light.third;
+		weightSums.first += parts.first * kept;
+		weightSums.second += parts.second * kept;
+		weightSums.third += parts.third * kept;
+	}
+
+	#if AXIS == 1
+		// The vertical pass's tap over the groups: as sssLinearTap, each group apart.
+		float sssLinearGroupTap( const in float offsetPx, const in ivec2 pixel, const in float centreDepth, const in float slope, const in SssGroupLight centre, out SssGroupLight light ) {
+			ivec2 texel0, texel1;
+			float fraction;
+			light = SssGroupLight( vec3( 0.0 ), vec3( 0.0 ), vec3( 0.0 ) );
+			if ( ! sssTapTexels( offsetPx, pixel, texel0, texel1, fraction ) ) return 0.0;
+			SssGroupLight light0, light1 = light;
+			float weight0 = ( 1.0 - fraction ) * sssGroupTapWeight( texel0, centreDepth + slope * float( texel0[ AXIS ] - pixel[ AXIS ] ), centre, light0 );
+			float weight1 = 0.0;
+			if ( SSS_SKIP_EMPTY_TEXELS == 0 || fraction > 0.0 ) weight1 = fraction * sssGroupTapWeight( texel1, centreDepth + slope * float( texel1[ AXIS ] - pixel[ AXIS ] ), centre, light1 );
+			light.first = light0.first * weight0 + light1.first * weight1;
+			light.second = light0.second * weight0 + light1.second * weight1;
+			light.third = light0.third * weight0 + light1.third * weight1;
+			return weight0 + weight1;
+		}
+	#endif
+
+	// One tap of the groups at `offsetPx`: the horizontal pass splits the diffuse light's tap, the
+	// vertical one reads each group's own.
+	void sssAddGroupTap( const in float offsetPx, const in SssGroupLight parts, const in ivec2 pixel, const in float centreDepth, const in float slope, const in SssGroupLight centre, inout SssGroupLight sums, inout SssGroupLight weightSums ) {
+		SssGroupLight light;
+		#if AXIS == 0
+			vec3 tap;
+			float kept = sssLinearTap( offsetPx, pixel, centreDepth, slope, centre.first, tap ); // the horizontal centre: the diffuse light in each
+			light = SssGroupLight( tap, tap, tap );
+		#else
+			float kept = sssLinearGroupTap( offsetPx, pixel, centreDepth, slope, centre, light );
+		#endif
+		if ( kept <= 0.0 ) return;
+		sssAddGroups( parts, light, kept, sums, weightSums );
+	}
+#endif
+
+// The pixel's scale along the axis, px per profile mm (times cos(tilt) with FORESHORTEN), and the
+// depth change per pixel along it (world units; 0 without FORESHORTEN).
+float sssAxisStep( const in ivec2 pixel, const in vec2 surface, out float slope ) {
+	float stepPx = sssPixelsPerMm( surface )[ AXIS ];
+	slope = 0.0;
+	#if FORESHORTEN == 1
+		float pixelWorld = sssPixelWorld( surface )[ AXIS ]; // world units one pixel spans across the view
+		slope = sssSurfaceSlope( pixel, AXIS, surface, pixelWorld );
+		float tilt = slope / pixelWorld;
+		stepPx *= inversesqrt( 1.0 + tilt * tilt ); // cos(theta)
+	#endif
+	return stepPx;
+}
+
+#if KERNEL_MODE == KERNEL_MODE_FOOTPRINT
+	// The table row nearest a pixel's scale (src/profiles/footprints.js's footprintRowOf).
+	int sssFootprintRow( const in float stepPx ) {
+		return clamp( int( floor( log2( stepPx / SSS_FOOTPRINT_SCALE_MIN ) * SSS_FOOTPRINT_PER_OCTAVE + 0.5 ) ), 0, SSS_FOOTPRINT_ROWS - 1 );
+	}
+
+	// Footprint j of table row `row` at the pixel's scale: its energy per side (`weight`) and where
+	// it is sampled (`offsetPx`), snapped to whole pixels; `energyBelow` and `lastEdge` (pixels;
+	// footprint j covers pixels lastEdge + 1 .. edge on each side) carry from one to the next.
+	// Returns false when nothing is left (the loop ends); `last`: it runs to the kernel's end.
+	bool sssFootprint( const in int j, const in int row, const in float stepPx, inout vec3 energyBelow, inout int lastEdge, out vec3 weight, out float offsetPx, out bool last ) {
+		weight = vec3( 0.0 );
+		offsetPx = 0.0;
+		last = true;
+		if ( all( greaterThan( energyBelow, vec3( 0.5 - SSS_ENERGY_LEFT ) ) ) ) return false; // nothing left
+		vec2 footprint = texelFetch( tFootprints, ivec2( j, SSS_FOOTPRINT_ROW( row ) ), 0 ).rg; // outer edge, sample offset (mm)
+		// The last footprint runs to the kernel's end and takes all the energy left.
+		last = j == BLOCKS || isinf( footprint.x );
+		int edge = last ? lastEdge + 1 : max( int( floor( footprint.x * stepPx + 0.5 ) ), lastEdge + 1 );
+		vec3 energy = last ? vec3( 0.5 ) : sssReadProfile( tProfile, SSS_MARGINAL_ROW, ( float( edge ) + 0.5 ) / stepPx, SSS_MARGINAL_RANGE_MM );
+		weight = energy - energyBelow;
+		// Sampled where the table says, kept inside the footprint as snapped at this pixel's scale.
+		offsetPx = max( footprint.y * stepPx, float( lastEdge + 1 ) );
+		if ( ! last ) offsetPx = min( offsetPx, float( edge ) );
+		energyBelow = energy;
+		lastEdge = edge;
+		return true;
+	}
+#endif
+
+#if SSS_GROUPS == 1
 void main() {
 	ivec2 pixel = ivec2( gl_FragCoord.xy );
 	SssCentre pixelCentre = sssCentreAt( pixel );
@@ -102,14 +243,8 @@ void main() {
 		sssSlot = sssNearestSlot( pixel, pixelCentre.coverage );
 	#endif
 
-	float stepPx = sssPixelsPerMm( surface )[ AXIS ];
-	float slope = 0.0; // depth change per pixel along the axis, world units
-	#if FORESHORTEN == 1
-		float pixelWorld = sssPixelWorld( surface )[ AXIS ]; // world units one pixel spans across the view
-		slope = sssSurfaceSlope( pixel, AXIS, surface, pixelWorld );
-		float tilt = slope / pixelWorld;
-		stepPx *= inversesqrt( 1.0 + tilt * tilt ); // cos(theta)
-	#endif
+	float slope; // depth change per pixel along the axis, world units
+	float stepPx = sssAxisStep( pixel, surface, slope );
 	// Below half a pixel the kernel cannot move light to another pixel: no work.
 	if ( ! ( stepPx * kernelRadiusMm >= SSS_MIN_KERNEL_PIXELS ) ) {
 		gl_FragColor = sssCovered( centre, pixelCentre.coverage );
@@ -127,29 +262,20 @@ void main() {
 			addTap( SSS_KERNEL_TAP( i ).a * stepPx, SSS_KERNEL_TAP( i ).rgb, pixel, surface.r, slope, centre, sum, weightSum );
 		}
 	#else
-		// The table row nearest this pixel's scale (src/profiles/footprints.js's footprintRowOf).
-		int row = clamp( int( floor( log2( stepPx / SSS_FOOTPRINT_SCALE_MIN ) * SSS_FOOTPRINT_PER_OCTAVE + 0.5 ) ), 0, SSS_FOOTPRINT_ROWS - 1 );
+		int row = sssFootprintRow( stepPx );
 		// The centre pixel is its own footprint: |x| < 0.5 px.
 		vec3 energyBelow = sssReadProfile( tProfile, SSS_MARGINAL_ROW, 0.5 / stepPx, SSS_MARGINAL_RANGE_MM );
 		weightSum = 2.0 * energyBelow;
 		sum = centre * weightSum;
-		int lastEdge = 0; // pixels; footprint j covers pixels lastEdge + 1 .. edge on each side
+		int lastEdge = 0;
 		for ( int j = 0; j <= BLOCKS; j ++ ) {
-			if ( all( greaterThan( energyBelow, vec3( 0.5 - SSS_ENERGY_LEFT ) ) ) ) break; // nothing left
-			vec2 footprint = texelFetch( tFootprints, ivec2( j, SSS_FOOTPRINT_ROW( row ) ), 0 ).rg; // outer edge, sample offset (mm)
-			// The last footprint runs to the kernel's end and takes all the energy left.
-			bool last = j == BLOCKS || isinf( footprint.x );
-			int edge = last ? lastEdge + 1 : max( int( floor( footprint.x * stepPx + 0.5 ) ), lastEdge + 1 );
-			vec3 energy = last ? vec3( 0.5 ) : sssReadProfile( tProfile, SSS_MARGINAL_ROW, ( float( edge ) + 0.5 ) / stepPx, SSS_MARGINAL_RANGE_MM );
-			vec3 weight = energy - energyBelow;
-			// Sampled where the table says, kept inside the footprint as snapped at this pixel's scale.
-			float offsetPx = max( footprint.y * stepPx, float( lastEdge + 1 ) );
-			if ( ! last ) offsetPx = min( offsetPx, float( edge ) );
+			vec3 weight;
+			float offsetPx;
+			bool last;
+			if ( ! sssFootprint( j, row, stepPx, energyBelow, lastEdge, weight, offsetPx, last ) ) break;
 			addTap( offsetPx, weight, pixel, surface.r, slope, centre, sum, weightSum );
 			addTap( - offsetPx, weight, pixel, surface.r, slope, centre, sum, weightSum );
 			if ( last ) break;
-			energyBelow = energy;
-			lastEdge = edge;
 		}
 	#endif
 
@@ -159,3 +285,91 @@ void main() {
 	#endif
 	gl_FragColor = sssCovered( sssFinite( result ) ? result : centre, pixelCentre.coverage );
 }
+#else
+// Each channel's sum over its weights, or `fallback` where nothing was kept.
+vec3 sssNormalised( const in vec3 sum, const in vec3 weightSum, const in vec3 fallback ) {
+	return vec3(
+		weightSum.r > 0.0 ? sum.r / weightSum.r : fallback.r,
+		weightSum.g > 0.0 ? sum.g / weightSum.g : fallback.g,
+		weightSum.b > 0.0 ? sum.b / weightSum.b : fallback.b
+	);
+}
+
+// The pass's output from each group's blurred light (`blurred`, normalised) and the centre's
+// (`centre`): the horizontal pass writes each group times its energy, the vertical one their sum;
+// both mixed with no scattering by `strength` and checked finite (kernelGroups.glsl).
+void sssEndGroups( const in SssGroupLight blurred, const in SssGroupLight centre, const in float coverage ) {
+	#if AXIS == 0
+		int first = SSS_GROUP_SLOT * SSS_GROUPS;
+		SssGroupLight out_ = SssGroupLight(
+			groupEnergies[ first ] * mix( centre.first, blurred.first, strength ),
+			groupEnergies[ first + 1 ] * mix( centre.second, blurred.second, strength ),
+			groupEnergies[ first + 2 ] * mix( centre.third, blurred.third, strength )
+		);
+		if ( ! sssFinite( out_.first + out_.second + out_.third ) ) {
+			out_ = SssGroupLight( groupEnergies[ first ] * centre.first, groupEnergies[ first + 1 ] * centre.second, groupEnergies[ first + 2 ] * centre.third );
+		}
+		sssWriteGroups( out_, coverage );
+	#else
+		vec3 unblurred = centre.first + centre.second + centre.third;
+		vec3 result = mix( unblurred, blurred.first + blurred.second + blurred.third, strength );
+		gl_FragColor = sssCovered( sssFinite( result ) ? result : unblurred, coverage );
+	#endif
+}
+
+void main() {
+	ivec2 pixel = ivec2( gl_FragCoord.xy );
+	SssGroupLight centre;
+	float coverage;
+	vec2 surface;
+	#if AXIS == 0
+		SssCentre pixelCentre = sssCentreAt( pixel );
+		centre = SssGroupLight( pixelCentre.colour, pixelCentre.colour, pixelCentre.colour ); // each group's input: the diffuse light
+		coverage = pixelCentre.coverage;
+		surface = pixelCentre.surface;
+	#else
+		coverage = sssGroupsAt( pixel, centre );
+		surface = sssUncovered( texelFetch( tSurface, pixel, 0 ).rg, coverage );
+	#endif
+	// Not a subsurface pixel: nothing (the diffuse attachment is 0 there), the mask kept.
+	if ( ! ( coverage > 0.0 ) ) {
+		sssEndGroups( SssGroupLight( vec3( 0.0 ), vec3( 0.0 ), vec3( 0.0 ) ), SssGroupLight( vec3( 0.0 ), vec3( 0.0 ), vec3( 0.0 ) ), 0.0 );
+		return;
+	}
+	#if PROFILE_COUNT > 1
+		sssSlot = sssNearestSlot( pixel, coverage );
+	#endif
+
+	float slope;
+	float stepPx = sssAxisStep( pixel, surface, slope );
+	// Below half a pixel the kernel cannot move light to another pixel: no work.
+	if ( ! ( stepPx * kernelRadiusMm >= SSS_MIN_KERNEL_PIXELS ) ) {
+		sssEndGroups( centre, centre, coverage );
+		return;
+	}
+
+	int row = sssFootprintRow( stepPx );
+	vec3 energyBelow = sssReadProfile( tProfile, SSS_MARGINAL_ROW, 0.5 / stepPx, SSS_MARGINAL_RANGE_MM );
+	SssGroupLight weightSums;
+	sssSplit( 2.0 * energyBelow, 0, SSS_FOOTPRINT_ROW( row ), weightSums );
+	SssGroupLight sums = SssGroupLight( centre.first * weightSums.first, centre.second * weightSums.second, centre.third * weightSums.third );
+	int lastEdge = 0;
+	for ( int j = 0; j <= BLOCKS; j ++ ) {
+		vec3 weight;
+		float offsetPx;
+		bool last;
+		if ( ! sssFootprint( j, row, stepPx, energyBelow, lastEdge, weight, offsetPx, last ) ) break;
+		SssGroupLight parts;
+		sssSplit( weight, j + 1, SSS_FOOTPRINT_ROW( row ), parts );
+		sssAddGroupTap( offsetPx, parts, pixel, surface.r, slope, centre, sums, weightSums );
+		sssAddGroupTap( - offsetPx, parts, pixel, surface.r, slope, centre, sums, weightSums );
+		if ( last ) break;
+	}
+	SssGroupLight blurred = SssGroupLight(
+		sssNormalised( sums.first, weightSums.first, centre.first ),
+		sssNormalised( sums.second, weightSums.second, centre.second ),
+		sssNormalised( sums.third, weightSums.third, centre.third )
+	);
+	sssEndGroups( blurred, centre, coverage );
+}
+#endif

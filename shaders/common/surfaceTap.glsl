@@ -14,6 +14,37 @@
 // With several profiles (PROFILE_COUNT > 1) a texel of another profile weighs 0 too, like one off
 // the mask (surfaceSample.glsl's sssOnProfile).
 
+// The rule's weight of a texel of coverage `coverage` (its light's alpha) by the mask, the profile
+// and the depth, whatever the light is stored as (the diffuse texture, or the isotropic blur's
+// groups, shaders/3-blur/kernelGroups.glsl); `farness` is what 'lerp' moves its colour by (0 in
+// the other modes).
+float sssTexelRule( const in ivec2 texel, const in float coverage, const in float expectedDepth, out float farness ) {
+	farness = 0.0;
+	float weight = 1.0;
+	#if SSS_COVERAGE == 1
+		weight = coverage;
+	#endif
+	#if PROFILE_COUNT > 1
+		// Another profile's texel is off this profile's mask in every followSurface mode: where a
+		// marble hand touches skin their depths agree, so the depth rule cannot part them.
+		vec4 surfaceTexel = texelFetch( tSurface, texel, 0 ); // one fetch for the slot and the depth
+		weight *= sssOnProfile( surfaceTexel.ba, coverage );
+		if ( weight == 0.0 ) return 0.0;
+	#endif
+	#if FOLLOW_SURFACE != FOLLOW_SURFACE_OFF
+		#if PROFILE_COUNT == 1
+			vec2 surfaceTexel = texelFetch( tSurface, texel, 0 ).rg;
+		#endif
+		float far = clamp( abs( sssUncovered( surfaceTexel.rg, coverage ).r - expectedDepth ) * depthFalloff, 0.0, 1.0 );
+		#if FOLLOW_SURFACE == FOLLOW_SURFACE_DROP
+			weight *= 1.0 - far;
+		#else
+			farness = far;
+		#endif
+	#endif
+	return weight;
+}
+
 float sssTapWeight( const in ivec2 texel, const in float expectedDepth, const in vec3 centre, out vec3 colour ) {
 	vec4 light = texelFetch( tDiffuse, texel, 0 );
 	colour = light.rgb;
@@ -21,29 +52,13 @@ float sssTapWeight( const in ivec2 texel, const in float expectedDepth, const in
 		colour = vec3( 0.0 );
 		return 0.0;
 	}
-	float weight = 1.0;
 	#if SSS_COVERAGE == 1
 		colour /= light.a;
-		weight = light.a;
 	#endif
-	#if PROFILE_COUNT > 1
-		// Another profile's texel is off this profile's mask in every followSurface mode: where a
-		// marble hand touches skin their depths agree, so the depth rule cannot part them.
-		vec4 surfaceTexel = texelFetch( tSurface, texel, 0 ); // one fetch for the slot and the depth
-		weight *= sssOnProfile( surfaceTexel.ba, light.a );
-		if ( weight == 0.0 ) return 0.0;
-	#endif
-	#if FOLLOW_SURFACE != FOLLOW_SURFACE_OFF
-		#if PROFILE_COUNT > 1
-		float farness = clamp( abs( sssUncovered( surfaceTexel.rg, light.a ).r - expectedDepth ) * depthFalloff, 0.0, 1.0 );
-		#else
-		float farness = clamp( abs( sssUncovered( texelFetch( tSurface, texel, 0 ).rg, light.a ).r - expectedDepth ) * depthFalloff, 0.0, 1.0 );
-		#endif
-		#if FOLLOW_SURFACE == FOLLOW_SURFACE_DROP
-			weight *= 1.0 - farness;
-		#else
-			colour = mix( colour, centre, farness );
-		#endif
+	float farness;
+	float weight = sssTexelRule( texel, light.a, expectedDepth, farness );
+	#if FOLLOW_SURFACE == FOLLOW_SURFACE_LERP
+		colour = mix( colour, centre, farness );
 	#endif
 	return weight;
 }

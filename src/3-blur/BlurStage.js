@@ -7,7 +7,7 @@
 // The profiles are the orchestrator's (one per slot, src/profiles/profileSlots.js): setProfiles.
 // Over 300 lines because it is the stage's one owner: its settings' setters, the kernels of every
 // method and profile, the plan, the scissor and the two targets (the passes are their own files).
-import { WebGLRenderTarget } from 'three';
+import { NearestFilter, RGBAIntegerFormat, RGIntegerFormat, UnsignedIntType, WebGLRenderTarget } from 'three';
 import { computeKernel, kernelRadiusMm } from '../profiles/kernel.js';
 import { getProfile } from '../profiles/presets.js';
 import { AUTO_SAMPLES, METHOD_TABLE, PIPELINE_SCHEMA, checkOption } from '../options.js';
@@ -17,8 +17,29 @@ import { checkBoolean } from '../support/parameterChecks.js';
 import { setDefines } from '../support/glsl.js';
 import { SubsurfaceBlurPass } from './SubsurfaceBlurPass.js';
 import { DenseSubsurfacePass } from './DenseSubsurfacePass.js';
+import { KernelGroupTable } from './KernelGroupTable.js';
+import { MAX_KERNEL_GROUPS, checkKernelGroups, kernelGroupsAt } from './kernelGroups.js';
+import { tableOf } from '../profiles/FootprintTable.js';
 
 const TRANSPARENT_BLACK = new Float32Array(4);
+const ZERO_UINTS = new Uint32Array(4);
+
+/**
+ * The isotropic blur's target between its passes: an RGBA32UI and an RG32UI attachment holding
+ * the groups as halves (shaders/3-blur/kernelGroups.glsl); integer textures are read by texelFetch
+ * only (nearest, no mipmaps).
+ */
+function createGroupTarget() {
+  const target = new WebGLRenderTarget(1, 1, {
+    count: 2, type: UnsignedIntType, format: RGBAIntegerFormat, internalFormat: 'RGBA32UI', depthBuffer: false, minFilter: NearestFilter, magFilter: NearestFilter, generateMipmaps: false,
+  });
+  const [first, second] = target.textures;
+  first.name = 'subsurface.horizontalGroups';
+  second.name = 'subsurface.horizontalGroup3';
+  second.format = RGIntegerFormat;
+  second.internalFormat = 'RG32UI';
+  return target;
+}
 
 /** The dense reference's loop bound, pixels of radius (method 'dense' is for validation). */
 const DENSE_MAX_RADIUS_PX = 256;
@@ -42,7 +63,7 @@ export class BlurStage {
    * @param {object} options.surface SurfacePass options (camera, surface and diffuse textures,
    *   followSurface, depthThresholdWorld, foreshortening)
    */
-  constructor({ type, profileLookup, method, samples, strength, falloff, surface }) {
+  constructor({ type, profileLookup, method, samples, strength, falloff, surface, kernelGroups = 'auto' }) {
     this.profileLookup = profileLookup;
     /** The profiles' tables by slot; the first one's kernel is the fixed-tap methods'. */
     this.profileLookups = [profileLookup];
@@ -53,6 +74,9 @@ export class BlurStage {
     this._surface = surface;
     this._blurTarget = new WebGLRenderTarget(1, 1, { type, depthBuffer: false });
     this._blurTarget.texture.name = 'subsurface.horizontal';
+    this._kernelGroups = checkKernelGroups(kernelGroups);
+    this._groupTarget = null; // built when a grouped frame first needs it
+    this._groupTable = new KernelGroupTable();
     /** The scattered diffuse light, premultiplied by its coverage like the multi-target's. */
     this.scatteredTarget = new WebGLRenderTarget(1, 1, { type, depthBuffer: false });
     this.scatteredTarget.texture.name = 'subsurface.scattered';
@@ -74,7 +98,7 @@ export class BlurStage {
     this.kernel = firstKernel;
     this._applySettings();
     /** The last frame's plan (see planBlur). */
-    this.lastPlan = { samples: this.kernel.length / 4, kernelPixels: 0, blur: false, passes: blurModeOf(method).passes };
+    this.lastPlan = { samples: this.kernel.length / 4, kernelPixels: 0, blur: false, passes: blurModeOf(method).passes, groups: 1, groupings: null };
   }
 
   /** @type {import('../options.js').Method} */
@@ -103,6 +127,38 @@ export class BlurStage {
   set skipsEmptyTexels(enabled) {
     this._skipsEmptyTexels = checkBoolean('BlurStage.skipsEmptyTexels', enabled);
     for (const pass of [this.horizontalPass, this.verticalPass]) setDefines(pass.material, { SSS_SKIP_EMPTY_TEXELS: enabled ? 1 : 0 });
+  }
+
+  /**
+   * The isotropic blur's groups ('footprint' only): 'auto' (default) takes per frame the fewest
+   * whose separable error is within src/3-blur/kernelGroups.js's budget at the frame's largest
+   * on-screen scale; 1..3 that many; 1 is the one-kernel blur (exact along the screen axes only).
+   * Changing between 1 and the others recompiles the blur once; the count per frame does not.
+   * @type {'auto'|number}
+   */
+  get kernelGroups() { return this._kernelGroups; }
+
+  set kernelGroups(groups) {
+    const next = checkKernelGroups(groups);
+    this._checkGroupsMethod(this.method, next);
+    this._kernelGroups = next;
+    this._applyGroups();
+  }
+
+  /** A count of groups above 1 needs method 'footprint' (RangeError); 'auto' is one kernel for the others. */
+  _checkGroupsMethod(method, groups) {
+    if (typeof groups === 'number' && groups > 1 && METHOD_TABLE[method].blur !== 'footprint') {
+      throw new RangeError(`SubsurfaceScattering: kernelGroups ${groups} needs method 'footprint' (method '${method}' blurs with one kernel); use kernelGroups 1 or 'auto'`);
+    }
+  }
+
+  /** The groups the separable passes are compiled for: MAX_KERNEL_GROUPS when the method and setting group, else 1. */
+  get groupCapacity() {
+    return METHOD_TABLE[this.method].blur === 'footprint' && this._kernelGroups !== 1 ? MAX_KERNEL_GROUPS : 1;
+  }
+
+  _applyGroups() {
+    for (const pass of [this.horizontalPass, this.verticalPass]) pass.setGroups(this.groupCapacity);
   }
 
   /** The dense 2D reference (method 'dense'), built on first use. */
@@ -163,6 +219,8 @@ export class BlurStage {
       marginalRadiusMm: Math.max(...this.profileLookups.map((lookup) => lookup.marginalRadiusMm)),
       denseRadiusMm: blurModeOf(this.method).passes === 'dense' ? this.densePass.radiusMm : 0,
       kernelReachMm,
+      kernelGroups: this.groupCapacity > 1 ? this._kernelGroups : 1,
+      profiles: this.profileLookups.map((lookup) => lookup.profile),
     };
   }
 
@@ -195,9 +253,32 @@ export class BlurStage {
     if (plan.passes === 'dense') {
       timed('dense', () => { scissored(); this.densePass.render(renderer, this.scatteredTarget, null); });
     } else {
-      timed('blurH', () => { scissored(); this.horizontalPass.render(renderer, this._blurTarget, null); });
+      const horizontalTarget = this._horizontalTarget(plan);
+      timed('blurH', () => { scissored(); this.horizontalPass.render(renderer, horizontalTarget, null); });
       timed('blurV', () => this.verticalPass.render(renderer, this.scatteredTarget, null));
     }
+  }
+
+  /**
+   * The horizontal pass's target for the frame, with the grouped passes given the frame's groups
+   * (their fraction table, energies and the target's attachments).
+   * @param {import('./blurPlan.js').BlurPlan} plan
+   */
+  _horizontalTarget(plan) {
+    if (this.groupCapacity === 1) return this._blurTarget;
+    if (!this._groupTarget) {
+      this._groupTarget = createGroupTarget();
+      this._groupTarget.setSize(this._size.width, this._size.height);
+      this._scissorKey = null; // the new target is cleared and scissored with the others
+    }
+    // A plan made before the groups were asked for blurs as one group.
+    const groupings = plan.groupings ?? this.profileLookups.map((lookup) => kernelGroupsAt(lookup.profile, 0, 1));
+    const samples = this.horizontalPass.footprintSamples;
+    const fractions = this._groupTable.update(groupings, this.profileLookups.map((lookup) => tableOf(lookup, samples)));
+    const frame = { count: Math.max(...groupings.map((g) => g.count)), fractions, energies: this._groupTable.energies };
+    this.horizontalPass.setGroupFrame(frame);
+    this.verticalPass.setGroupFrame({ ...frame, groups: this._groupTarget.textures });
+    return this._groupTarget;
   }
 
   /**
@@ -211,11 +292,13 @@ export class BlurStage {
     if (key === this._scissorKey) return;
     const previous = renderer.getRenderTarget();
     const gl = renderer.getContext();
-    for (const target of [this._blurTarget, this.scatteredTarget]) {
+    for (const target of [this._blurTarget, this.scatteredTarget, ...(this._groupTarget ? [this._groupTarget] : [])]) {
       target.scissorTest = false;
       if (box) {
         renderer.setRenderTarget(target);
-        gl.clearBufferfv(gl.COLOR, 0, TRANSPARENT_BLACK); // not renderer.clear: its colour is the scene's
+        // not renderer.clear: its colour is the scene's (and gl.clear leaves integer attachments undefined)
+        if (target === this._groupTarget) target.textures.forEach((_, i) => gl.clearBufferuiv(gl.COLOR, i, ZERO_UINTS));
+        else gl.clearBufferfv(gl.COLOR, 0, TRANSPARENT_BLACK);
         target.scissor.set(box.x, box.y, box.width, box.height);
         target.scissorTest = true;
       }
@@ -253,6 +336,7 @@ export class BlurStage {
       next[name] = checkOption(PIPELINE_SCHEMA, name, options[name]);
     }
     checkProfileCount(next.method, this.profileLookups.length);
+    this._checkGroupsMethod(next.method, this._kernelGroups);
     this._settingsChanged(next);
   }
 
@@ -281,6 +365,7 @@ export class BlurStage {
       pass.setMode(mode);
       pass.setStrength(this._settings.strength ?? [1, 1, 1]);
     }
+    this._applyGroups();
     this._setPassKernels(this.kernel);
   }
 
@@ -331,12 +416,15 @@ export class BlurStage {
     this._scissorKey = null; // setSize resets the targets' scissors
     for (const pass of this.surfacePasses) pass.setSize(width, height);
     this._blurTarget.setSize(width, height);
+    this._groupTarget?.setSize(width, height);
     this.scatteredTarget.setSize(width, height);
   }
 
   dispose() {
     for (const pass of this.surfacePasses) pass.dispose();
     this._blurTarget.dispose();
+    this._groupTarget?.dispose();
+    this._groupTable.dispose();
     this.scatteredTarget.dispose();
   }
 }

@@ -2,9 +2,10 @@
 // them (horizontal, then vertical) make the paper's two screen-space passes. Only subsurface
 // pixels change; taps on other pixels, off screen or on another surface are dropped and the rest
 // renormalised per channel (or lerped back to the centre colour, as in the reference).
-import { DataTexture, FloatType, NearestFilter, RGBAFormat, Vector3 } from 'three';
+import { DataTexture, FloatType, GLSL3, NearestFilter, RGBAFormat, Vector3 } from 'three';
 import blurGlsl from '../../shaders/3-blur/subsurfaceBlur.frag.glsl?raw';
 import profileLookupGlsl from '../../shaders/common/profileLookup.glsl?raw';
+import kernelGroupsGlsl from '../../shaders/3-blur/kernelGroups.glsl?raw';
 import { kernelRadiusMm } from '../profiles/kernel.js';
 import { ProfileLookup } from '../profiles/ProfileLookup.js';
 import { FootprintTable } from '../profiles/FootprintTable.js';
@@ -16,13 +17,14 @@ import { checkBoolean, checkOneOf, checkOptions, checkRgb } from '../support/par
 import { describe } from '../support/rendererSupport.js';
 import { FOLLOW_SURFACE_MODES } from '../options.js';
 import { SurfacePass } from './SurfacePass.js';
+import { MAX_KERNEL_GROUPS } from './kernelGroups.js';
 
 export { FOLLOW_SURFACE_MODES };
 /** How the blur weighs its taps: a kernel's fixed taps, or footprints snapped to pixels (see the shader). */
 export const KERNEL_MODES = Object.freeze(['taps', 'footprint']);
 const DIRECTIONS = Object.freeze(['horizontal', 'vertical']);
 
-const CHUNKS = Object.freeze({ 'common/profileLookup.glsl': profileLookupGlsl });
+const CHUNKS = Object.freeze({ 'common/profileLookup.glsl': profileLookupGlsl, '3-blur/kernelGroups.glsl': kernelGroupsGlsl });
 
 /** The footprint table's scales as the GLSL defines the shader reads. */
 const FOOTPRINT_DEFINES = Object.freeze({
@@ -90,7 +92,7 @@ export class SubsurfaceBlurPass extends SurfacePass {
       name: `SubsurfaceBlurPass(${direction})`,
       fragmentShader: blurGlsl,
       chunks: CHUNKS,
-      defines: { AXIS: DIRECTIONS.indexOf(direction), SAMPLES: 1, SSS_SKIP_EMPTY_TEXELS: 1, ...FOOTPRINT_DEFINES, ...enumDefines('KERNEL_MODE', KERNEL_MODES, mode) },
+      defines: { AXIS: DIRECTIONS.indexOf(direction), SAMPLES: 1, SSS_SKIP_EMPTY_TEXELS: 1, SSS_GROUPS: 1, ...FOOTPRINT_DEFINES, ...enumDefines('KERNEL_MODE', KERNEL_MODES, mode) },
       uniforms: {
         kernel: { value: new Float32Array(4) },
         tapCount: { value: 1 },
@@ -101,8 +103,19 @@ export class SubsurfaceBlurPass extends SurfacePass {
         marginalRangesMm: { value: new Float32Array(1) },
         tFootprints: { value: null },
         tKernels: { value: null },
+        // The isotropic blur's groups (setGroups, setGroupFrame; shaders/3-blur/kernelGroups.glsl).
+        groupCount: { value: 1 },
+        groupEnergies: { value: new Float32Array(MAX_KERNEL_GROUPS * 3) },
+        tGroupFractions: { value: null },
+        tGroups0: { value: null },
+        tGroups1: { value: null },
       },
     }, surface);
+    // GLSL 3: the horizontal pass of the groups writes two unsigned-integer attachments, so the
+    // shader declares its own outputs.
+    this.material.glslVersion = GLSL3;
+    /** The groups the shader is compiled for: 1 (one kernel) or MAX_KERNEL_GROUPS (setGroups). */
+    this.groupCapacity = 1;
     this.direction = direction;
     this.mode = mode;
     /** The footprint allocation for the profile and the kernel's tap count ('footprint' mode). */
@@ -114,6 +127,34 @@ export class SubsurfaceBlurPass extends SurfacePass {
     this.autoFootprints = autoFootprints;
     this.setKernel(kernel);
     this.setStrength(strength);
+  }
+
+  /**
+   * The isotropic blur ('footprint' mode): 1 blurs with one kernel (separable, exact along the
+   * screen axes only); MAX_KERNEL_GROUPS compiles the grouped blur once, whose frame then says
+   * how many groups hold light (setGroupFrame). The horizontal pass then writes the groups'
+   * integer target, the vertical one reads it (shaders/3-blur/kernelGroups.glsl).
+   * @param {1|3} capacity
+   */
+  setGroups(capacity) {
+    if (capacity !== 1 && capacity !== MAX_KERNEL_GROUPS) throw new RangeError(`SubsurfaceBlurPass.setGroups: capacity must be 1 or ${MAX_KERNEL_GROUPS}, got ${describe(capacity)}`);
+    if (capacity > 1 && this.mode !== 'footprint') throw new RangeError(`SubsurfaceBlurPass.setGroups: groups need the 'footprint' mode, the pass is in '${this.mode}'`);
+    setDefines(this.material, { SSS_GROUPS: capacity });
+    this.groupCapacity = capacity;
+  }
+
+  /**
+   * This frame's groups (a compiled capacity above 1): how many hold light, their energy shares
+   * and the fraction table (KernelGroupTable), and for the vertical pass the horizontal one's
+   * two attachments. Uniforms only: no recompile.
+   * @param {{ count: number, energies: Float32Array, fractions: import('three').Texture, groups?: readonly import('three').Texture[] }} frame
+   */
+  setGroupFrame({ count, energies, fractions, groups = [] }) {
+    this.uniforms.groupCount.value = count;
+    this.uniforms.groupEnergies.value = energies;
+    this.uniforms.tGroupFractions.value = fractions;
+    this.uniforms.tGroups0.value = groups[0] ?? null;
+    this.uniforms.tGroups1.value = groups[1] ?? null;
   }
 
   /** @param {number[]} strength RGB in [0, 1] ('footprint' mode; see the constructor) */
@@ -163,6 +204,7 @@ export class SubsurfaceBlurPass extends SurfacePass {
     }
     setDefines(this.material, enumDefines('KERNEL_MODE', KERNEL_MODES, mode));
     this.mode = mode;
+    if (mode !== 'footprint' && this.groupCapacity > 1) this.setGroups(1); // fixed taps blur with one kernel
   }
 
   /**

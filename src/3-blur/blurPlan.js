@@ -6,6 +6,7 @@
 import { AUTO_REACH, AUTO_SAMPLES, METHOD_TABLE } from '../options.js';
 import { AUTO_MAX_SAMPLES } from '../profiles/footprints.js';
 import { MIN_KERNEL_PIXELS } from './samplingModel.js';
+import { kernelGroupsAt } from './kernelGroups.js';
 
 /**
  * 'auto' taps of the fixed-tap methods: the fewest of AUTO_SAMPLES whose (samples - 3) / 2
@@ -28,7 +29,21 @@ export function autoSampleCount(radiusPx) {
  * @property {number} denseRadiusMm the dense reference's reach, mm
  * @property {Readonly<Record<number, number>>} kernelReachMm the fixed-tap kernel's outermost tap,
  *   mm, for each count the plan can choose (the count asked for, or every AUTO_SAMPLES for 'auto')
+ * @property {'auto'|number} kernelGroups the isotropic blur's groups asked for (1: one kernel)
+ * @property {ReadonlyArray<object>} profiles the frame's profiles, by slot
  */
+
+/**
+ * The isotropic blur's groups for a frame whose largest on-screen scale is `pixelsPerMm`: each
+ * slot's profile grouped into as many groups as the slot needing most does ('auto': the fewest
+ * within kernelGroups.js's error budget at that scale), or null for one kernel.
+ * @param {BlurSettings} settings @param {number} pixelsPerMm
+ */
+export function frameGroupings(settings, pixelsPerMm) {
+  if (settings.kernelGroups === 1) return null;
+  const count = Math.max(...settings.profiles.map((profile) => kernelGroupsAt(profile, pixelsPerMm, settings.kernelGroups).count));
+  return settings.profiles.map((profile) => kernelGroupsAt(profile, pixelsPerMm, count));
+}
 
 /**
  * What each blur mode of METHOD_TABLE does:
@@ -37,7 +52,9 @@ export function autoSampleCount(radiusPx) {
  *   by a uniform below it, never by a recompile): the kernel's count for 'footprint' (its budget),
  *   the largest 'auto' count for fixed taps;
  * - autoSamples(radiusPx): the taps 'auto' takes for the on-screen radius of the marginal's 99 %;
- * - reachMm(settings, samples): how far the blur reaches, mm (below half a pixel nothing moves).
+ * - reachMm(settings, samples): how far the blur reaches, mm (below half a pixel nothing moves);
+ * - groupings(settings, pixelsPerMm): the isotropic blur's groups per slot (frameGroupings), or
+ *   null where the mode blurs with one kernel (fixed taps) or is isotropic already (dense).
  */
 export const BLUR_MODES = Object.freeze({
   footprint: Object.freeze({
@@ -48,18 +65,21 @@ export const BLUR_MODES = Object.freeze({
     tapCapacity: (samples) => samples,
     // The tail is sampled at least a pixel out: the reach is the marginal's 99 % radius.
     reachMm: (settings) => settings.marginalRadiusMm,
+    groupings: frameGroupings,
   }),
   taps: Object.freeze({
     passes: 'separable',
     autoSamples: autoSampleCount,
     tapCapacity: (samples, auto) => (auto ? AUTO_SAMPLES[AUTO_SAMPLES.length - 1] : samples),
     reachMm: (settings, samples) => reachOfTaps(settings, samples),
+    groupings: () => null,
   }),
   dense: Object.freeze({
     passes: 'dense',
     autoSamples: () => AUTO_MAX_SAMPLES, // unused by the dense pass; kept for a switch back
     tapCapacity: (samples) => samples,
     reachMm: (settings) => settings.denseRadiusMm,
+    groupings: () => null,
   }),
 });
 
@@ -94,6 +114,8 @@ export function blurModeOf(method) {
  * @property {number} kernelPixels the largest on-screen reach of the kernel, pixels
  * @property {boolean} blur whether the blur stage runs (not below half a pixel, not switched off)
  * @property {'separable'|'dense'} passes which passes run
+ * @property {number} groups the isotropic blur's groups holding light this frame (1: one kernel)
+ * @property {ReadonlyArray<object>|null} groupings their kernelGroups per slot (null: one kernel)
  */
 
 /**
@@ -106,5 +128,9 @@ export function planBlur(settings, pixelsPerMm) {
   const mode = blurModeOf(settings.method);
   const samples = settings.samples === 'auto' ? mode.autoSamples(settings.marginalRadiusMm * pixelsPerMm) : settings.samples;
   const kernelPixels = mode.reachMm(settings, samples) * pixelsPerMm;
-  return { samples, kernelPixels, blur: settings.scattering && kernelPixels >= MIN_KERNEL_PIXELS, passes: mode.passes };
+  const groupings = mode.groupings(settings, pixelsPerMm);
+  return {
+    samples, kernelPixels, blur: settings.scattering && kernelPixels >= MIN_KERNEL_PIXELS, passes: mode.passes,
+    groups: groupings ? Math.max(...groupings.map((g) => g.count)) : 1, groupings,
+  };
 }

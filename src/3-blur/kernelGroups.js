@@ -9,12 +9,15 @@
 // The groups are contiguous runs of the Gaussians sorted by variance, chosen per channel (each
 // channel of a group is its own blur) to make the worst |T − M| least over the angles and the
 // frequencies a scale shows; 'auto' takes the fewest groups within ISOTROPY_ERROR.
-// Not wired into the WebGL blur yet: a grouped footprint blur (one half-float attachment per group
-// from the horizontal pass, summed by the vertical one) measured 7.1x the one-group blur's time on
-// the head at 640x360 (SwiftShader, bench --quick), against issue 20's budget of 1.3x; this is the
-// plan such a blur takes its groups from (test/node/3-blur/kernelGroups.test.js holds the closed forms).
+// The WebGL blur (method 'footprint', shaders/3-blur/kernelGroups.glsl) splits each footprint's
+// exact marginal energy between the groups by footprintGroupFractions (below), taken at the
+// footprint table row's scale, and carries the groups between its passes packed as halves: the
+// same taps and fetches as one group, with the vertical pass reading a third group's texel only when
+// the frame has three. (A first design, one half-float attachment per group and the group energies
+// from erf per Gaussian and tap, measured 7.1x the one-group blur's time.)
+// test/node/3-blur/kernelGroups.test.js holds the closed forms.
 import { gaussianSumOf } from '../profiles/gaussianFit.js';
-import { footprintRowOf, footprintRowScale } from '../profiles/footprints.js';
+import { FOOTPRINT_ROWS, footprintRowOf, footprintRowScale } from '../profiles/footprints.js';
 import { checkInteger } from '../support/parameterChecks.js';
 import { erfc } from '../math/specialFunctions.js';
 
@@ -33,8 +36,12 @@ export const ISOTROPY_ERROR = 0.016;
  */
 export const ISOTROPY_STEP_ERROR = 0.006;
 
-/** The most groups: one half-float attachment each (WebGL2 guarantees MAX_DRAW_BUFFERS ≥ 4). */
-export const MAX_KERNEL_GROUPS = 4;
+/**
+ * The most groups: the blur carries three groups' RGB and the coverage between its passes in one
+ * RGBA32UI and one RG32UI texel (ten halves; shaders/3-blur/kernelGroups.glsl). Three are within
+ * ISOTROPY_ERROR for skin at every scale (0.013–0.021 against 0.040–0.047 for two).
+ */
+export const MAX_KERNEL_GROUPS = 3;
 
 /** The angles the transfer error is taken at: by symmetry 0..45° covers every angle. */
 const ANGLES = Object.freeze([0, 1, 2, 3, 4].map((k) => (k * Math.PI) / 16));
@@ -264,12 +271,12 @@ const withinBudget = (grouping) => grouping.error.every((e) => e <= ISOTROPY_ERR
 
 /**
  * Checks the `kernelGroups` option: 'auto' or a count.
- * @param {*} value @returns {'auto'|number}
+ * @param {*} value @param {string} [name] @returns {'auto'|number}
  */
-export function checkKernelGroups(value) {
+export function checkKernelGroups(value, name = 'kernelGroups') {
   if (value === 'auto') return value;
-  if (typeof value !== 'number') throw new TypeError(`kernelGroups must be 'auto' or an integer in 1..${MAX_KERNEL_GROUPS}, got ${typeof value === 'string' ? `'${value}'` : String(value)}`);
-  return checkInteger('kernelGroups', value, 1, MAX_KERNEL_GROUPS, "groups (or 'auto')");
+  if (typeof value !== 'number') throw new TypeError(`${name} must be 'auto' or an integer in 1..${MAX_KERNEL_GROUPS}, got ${typeof value === 'string' ? `'${value}'` : String(value)}`);
+  return checkInteger(name, value, 1, MAX_KERNEL_GROUPS, "groups (or 'auto')");
 }
 
 /** Footprint table rows per cached scale step (8 rows an octave). */
@@ -330,4 +337,64 @@ export function groupUniforms({ count, gaussians, members }) {
     });
   }
   return { erfScales, weights, energies };
+}
+
+/** Each group's share of the profile's energy per channel (summing to 1): [g][c]. @param {ReturnType<typeof kernelGroups>} grouping */
+export function groupEnergies({ gaussians, members }) {
+  const energies = members[0].map(() => [0, 0, 0]);
+  for (let c = 0; c < 3; c++) {
+    members[c].forEach((member, g) => member.forEach((fraction, i) => { energies[g][c] += fraction * gaussians[i].weights[c]; }));
+    const total = energies.reduce((sum, e) => sum + e[c], 0);
+    for (const e of energies) e[c] = total > 0 ? e[c] / total : 1 / energies.length;
+  }
+  return energies;
+}
+
+/**
+ * The share of each group in the marginal energy of every footprint of a footprint table, as the
+ * blur splits it (shaders/3-blur/kernelGroups.glsl): at each row's scale s, the footprints snapped
+ * to whole pixels as the shader snaps them (footprint k covers pixels e_{k−1} + 1 .. e_k, so
+ * [(e_{k−1} + ½) / s, (e_k + ½) / s] mm; the centre |x| < ½ / s; the last to infinity), and group g's
+ * energy there Σ_i m_gi w_i (erfc(a / √(2 v_i)) − erfc(b / √(2 v_i))) / 2 from its Gaussians (a fitted
+ * profile's fit: the total stays the exact marginal's, only its split comes from the fit).
+ * @param {ReturnType<typeof kernelGroups>} grouping
+ * @param {{ data: Float32Array, columns: number }} table footprintTable's numbers
+ * @returns {Float32Array} per row r and column k (0: the centre, j + 1: footprint j), MAX_KERNEL_GROUPS
+ *   RGB fractions at ((r · (columns + 1) + k) · MAX_KERNEL_GROUPS + g) · 3 + c; groups past the
+ *   grouping's count hold 0. Where no group has energy (past float range) the widest takes it all.
+ */
+export function footprintGroupFractions(grouping, { data, columns }) {
+  const { gaussians, members } = grouping;
+  const count = members[0].length;
+  const scales = gaussians.map((g) => 1 / Math.sqrt(2 * g.varianceMm2));
+  const out = new Float32Array(FOOTPRINT_ROWS * (columns + 1) * MAX_KERNEL_GROUPS * 3);
+  const energies = new Float64Array(count);
+  const write = (row, column, lowMm, highMm) => {
+    const tails = scales.map((k) => [erfc(lowMm * k), highMm === Infinity ? 0 : erfc(highMm * k)]);
+    for (let c = 0; c < 3; c++) {
+      let total = 0;
+      for (let g = 0; g < count; g++) {
+        let e = 0;
+        members[c][g].forEach((fraction, i) => { if (fraction > 0) e += fraction * gaussians[i].weights[c] * (tails[i][0] - tails[i][1]); });
+        energies[g] = Math.max(e, 0);
+        total += energies[g];
+      }
+      const base = (row * (columns + 1) + column) * MAX_KERNEL_GROUPS;
+      for (let g = 0; g < count; g++) out[(base + g) * 3 + c] = total > 0 ? energies[g] / total : (g === count - 1 ? 1 : 0);
+    }
+  };
+  for (let row = 0; row < FOOTPRINT_ROWS; row++) {
+    const s = footprintRowScale(row);
+    write(row, 0, 0, 0.5 / s);
+    let lastEdge = 0;
+    for (let k = 0; k < columns; k++) {
+      const edgeMm = data[2 * (row * columns + k)];
+      const last = k === columns - 1 || edgeMm === Infinity;
+      const edge = last ? Infinity : Math.max(Math.floor(edgeMm * s + 0.5), lastEdge + 1);
+      write(row, k + 1, (lastEdge + 0.5) / s, last ? Infinity : (edge + 0.5) / s);
+      if (last) break;
+      lastEdge = edge;
+    }
+  }
+  return out;
 }

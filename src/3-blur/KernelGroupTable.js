@@ -1,0 +1,74 @@
+// The isotropic blur's split of every footprint's energy between its groups, as the integer
+// texture shaders/3-blur/kernelGroups.glsl reads (one texel per footprint: groups 1 and 2's RGB
+// fractions as six halves; group 3 takes the rest), and the groups' energy shares as its uniform.
+// Slot p's rows follow the footprint table's stacking (p · FOOTPRINT_ROWS + row). One table serves
+// both passes (the horizontal and the vertical split alike). Refilled only when a slot's grouping
+// or footprint table changes (both are cached by scale step: a zoom refills it rarely).
+import { DataTexture, DataUtils, NearestFilter, RGBAIntegerFormat, UnsignedIntType } from 'three';
+import { FOOTPRINT_ROWS } from '../profiles/footprints.js';
+import { MAX_KERNEL_GROUPS, footprintGroupFractions, groupEnergies } from './kernelGroups.js';
+
+/** fractions → packed texels, cached per grouping and footprint table (both are cached objects). */
+const packedTables = new WeakMap();
+
+/** footprintGroupFractions packed as the shader reads them: per texel (f1.r, f1.g), (f1.b, f2.r), (f2.g, f2.b) as halves, low half first. */
+function packedFractions(grouping, table) {
+  let byTable = packedTables.get(grouping);
+  if (!byTable) packedTables.set(grouping, (byTable = new WeakMap()));
+  if (!byTable.has(table)) {
+    const fractions = footprintGroupFractions(grouping, table);
+    const texels = fractions.length / (MAX_KERNEL_GROUPS * 3);
+    const packed = new Uint32Array(texels * 4);
+    const half = (i) => DataUtils.toHalfFloat(fractions[i]);
+    for (let t = 0; t < texels; t++) {
+      const f = t * MAX_KERNEL_GROUPS * 3; // group 1 at f .. f + 2, group 2 at f + 3 .. f + 5
+      packed[t * 4] = half(f) | (half(f + 1) << 16);
+      packed[t * 4 + 1] = half(f + 2) | (half(f + 3) << 16);
+      packed[t * 4 + 2] = half(f + 4) | (half(f + 5) << 16);
+    }
+    byTable.set(table, packed);
+  }
+  return byTable.get(table);
+}
+
+export class KernelGroupTable {
+  constructor() {
+    /** @type {DataTexture|null} RGBA32UI, (columns + 1) × FOOTPRINT_ROWS per slot */
+    this.texture = null;
+    /** The groups' energy shares, the shader's groupEnergies: slot p's group g's RGB at (p · MAX_KERNEL_GROUPS + g) · 3. */
+    this.energies = new Float32Array(MAX_KERNEL_GROUPS * 3);
+    this._key = [];
+  }
+
+  /**
+   * @param {ReadonlyArray<ReturnType<import('./kernelGroups.js').kernelGroups>>} groupings per slot
+   * @param {ReadonlyArray<{ data: Float32Array, columns: number }>} tables per slot, the footprint tables the blur reads
+   * @returns {DataTexture}
+   */
+  update(groupings, tables) {
+    const key = [...groupings, ...tables];
+    if (this.texture && key.length === this._key.length && key.every((k, i) => k === this._key[i])) return this.texture;
+    const columns = tables[0].columns + 1;
+    if (tables.some((t) => t.columns + 1 !== columns)) throw new RangeError('KernelGroupTable: every slot\'s footprint table must have the same columns');
+    const rows = FOOTPRINT_ROWS * groupings.length;
+    if (!this.texture || this.texture.image.width !== columns || this.texture.image.height !== rows) {
+      this.texture?.dispose();
+      this.texture = new DataTexture(new Uint32Array(columns * rows * 4), columns, rows, RGBAIntegerFormat, UnsignedIntType);
+      this.texture.internalFormat = 'RGBA32UI';
+      this.texture.minFilter = this.texture.magFilter = NearestFilter;
+      this.texture.name = 'KernelGroupTable';
+    }
+    groupings.forEach((grouping, slot) => this.texture.image.data.set(packedFractions(grouping, tables[slot]), slot * columns * FOOTPRINT_ROWS * 4));
+    this.texture.needsUpdate = true;
+    this.energies = new Float32Array(groupings.length * MAX_KERNEL_GROUPS * 3);
+    groupings.forEach((grouping, slot) => groupEnergies(grouping).forEach((rgb, g) => this.energies.set(rgb, (slot * MAX_KERNEL_GROUPS + g) * 3)));
+    this._key = key;
+    return this.texture;
+  }
+
+  dispose() {
+    this.texture?.dispose();
+    this.texture = null;
+    this._key = [];
+  }
+}
