@@ -227,7 +227,7 @@ export class SubsurfaceScattering extends Pass {
   set samples(samples) { this.blur.setKernel({ samples: checkOption(PIPELINE_SCHEMA, 'samples', samples) }); }
 
   /**
-   * The isotropic blur's groups (method 'footprint'): 'auto', or 1..3 (1: one kernel, exact along
+   * The isotropic blur's groups (method 'footprint'): 'auto', or 1..4 (1: one kernel, exact along
    * the screen axes only). This frame's count: `plan.groups`.
    * @type {number|'auto'}
    */

@@ -5,7 +5,7 @@
 // resolved from MSAA, shaders/common/surfaceSample.glsl), SSS_MAX_SLOPE, SSS_MIN_KERNEL_PIXELS,
 // SSS_ENERGY_LEFT (the numbers of src/3-blur/samplingModel.js), PROFILE_COUNT (the profiles in the
 // frame; above 1 each pixel blurs with its own, shaders/common/surfaceSample.glsl), SSS_GROUPS (1:
-// one kernel; 3: the isotropic blur's groups, 'footprint' only, shaders/3-blur/kernelGroups.glsl:
+// one kernel; 4: the isotropic blur's groups, 'footprint' only, shaders/3-blur/kernelGroups.glsl:
 // the horizontal pass then writes the groups, the vertical one sums them) and KERNEL_MODE:
 //   KERNEL_MODE_TAPS: fixed weights and offsets (computeKernel's reference or marginal kernel);
 //   KERNEL_MODE_FOOTPRINT: per pixel, footprints of whole pixels from the FootprintTable, weighted
@@ -124,30 +124,12 @@ void addTap( const in float offsetPx, const in vec3 weight, const in ivec2 pixel
 }
 
 #if SSS_GROUPS > 1
-	// A footprint's energy `weight` split between the frame's groups (kernelGroups.glsl): `column`
-	// 0 is the centre, j + 1 footprint j, of footprint table row `row`. The parts sum to `weight`.
-	void sssSplit( const in vec3 weight, const in int column, const in int row, out SssGroupLight parts ) {
-		vec3 first, second;
-		sssGroupFractions( column, row, first, second );
-		parts = SssGroupLight( weight, vec3( 0.0 ), vec3( 0.0 ) );
-		if ( groupCount < 2 ) return;
-		parts.first = weight * first;
-		if ( groupCount == 2 ) {
-			parts.second = weight - parts.first;
-			return;
-		}
-		parts.second = weight * second;
-		parts.third = max( weight - parts.first - parts.second, vec3( 0.0 ) ); // halves: first + second may pass 1 by 1e-3
-	}
-
 	// Adds `light` kept with `kept` at the groups' weights `parts` to their sums.
 	void sssAddGroups( const in SssGroupLight parts, const in SssGroupLight light, const in float kept, inout SssGroupLight sums, inout SssGroupLight weightSums ) {
-		sums.first += parts.first * light.first;
-		sums.second += parts.second * light.second;
-		sums.third += parts.third * light.third;
-		weightSums.first += parts.first * kept;
-		weightSums.second += parts.second * kept;
-		weightSums.third += parts.third * kept;
+		for ( int g = 0; g < SSS_GROUPS; g ++ ) {
+			sums.group[ g ] += parts.group[ g ] * light.group[ g ];
+			weightSums.group[ g ] += parts.group[ g ] * kept;
+		}
 	}
 
 	#if AXIS == 1
@@ -155,15 +137,13 @@ void addTap( const in float offsetPx, const in vec3 weight, const in ivec2 pixel
 		float sssLinearGroupTap( const in float offsetPx, const in ivec2 pixel, const in float centreDepth, const in float slope, const in SssGroupLight centre, out SssGroupLight light ) {
 			ivec2 texel0, texel1;
 			float fraction;
-			light = SssGroupLight( vec3( 0.0 ), vec3( 0.0 ), vec3( 0.0 ) );
+			light = sssNoGroups();
 			if ( ! sssTapTexels( offsetPx, pixel, texel0, texel1, fraction ) ) return 0.0;
 			SssGroupLight light0, light1 = light;
 			float weight0 = ( 1.0 - fraction ) * sssGroupTapWeight( texel0, centreDepth + slope * float( texel0[ AXIS ] - pixel[ AXIS ] ), centre, light0 );
 			float weight1 = 0.0;
 			if ( SSS_SKIP_EMPTY_TEXELS == 0 || fraction > 0.0 ) weight1 = fraction * sssGroupTapWeight( texel1, centreDepth + slope * float( texel1[ AXIS ] - pixel[ AXIS ] ), centre, light1 );
-			light.first = light0.first * weight0 + light1.first * weight1;
-			light.second = light0.second * weight0 + light1.second * weight1;
-			light.third = light0.third * weight0 + light1.third * weight1;
+			for ( int g = 0; g < SSS_GROUPS; g ++ ) light.group[ g ] = light0.group[ g ] * weight0 + light1.group[ g ] * weight1;
 			return weight0 + weight1;
 		}
 	#endif
@@ -174,8 +154,8 @@ void addTap( const in float offsetPx, const in vec3 weight, const in ivec2 pixel
 		SssGroupLight light;
 		#if AXIS == 0
 			vec3 tap;
-			float kept = sssLinearTap( offsetPx, pixel, centreDepth, slope, centre.first, tap ); // the horizontal centre: the diffuse light in each
-			light = SssGroupLight( tap, tap, tap );
+			float kept = sssLinearTap( offsetPx, pixel, centreDepth, slope, centre.group[ 0 ], tap ); // the horizontal centre: the diffuse light in each
+			for ( int g = 0; g < SSS_GROUPS; g ++ ) light.group[ g ] = tap;
 		#else
 			float kept = sssLinearGroupTap( offsetPx, pixel, centreDepth, slope, centre, light );
 		#endif
@@ -295,25 +275,48 @@ vec3 sssNormalised( const in vec3 sum, const in vec3 weightSum, const in vec3 fa
 	);
 }
 
-// The pass's output from each group's blurred light (`blurred`, normalised) and the centre's
-// (`centre`): the horizontal pass writes each group times its energy, the vertical one their sum;
-// both mixed with no scattering by `strength` and checked finite (kernelGroups.glsl).
-void sssEndGroups( const in SssGroupLight blurred, const in SssGroupLight centre, const in float coverage ) {
+// The horizontal pass's output: each group's light over all the groups' kept weight, so the groups
+// sum to the one-kernel blur exactly (and the vertical pass, normalising each group by its own,
+// gives the one-kernel answer along both axes); `share` is each group's part of that weight, what
+// its unblurred light is mixed in by with `strength` < 1. The vertical pass's: the groups' sum, each
+// normalised (sssNormalised), mixed with the unblurred sum. Both checked finite.
+void sssEndGroups( const in SssGroupLight blurred, const in SssGroupLight centre, const in SssGroupLight share, const in float coverage ) {
 	#if AXIS == 0
-		int first = SSS_GROUP_SLOT * SSS_GROUPS;
-		SssGroupLight out_ = SssGroupLight(
-			groupEnergies[ first ] * mix( centre.first, blurred.first, strength ),
-			groupEnergies[ first + 1 ] * mix( centre.second, blurred.second, strength ),
-			groupEnergies[ first + 2 ] * mix( centre.third, blurred.third, strength )
-		);
-		if ( ! sssFinite( out_.first + out_.second + out_.third ) ) {
-			out_ = SssGroupLight( groupEnergies[ first ] * centre.first, groupEnergies[ first + 1 ] * centre.second, groupEnergies[ first + 2 ] * centre.third );
+		SssGroupLight written;
+		SssGroupLight unblurred;
+		vec3 sum = vec3( 0.0 );
+		for ( int g = 0; g < SSS_GROUPS; g ++ ) {
+			unblurred.group[ g ] = share.group[ g ] * centre.group[ g ];
+			written.group[ g ] = mix( unblurred.group[ g ], blurred.group[ g ], strength );
+			sum += written.group[ g ];
 		}
-		sssWriteGroups( out_, coverage );
+		if ( sssFinite( sum ) ) sssWriteGroups( written, coverage );
+		else sssWriteGroups( unblurred, coverage );
 	#else
-		vec3 unblurred = centre.first + centre.second + centre.third;
-		vec3 result = mix( unblurred, blurred.first + blurred.second + blurred.third, strength );
+		vec3 unblurred = vec3( 0.0 );
+		vec3 sum = vec3( 0.0 );
+		for ( int g = 0; g < SSS_GROUPS; g ++ ) {
+			unblurred += centre.group[ g ];
+			sum += blurred.group[ g ];
+		}
+		vec3 result = mix( unblurred, sum, strength );
 		gl_FragColor = sssCovered( sssFinite( result ) ? result : unblurred, coverage );
+	#endif
+}
+
+// A pixel that does no work (its kernel under half a pixel): the horizontal pass writes its light
+// split by the groups' shares of the profile's energy, the vertical one their sum.
+void sssEndUnblurred( const in SssGroupLight centre, const in float coverage ) {
+	#if AXIS == 0
+		SssGroupLight energies;
+		SssGroupLight split;
+		for ( int g = 0; g < SSS_GROUPS; g ++ ) {
+			energies.group[ g ] = groupEnergies[ SSS_GROUP_SLOT * SSS_GROUPS + g ];
+			split.group[ g ] = energies.group[ g ] * centre.group[ g ];
+		}
+		sssEndGroups( split, centre, energies, coverage );
+	#else
+		sssEndGroups( centre, centre, sssNoGroups(), coverage );
 	#endif
 }
 
@@ -324,7 +327,7 @@ void main() {
 	vec2 surface;
 	#if AXIS == 0
 		SssCentre pixelCentre = sssCentreAt( pixel );
-		centre = SssGroupLight( pixelCentre.colour, pixelCentre.colour, pixelCentre.colour ); // each group's input: the diffuse light
+		for ( int g = 0; g < SSS_GROUPS; g ++ ) centre.group[ g ] = pixelCentre.colour; // each group's input: the diffuse light
 		coverage = pixelCentre.coverage;
 		surface = pixelCentre.surface;
 	#else
@@ -333,7 +336,7 @@ void main() {
 	#endif
 	// Not a subsurface pixel: nothing (the diffuse attachment is 0 there), the mask kept.
 	if ( ! ( coverage > 0.0 ) ) {
-		sssEndGroups( SssGroupLight( vec3( 0.0 ), vec3( 0.0 ), vec3( 0.0 ) ), SssGroupLight( vec3( 0.0 ), vec3( 0.0 ), vec3( 0.0 ) ), 0.0 );
+		sssEndGroups( sssNoGroups(), sssNoGroups(), sssNoGroups(), 0.0 );
 		return;
 	}
 	#if PROFILE_COUNT > 1
@@ -344,32 +347,43 @@ void main() {
 	float stepPx = sssAxisStep( pixel, surface, slope );
 	// Below half a pixel the kernel cannot move light to another pixel: no work.
 	if ( ! ( stepPx * kernelRadiusMm >= SSS_MIN_KERNEL_PIXELS ) ) {
-		sssEndGroups( centre, centre, coverage );
+		sssEndUnblurred( centre, coverage );
 		return;
 	}
 
 	int row = sssFootprintRow( stepPx );
 	vec3 energyBelow = sssReadProfile( tProfile, SSS_MARGINAL_ROW, 0.5 / stepPx, SSS_MARGINAL_RANGE_MM );
-	SssGroupLight weightSums;
-	sssSplit( 2.0 * energyBelow, 0, SSS_FOOTPRINT_ROW( row ), weightSums );
-	SssGroupLight sums = SssGroupLight( centre.first * weightSums.first, centre.second * weightSums.second, centre.third * weightSums.third );
+	SssGroupLight weightSums = sssSplit( 2.0 * energyBelow, 0, SSS_FOOTPRINT_ROW( row ) );
+	SssGroupLight sums;
+	for ( int g = 0; g < SSS_GROUPS; g ++ ) sums.group[ g ] = centre.group[ g ] * weightSums.group[ g ];
 	int lastEdge = 0;
 	for ( int j = 0; j <= BLOCKS; j ++ ) {
 		vec3 weight;
 		float offsetPx;
 		bool last;
 		if ( ! sssFootprint( j, row, stepPx, energyBelow, lastEdge, weight, offsetPx, last ) ) break;
-		SssGroupLight parts;
-		sssSplit( weight, j + 1, SSS_FOOTPRINT_ROW( row ), parts );
+		SssGroupLight parts = sssSplit( weight, j + 1, SSS_FOOTPRINT_ROW( row ) );
 		sssAddGroupTap( offsetPx, parts, pixel, surface.r, slope, centre, sums, weightSums );
 		sssAddGroupTap( - offsetPx, parts, pixel, surface.r, slope, centre, sums, weightSums );
 		if ( last ) break;
 	}
-	SssGroupLight blurred = SssGroupLight(
-		sssNormalised( sums.first, weightSums.first, centre.first ),
-		sssNormalised( sums.second, weightSums.second, centre.second ),
-		sssNormalised( sums.third, weightSums.third, centre.third )
-	);
-	sssEndGroups( blurred, centre, coverage );
+	SssGroupLight blurred;
+	#if AXIS == 0
+		vec3 kept = vec3( 0.0 );
+		for ( int g = 0; g < SSS_GROUPS; g ++ ) kept += weightSums.group[ g ];
+		if ( ! all( greaterThan( kept, vec3( 0.0 ) ) ) ) { // the centre's own weight is 0 only past float range
+			sssEndUnblurred( centre, coverage );
+			return;
+		}
+		SssGroupLight share;
+		for ( int g = 0; g < SSS_GROUPS; g ++ ) {
+			share.group[ g ] = weightSums.group[ g ] / kept;
+			blurred.group[ g ] = sums.group[ g ] / kept;
+		}
+		sssEndGroups( blurred, centre, share, coverage );
+	#else
+		for ( int g = 0; g < SSS_GROUPS; g ++ ) blurred.group[ g ] = sssNormalised( sums.group[ g ], weightSums.group[ g ], centre.group[ g ] );
+		sssEndGroups( blurred, centre, sssNoGroups(), coverage );
+	#endif
 }
 #endif

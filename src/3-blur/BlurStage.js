@@ -7,7 +7,7 @@
 // The profiles are the orchestrator's (one per slot, src/profiles/profileSlots.js): setProfiles.
 // Over 300 lines because it is the stage's one owner: its settings' setters, the kernels of every
 // method and profile, the plan, the scissor and the two targets (the passes are their own files).
-import { NearestFilter, RGBAIntegerFormat, RGIntegerFormat, UnsignedIntType, WebGLRenderTarget } from 'three';
+import { NearestFilter, RGBAIntegerFormat, UnsignedIntType, WebGLRenderTarget } from 'three';
 import { computeKernel, kernelRadiusMm } from '../profiles/kernel.js';
 import { getProfile } from '../profiles/presets.js';
 import { AUTO_SAMPLES, METHOD_TABLE, PIPELINE_SCHEMA, checkOption } from '../options.js';
@@ -25,19 +25,17 @@ const TRANSPARENT_BLACK = new Float32Array(4);
 const ZERO_UINTS = new Uint32Array(4);
 
 /**
- * The isotropic blur's target between its passes: an RGBA32UI and an RG32UI attachment holding
- * the groups as halves (shaders/3-blur/kernelGroups.glsl); integer textures are read by texelFetch
- * only (nearest, no mipmaps).
+ * The isotropic blur's target between its passes: two RGBA32UI attachments holding the groups as
+ * halves (shaders/3-blur/kernelGroups.glsl); integer textures are read by texelFetch only
+ * (nearest, no mipmaps).
  */
 function createGroupTarget() {
   const target = new WebGLRenderTarget(1, 1, {
     count: 2, type: UnsignedIntType, format: RGBAIntegerFormat, internalFormat: 'RGBA32UI', depthBuffer: false, minFilter: NearestFilter, magFilter: NearestFilter, generateMipmaps: false,
   });
   const [first, second] = target.textures;
-  first.name = 'subsurface.horizontalGroups';
-  second.name = 'subsurface.horizontalGroup3';
-  second.format = RGIntegerFormat;
-  second.internalFormat = 'RG32UI';
+  first.name = 'subsurface.horizontalGroups12';
+  second.name = 'subsurface.horizontalGroups34';
   return target;
 }
 
@@ -132,7 +130,7 @@ export class BlurStage {
   /**
    * The isotropic blur's groups ('footprint' only): 'auto' (default) takes per frame the fewest
    * whose separable error is within src/3-blur/kernelGroups.js's budget at the frame's largest
-   * on-screen scale; 1..3 that many; 1 is the one-kernel blur (exact along the screen axes only).
+   * on-screen scale; 1..4 that many; 1 is the one-kernel blur (exact along the screen axes only).
    * Changing between 1 and the others recompiles the blur once; the count per frame does not.
    * @type {'auto'|number}
    */

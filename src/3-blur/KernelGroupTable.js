@@ -1,17 +1,21 @@
 // The isotropic blur's split of every footprint's energy between its groups, as the integer
-// texture shaders/3-blur/kernelGroups.glsl reads (one texel per footprint: groups 1 and 2's RGB
-// fractions as six halves; group 3 takes the rest), and the groups' energy shares as its uniform.
+// texture shaders/3-blur/kernelGroups.glsl reads (one texel per footprint: groups 1..3's RGB
+// fractions as 10-bit unorms, three to a channel; the last group takes the rest, so the parts sum
+// to the footprint's exact energy whatever the rounding), and the groups' energy shares as its uniform.
 // Slot p's rows follow the footprint table's stacking (p · FOOTPRINT_ROWS + row). One table serves
 // both passes (the horizontal and the vertical split alike). Refilled only when a slot's grouping
 // or footprint table changes (both are cached by scale step: a zoom refills it rarely).
-import { DataTexture, DataUtils, NearestFilter, RGBAIntegerFormat, UnsignedIntType } from 'three';
+import { DataTexture, NearestFilter, RGBAIntegerFormat, UnsignedIntType } from 'three';
 import { FOOTPRINT_ROWS } from '../profiles/footprints.js';
 import { MAX_KERNEL_GROUPS, footprintGroupFractions, groupEnergies } from './kernelGroups.js';
 
 /** fractions → packed texels, cached per grouping and footprint table (both are cached objects). */
 const packedTables = new WeakMap();
 
-/** footprintGroupFractions packed as the shader reads them: per texel (f1.r, f1.g), (f1.b, f2.r), (f2.g, f2.b) as halves, low half first. */
+/** A fraction in [0, 1] as a 10-bit unorm (the shader divides by 1023). */
+const unorm10 = (x) => Math.round(Math.min(Math.max(x, 0), 1) * 1023);
+
+/** footprintGroupFractions packed as the shader reads them: texel channel g holds group g + 1's (r, g, b) in bits 0, 10, 20. */
 function packedFractions(grouping, table) {
   let byTable = packedTables.get(grouping);
   if (!byTable) packedTables.set(grouping, (byTable = new WeakMap()));
@@ -19,12 +23,11 @@ function packedFractions(grouping, table) {
     const fractions = footprintGroupFractions(grouping, table);
     const texels = fractions.length / (MAX_KERNEL_GROUPS * 3);
     const packed = new Uint32Array(texels * 4);
-    const half = (i) => DataUtils.toHalfFloat(fractions[i]);
     for (let t = 0; t < texels; t++) {
-      const f = t * MAX_KERNEL_GROUPS * 3; // group 1 at f .. f + 2, group 2 at f + 3 .. f + 5
-      packed[t * 4] = half(f) | (half(f + 1) << 16);
-      packed[t * 4 + 1] = half(f + 2) | (half(f + 3) << 16);
-      packed[t * 4 + 2] = half(f + 4) | (half(f + 5) << 16);
+      for (let g = 0; g < MAX_KERNEL_GROUPS - 1; g++) {
+        const f = (t * MAX_KERNEL_GROUPS + g) * 3;
+        packed[t * 4 + g] = unorm10(fractions[f]) | (unorm10(fractions[f + 1]) << 10) | (unorm10(fractions[f + 2]) << 20);
+      }
     }
     byTable.set(table, packed);
   }

@@ -134,7 +134,7 @@ export class SubsurfaceBlurPass extends SurfacePass {
    * screen axes only); MAX_KERNEL_GROUPS compiles the grouped blur once, whose frame then says
    * how many groups hold light (setGroupFrame). The horizontal pass then writes the groups'
    * integer target, the vertical one reads it (shaders/3-blur/kernelGroups.glsl).
-   * @param {1|3} capacity
+   * @param {1|4} capacity
    */
   setGroups(capacity) {
     if (capacity !== 1 && capacity !== MAX_KERNEL_GROUPS) throw new RangeError(`SubsurfaceBlurPass.setGroups: capacity must be 1 or ${MAX_KERNEL_GROUPS}, got ${describe(capacity)}`);

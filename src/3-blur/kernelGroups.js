@@ -12,8 +12,8 @@
 // The WebGL blur (method 'footprint', shaders/3-blur/kernelGroups.glsl) splits each footprint's
 // exact marginal energy between the groups by footprintGroupFractions (below), taken at the
 // footprint table row's scale, and carries the groups between its passes packed as halves: the
-// same taps and fetches as one group, with the vertical pass reading a third group's texel only when
-// the frame has three. (A first design, one half-float attachment per group and the group energies
+// same taps and fetches as one group, with the vertical pass reading the third and fourth groups'
+// texel only when the frame has more than two. (A first design, one half-float attachment per group and the group energies
 // from erf per Gaussian and tap, measured 7.1x the one-group blur's time.)
 // test/node/3-blur/kernelGroups.test.js holds the closed forms.
 import { gaussianSumOf } from '../profiles/gaussianFit.js';
@@ -37,11 +37,12 @@ export const ISOTROPY_ERROR = 0.016;
 export const ISOTROPY_STEP_ERROR = 0.006;
 
 /**
- * The most groups: the blur carries three groups' RGB and the coverage between its passes in one
- * RGBA32UI and one RG32UI texel (ten halves; shaders/3-blur/kernelGroups.glsl). Three are within
- * ISOTROPY_ERROR for skin at every scale (0.013–0.021 against 0.040–0.047 for two).
+ * The most groups: the blur carries four groups' RGB and the coverage between its passes in two
+ * RGBA32UI texels (halves; shaders/3-blur/kernelGroups.glsl). Closed forms at 1–10 px/mm: skin
+ * 0.013–0.021 with three, skinBurley 0.030–0.032 with three and 0.010–0.016 with four, milk 0.020
+ * with four.
  */
-export const MAX_KERNEL_GROUPS = 3;
+export const MAX_KERNEL_GROUPS = 4;
 
 /** The angles the transfer error is taken at: by symmetry 0..45° covers every angle. */
 const ANGLES = Object.freeze([0, 1, 2, 3, 4].map((k) => (k * Math.PI) / 16));
