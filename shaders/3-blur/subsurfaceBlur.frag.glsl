@@ -5,7 +5,7 @@
 // resolved from MSAA, shaders/common/surfaceSample.glsl), SSS_MAX_SLOPE, SSS_MIN_KERNEL_PIXELS,
 // SSS_ENERGY_LEFT (the numbers of src/3-blur/samplingModel.js), PROFILE_COUNT (the profiles in the
 // frame; above 1 each pixel blurs with its own, shaders/common/surfaceSample.glsl), SSS_GROUPS (1:
-// one kernel; 4: the isotropic blur's groups, 'footprint' only, shaders/3-blur/kernelGroups.glsl:
+// one kernel; 2..4: the isotropic blur's groups, 'footprint' only, shaders/3-blur/kernelGroups.glsl:
 // the horizontal pass then writes the groups, the vertical one sums them) and KERNEL_MODE:
 //   KERNEL_MODE_TAPS: fixed weights and offsets (computeKernel's reference or marginal kernel);
 //   KERNEL_MODE_FOOTPRINT: per pixel, footprints of whole pixels from the FootprintTable, weighted
@@ -123,44 +123,46 @@ void addTap( const in float offsetPx, const in vec3 weight, const in ivec2 pixel
 	weightSum += weight * kept;
 }
 
-#if SSS_GROUPS > 1
-	// Adds `light` kept with `kept` at the groups' weights `parts` to their sums.
-	void sssAddGroups( const in SssGroupLight parts, const in SssGroupLight light, const in float kept, inout SssGroupLight sums, inout SssGroupLight weightSums ) {
-		for ( int g = 0; g < SSS_GROUPS; g ++ ) {
-			sums.group[ g ] += parts.group[ g ] * light.group[ g ];
-			weightSums.group[ g ] += parts.group[ g ] * kept;
-		}
+#if SSS_GROUPS > 1 && AXIS == 1
+	// Adds a texel's groups at `share` of the tap (its linear weight) to the tap's light by the tap
+	// rule ('lerp': each group moved towards the centre's by the farness); returns the weight kept.
+	float sssAddGroupTexel( const in ivec2 texel, const in float share, const in float expectedDepth,
+		const in vec3 centre0, const in vec3 centre1, const in vec3 centre2, const in vec3 centre3,
+		inout vec3 light0, inout vec3 light1, inout vec3 light2, inout vec3 light3 ) {
+		vec3 a, b, c, d;
+		float coverage = sssGroupsAt( texel, a, b, c, d );
+		if ( ! ( coverage > 0.0 ) ) return 0.0;
+		float farness;
+		float weight = share * sssTexelRule( texel, coverage, expectedDepth, farness );
+		#if FOLLOW_SURFACE == FOLLOW_SURFACE_LERP
+			a = mix( a, centre0, farness );
+			b = mix( b, centre1, farness );
+			#if SSS_GROUPS > 2
+				c = mix( c, centre2, farness );
+				d = mix( d, centre3, farness );
+			#endif
+		#endif
+		light0 += a * weight;
+		light1 += b * weight;
+		#if SSS_GROUPS > 2
+			light2 += c * weight;
+			light3 += d * weight;
+		#endif
+		return weight;
 	}
 
-	#if AXIS == 1
-		// The vertical pass's tap over the groups: as sssLinearTap, each group apart.
-		float sssLinearGroupTap( const in float offsetPx, const in ivec2 pixel, const in float centreDepth, const in float slope, const in SssGroupLight centre, out SssGroupLight light ) {
-			ivec2 texel0, texel1;
-			float fraction;
-			light = sssNoGroups();
-			if ( ! sssTapTexels( offsetPx, pixel, texel0, texel1, fraction ) ) return 0.0;
-			SssGroupLight light0, light1 = light;
-			float weight0 = ( 1.0 - fraction ) * sssGroupTapWeight( texel0, centreDepth + slope * float( texel0[ AXIS ] - pixel[ AXIS ] ), centre, light0 );
-			float weight1 = 0.0;
-			if ( SSS_SKIP_EMPTY_TEXELS == 0 || fraction > 0.0 ) weight1 = fraction * sssGroupTapWeight( texel1, centreDepth + slope * float( texel1[ AXIS ] - pixel[ AXIS ] ), centre, light1 );
-			for ( int g = 0; g < SSS_GROUPS; g ++ ) light.group[ g ] = light0.group[ g ] * weight0 + light1.group[ g ] * weight1;
-			return weight0 + weight1;
-		}
-	#endif
-
-	// One tap of the groups at `offsetPx`: the horizontal pass splits the diffuse light's tap, the
-	// vertical one reads each group's own.
-	void sssAddGroupTap( const in float offsetPx, const in SssGroupLight parts, const in ivec2 pixel, const in float centreDepth, const in float slope, const in SssGroupLight centre, inout SssGroupLight sums, inout SssGroupLight weightSums ) {
-		SssGroupLight light;
-		#if AXIS == 0
-			vec3 tap;
-			float kept = sssLinearTap( offsetPx, pixel, centreDepth, slope, centre.group[ 0 ], tap ); // the horizontal centre: the diffuse light in each
-			for ( int g = 0; g < SSS_GROUPS; g ++ ) light.group[ g ] = tap;
-		#else
-			float kept = sssLinearGroupTap( offsetPx, pixel, centreDepth, slope, centre, light );
-		#endif
-		if ( kept <= 0.0 ) return;
-		sssAddGroups( parts, light, kept, sums, weightSums );
+	// The vertical pass's tap over the groups: as sssLinearTap, each group apart.
+	float sssLinearGroupTap( const in float offsetPx, const in ivec2 pixel, const in float centreDepth, const in float slope,
+		const in vec3 centre0, const in vec3 centre1, const in vec3 centre2, const in vec3 centre3,
+		out vec3 light0, out vec3 light1, out vec3 light2, out vec3 light3 ) {
+		ivec2 texel0, texel1;
+		float fraction;
+		light0 = light1 = light2 = light3 = vec3( 0.0 );
+		if ( ! sssTapTexels( offsetPx, pixel, texel0, texel1, fraction ) ) return 0.0;
+		float kept = sssAddGroupTexel( texel0, 1.0 - fraction, centreDepth + slope * float( texel0[ AXIS ] - pixel[ AXIS ] ), centre0, centre1, centre2, centre3, light0, light1, light2, light3 );
+		// A tap on a texel centre weighs its second texel 0 (as sssLinearTap).
+		if ( SSS_SKIP_EMPTY_TEXELS == 0 || fraction > 0.0 ) kept += sssAddGroupTexel( texel1, fraction, centreDepth + slope * float( texel1[ AXIS ] - pixel[ AXIS ] ), centre0, centre1, centre2, centre3, light0, light1, light2, light3 );
+		return kept;
 	}
 #endif
 
@@ -275,70 +277,51 @@ vec3 sssNormalised( const in vec3 sum, const in vec3 weightSum, const in vec3 fa
 	);
 }
 
-// The horizontal pass's output: each group's light over all the groups' kept weight, so the groups
-// sum to the one-kernel blur exactly (and the vertical pass, normalising each group by its own,
-// gives the one-kernel answer along both axes); `share` is each group's part of that weight, what
-// its unblurred light is mixed in by with `strength` < 1. The vertical pass's: the groups' sum, each
-// normalised (sssNormalised), mixed with the unblurred sum. Both checked finite.
-void sssEndGroups( const in SssGroupLight blurred, const in SssGroupLight centre, const in SssGroupLight share, const in float coverage ) {
-	#if AXIS == 0
-		SssGroupLight written;
-		SssGroupLight unblurred;
-		vec3 sum = vec3( 0.0 );
-		for ( int g = 0; g < SSS_GROUPS; g ++ ) {
-			unblurred.group[ g ] = share.group[ g ] * centre.group[ g ];
-			written.group[ g ] = mix( unblurred.group[ g ], blurred.group[ g ], strength );
-			sum += written.group[ g ];
-		}
-		if ( sssFinite( sum ) ) sssWriteGroups( written, coverage );
-		else sssWriteGroups( unblurred, coverage );
-	#else
-		vec3 unblurred = vec3( 0.0 );
-		vec3 sum = vec3( 0.0 );
-		for ( int g = 0; g < SSS_GROUPS; g ++ ) {
-			unblurred += centre.group[ g ];
-			sum += blurred.group[ g ];
-		}
-		vec3 result = mix( unblurred, sum, strength );
-		gl_FragColor = sssCovered( sssFinite( result ) ? result : unblurred, coverage );
-	#endif
-}
+#if AXIS == 0
+	// A pixel that does no work (its kernel under half a pixel): its light split by the groups'
+	// shares of the profile's energy.
+	void sssWriteUnblurred( const in vec3 centre, const in float coverage ) {
+		int first = SSS_GROUP_SLOT * SSS_MAX_GROUPS;
+		#if SSS_GROUPS > 2
+			vec3 energy2 = groupEnergies[ first + 2 ];
+			#if SSS_GROUPS > 3
+				vec3 energy3 = groupEnergies[ first + 3 ];
+			#else
+				vec3 energy3 = vec3( 0.0 );
+			#endif
+		#else
+			vec3 energy2 = vec3( 0.0 ), energy3 = vec3( 0.0 );
+		#endif
+		sssWriteGroups( centre * groupEnergies[ first ], centre * groupEnergies[ first + 1 ], centre * energy2, centre * energy3, coverage );
+	}
+#endif
 
-// A pixel that does no work (its kernel under half a pixel): the horizontal pass writes its light
-// split by the groups' shares of the profile's energy, the vertical one their sum.
-void sssEndUnblurred( const in SssGroupLight centre, const in float coverage ) {
-	#if AXIS == 0
-		SssGroupLight energies;
-		SssGroupLight split;
-		for ( int g = 0; g < SSS_GROUPS; g ++ ) {
-			energies.group[ g ] = groupEnergies[ SSS_GROUP_SLOT * SSS_GROUPS + g ];
-			split.group[ g ] = energies.group[ g ] * centre.group[ g ];
-		}
-		sssEndGroups( split, centre, energies, coverage );
-	#else
-		sssEndGroups( centre, centre, sssNoGroups(), coverage );
-	#endif
-}
-
+// The groups' blur. The horizontal pass writes each group's light over all the groups' kept weight,
+// so the groups sum to the one-kernel blur exactly, and the vertical pass, normalising each group by
+// its own weight, gives the one-kernel answer along both axes; off them only the cross terms inside a
+// group are left. With `strength` < 1 each group is mixed with its share of the unblurred light.
 void main() {
 	ivec2 pixel = ivec2( gl_FragCoord.xy );
-	SssGroupLight centre;
-	float coverage;
-	vec2 surface;
 	#if AXIS == 0
 		SssCentre pixelCentre = sssCentreAt( pixel );
-		for ( int g = 0; g < SSS_GROUPS; g ++ ) centre.group[ g ] = pixelCentre.colour; // each group's input: the diffuse light
-		coverage = pixelCentre.coverage;
-		surface = pixelCentre.surface;
+		float coverage = pixelCentre.coverage;
+		vec2 surface = pixelCentre.surface;
+		vec3 centre = pixelCentre.colour;
+		// Not a subsurface pixel: nothing (the diffuse attachment is 0 there), the mask kept.
+		if ( ! ( coverage > 0.0 ) ) {
+			sssWriteGroups( vec3( 0.0 ), vec3( 0.0 ), vec3( 0.0 ), vec3( 0.0 ), 0.0 );
+			return;
+		}
 	#else
-		coverage = sssGroupsAt( pixel, centre );
-		surface = sssUncovered( texelFetch( tSurface, pixel, 0 ).rg, coverage );
+		vec3 centre0, centre1, centre2, centre3;
+		float coverage = sssGroupsAt( pixel, centre0, centre1, centre2, centre3 );
+		vec2 surface = sssUncovered( texelFetch( tSurface, pixel, 0 ).rg, coverage );
+		vec3 unblurred = centre0 + centre1 + centre2 + centre3;
+		if ( ! ( coverage > 0.0 ) ) {
+			gl_FragColor = vec4( 0.0 );
+			return;
+		}
 	#endif
-	// Not a subsurface pixel: nothing (the diffuse attachment is 0 there), the mask kept.
-	if ( ! ( coverage > 0.0 ) ) {
-		sssEndGroups( sssNoGroups(), sssNoGroups(), sssNoGroups(), 0.0 );
-		return;
-	}
 	#if PROFILE_COUNT > 1
 		sssSlot = sssNearestSlot( pixel, coverage );
 	#endif
@@ -347,43 +330,90 @@ void main() {
 	float stepPx = sssAxisStep( pixel, surface, slope );
 	// Below half a pixel the kernel cannot move light to another pixel: no work.
 	if ( ! ( stepPx * kernelRadiusMm >= SSS_MIN_KERNEL_PIXELS ) ) {
-		sssEndUnblurred( centre, coverage );
+		#if AXIS == 0
+			sssWriteUnblurred( centre, coverage );
+		#else
+			gl_FragColor = sssCovered( unblurred, coverage );
+		#endif
 		return;
 	}
 
 	int row = sssFootprintRow( stepPx );
 	vec3 energyBelow = sssReadProfile( tProfile, SSS_MARGINAL_ROW, 0.5 / stepPx, SSS_MARGINAL_RANGE_MM );
-	SssGroupLight weightSums = sssSplit( 2.0 * energyBelow, 0, SSS_FOOTPRINT_ROW( row ) );
-	SssGroupLight sums;
-	for ( int g = 0; g < SSS_GROUPS; g ++ ) sums.group[ g ] = centre.group[ g ] * weightSums.group[ g ];
+	vec3 weightSum0, weightSum1, weightSum2, weightSum3;
+	sssSplit( 2.0 * energyBelow, 0, SSS_FOOTPRINT_ROW( row ), weightSum0, weightSum1, weightSum2, weightSum3 );
+	#if AXIS == 0
+		vec3 sum0 = centre * weightSum0, sum1 = centre * weightSum1, sum2 = centre * weightSum2, sum3 = centre * weightSum3;
+	#else
+		vec3 sum0 = centre0 * weightSum0, sum1 = centre1 * weightSum1, sum2 = centre2 * weightSum2, sum3 = centre3 * weightSum3;
+	#endif
 	int lastEdge = 0;
 	for ( int j = 0; j <= BLOCKS; j ++ ) {
 		vec3 weight;
 		float offsetPx;
 		bool last;
 		if ( ! sssFootprint( j, row, stepPx, energyBelow, lastEdge, weight, offsetPx, last ) ) break;
-		SssGroupLight parts = sssSplit( weight, j + 1, SSS_FOOTPRINT_ROW( row ) );
-		sssAddGroupTap( offsetPx, parts, pixel, surface.r, slope, centre, sums, weightSums );
-		sssAddGroupTap( - offsetPx, parts, pixel, surface.r, slope, centre, sums, weightSums );
+		vec3 part0, part1, part2, part3;
+		sssSplit( weight, j + 1, SSS_FOOTPRINT_ROW( row ), part0, part1, part2, part3 );
+		// Both sides' taps, then each group's part of their sum (the parts are the same on both sides).
+		#if AXIS == 0
+			vec3 light, other;
+			float kept = sssLinearTap( offsetPx, pixel, surface.r, slope, centre, light );
+			kept += sssLinearTap( - offsetPx, pixel, surface.r, slope, centre, other );
+			light += other;
+			sum0 += part0 * light;
+			sum1 += part1 * light;
+			#if SSS_GROUPS > 2
+				sum2 += part2 * light;
+				sum3 += part3 * light;
+			#endif
+		#else
+			vec3 light0, light1, light2, light3, other0, other1, other2, other3;
+			float kept = sssLinearGroupTap( offsetPx, pixel, surface.r, slope, centre0, centre1, centre2, centre3, light0, light1, light2, light3 );
+			kept += sssLinearGroupTap( - offsetPx, pixel, surface.r, slope, centre0, centre1, centre2, centre3, other0, other1, other2, other3 );
+			sum0 += part0 * ( light0 + other0 );
+			sum1 += part1 * ( light1 + other1 );
+			#if SSS_GROUPS > 2
+				sum2 += part2 * ( light2 + other2 );
+				sum3 += part3 * ( light3 + other3 );
+			#endif
+		#endif
+		weightSum0 += part0 * kept;
+		weightSum1 += part1 * kept;
+		#if SSS_GROUPS > 2
+			weightSum2 += part2 * kept;
+			weightSum3 += part3 * kept;
+		#endif
 		if ( last ) break;
 	}
-	SssGroupLight blurred;
+
 	#if AXIS == 0
-		vec3 kept = vec3( 0.0 );
-		for ( int g = 0; g < SSS_GROUPS; g ++ ) kept += weightSums.group[ g ];
+		vec3 kept = weightSum0 + weightSum1;
+		#if SSS_GROUPS > 2
+			kept += weightSum2 + weightSum3;
+		#endif
 		if ( ! all( greaterThan( kept, vec3( 0.0 ) ) ) ) { // the centre's own weight is 0 only past float range
-			sssEndUnblurred( centre, coverage );
+			sssWriteUnblurred( centre, coverage );
 			return;
 		}
-		SssGroupLight share;
-		for ( int g = 0; g < SSS_GROUPS; g ++ ) {
-			share.group[ g ] = weightSums.group[ g ] / kept;
-			blurred.group[ g ] = sums.group[ g ] / kept;
-		}
-		sssEndGroups( blurred, centre, share, coverage );
+		vec3 inverse = 1.0 / kept;
+		// Each group's share of the weight is what its unblurred light is mixed in by.
+		vec3 light0 = mix( centre * weightSum0, sum0, strength ) * inverse;
+		vec3 light1 = mix( centre * weightSum1, sum1, strength ) * inverse;
+		vec3 light2 = vec3( 0.0 ), light3 = vec3( 0.0 );
+		#if SSS_GROUPS > 2
+			light2 = mix( centre * weightSum2, sum2, strength ) * inverse;
+			light3 = mix( centre * weightSum3, sum3, strength ) * inverse;
+		#endif
+		if ( sssFinite( light0 + light1 + light2 + light3 ) ) sssWriteGroups( light0, light1, light2, light3, coverage );
+		else sssWriteUnblurred( centre, coverage );
 	#else
-		for ( int g = 0; g < SSS_GROUPS; g ++ ) blurred.group[ g ] = sssNormalised( sums.group[ g ], weightSums.group[ g ], centre.group[ g ] );
-		sssEndGroups( blurred, centre, sssNoGroups(), coverage );
+		vec3 blurred = sssNormalised( sum0, weightSum0, centre0 ) + sssNormalised( sum1, weightSum1, centre1 );
+		#if SSS_GROUPS > 2
+			blurred += sssNormalised( sum2, weightSum2, centre2 ) + sssNormalised( sum3, weightSum3, centre3 );
+		#endif
+		vec3 result = mix( unblurred, blurred, strength );
+		gl_FragColor = sssCovered( sssFinite( result ) ? result : unblurred, coverage );
 	#endif
 }
 #endif

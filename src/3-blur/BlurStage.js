@@ -75,6 +75,7 @@ export class BlurStage {
     this._kernelGroups = checkKernelGroups(kernelGroups);
     this._groupTarget = null; // built when a grouped frame first needs it
     this._groupTable = new KernelGroupTable();
+    this._warmKey = null; // the passes' defines when every group count was last drawn
     /** The scattered diffuse light, premultiplied by its coverage like the multi-target's. */
     this.scatteredTarget = new WebGLRenderTarget(1, 1, { type, depthBuffer: false });
     this.scatteredTarget.texture.name = 'subsurface.scattered';
@@ -140,7 +141,6 @@ export class BlurStage {
     const next = checkKernelGroups(groups);
     this._checkGroupsMethod(this.method, next);
     this._kernelGroups = next;
-    this._applyGroups();
   }
 
   /** A count of groups above 1 needs method 'footprint' (RangeError); 'auto' is one kernel for the others. */
@@ -150,13 +150,9 @@ export class BlurStage {
     }
   }
 
-  /** The groups the separable passes are compiled for: MAX_KERNEL_GROUPS when the method and setting group, else 1. */
+  /** The most groups a frame may take: MAX_KERNEL_GROUPS when the method and setting group, else 1 (one kernel). */
   get groupCapacity() {
     return METHOD_TABLE[this.method].blur === 'footprint' && this._kernelGroups !== 1 ? MAX_KERNEL_GROUPS : 1;
-  }
-
-  _applyGroups() {
-    for (const pass of [this.horizontalPass, this.verticalPass]) pass.setGroups(this.groupCapacity);
   }
 
   /** The dense 2D reference (method 'dense'), built on first use. */
@@ -246,37 +242,69 @@ export class BlurStage {
    */
   render(renderer, camera, timed, plan = this.lastPlan, box = null) {
     for (const pass of this.surfacePasses) pass.camera = camera;
+    if (this.groupCapacity > 1) this._ensureGroupTarget();
     // The scissor's clears (when the box moved) are timed with the first pass.
     const scissored = () => this._scissor(renderer, this.confineToSubsurface ? box : null);
     if (plan.passes === 'dense') {
       timed('dense', () => { scissored(); this.densePass.render(renderer, this.scatteredTarget, null); });
     } else {
-      const horizontalTarget = this._horizontalTarget(plan);
-      timed('blurH', () => { scissored(); this.horizontalPass.render(renderer, horizontalTarget, null); });
+      timed('blurH', () => {
+        scissored();
+        this._warmGroupCounts(renderer);
+        this.horizontalPass.render(renderer, this._horizontalTarget(plan), null);
+      });
       timed('blurV', () => this.verticalPass.render(renderer, this.scatteredTarget, null));
     }
   }
 
   /**
-   * The horizontal pass's target for the frame, with the grouped passes given the frame's groups
-   * (their fraction table, energies and the target's attachments).
+   * The horizontal pass's target for the frame, with both passes given the frame's groups (their
+   * fraction table, energies and the group target's attachments); one group blurs as without them.
    * @param {import('./blurPlan.js').BlurPlan} plan
    */
   _horizontalTarget(plan) {
-    if (this.groupCapacity === 1) return this._blurTarget;
-    if (!this._groupTarget) {
-      this._groupTarget = createGroupTarget();
-      this._groupTarget.setSize(this._size.width, this._size.height);
-      this._scissorKey = null; // the new target is cleared and scissored with the others
+    const count = this.groupCapacity > 1 && plan.groupings ? plan.groups : 1;
+    if (count === 1) {
+      for (const pass of [this.horizontalPass, this.verticalPass]) pass.setGroupFrame({ count: 1 });
+      return this._blurTarget;
     }
-    // A plan made before the groups were asked for blurs as one group.
-    const groupings = plan.groupings ?? this.profileLookups.map((lookup) => kernelGroupsAt(lookup.profile, 0, 1));
+    this._groupFrame(plan.groupings);
+    return this._groupTarget;
+  }
+
+  /** Gives both passes the groups of `groupings` (per slot) and the group target, built on first use. */
+  _groupFrame(groupings) {
+    this._ensureGroupTarget();
     const samples = this.horizontalPass.footprintSamples;
     const fractions = this._groupTable.update(groupings, this.profileLookups.map((lookup) => tableOf(lookup, samples)));
     const frame = { count: Math.max(...groupings.map((g) => g.count)), fractions, energies: this._groupTable.energies };
     this.horizontalPass.setGroupFrame(frame);
     this.verticalPass.setGroupFrame({ ...frame, groups: this._groupTarget.textures });
-    return this._groupTarget;
+  }
+
+  /** The group target, built when groups first become possible (then cleared and scissored with the others). */
+  _ensureGroupTarget() {
+    if (this._groupTarget) return;
+    this._groupTarget = createGroupTarget();
+    this._groupTarget.setSize(this._size.width, this._size.height);
+    this._scissorKey = null;
+  }
+
+  /**
+   * With groups possible, the first frame (and the first after a setting changed the passes'
+   * defines) draws both passes once at every count, so each count's programs exist before 'auto'
+   * first picks it: no later frame compiles (test/browser/dropIn.test.js counts the programs).
+   */
+  _warmGroupCounts(renderer) {
+    if (this.groupCapacity === 1) return;
+    const key = JSON.stringify([this.horizontalPass.material.defines, this.verticalPass.material.defines, this.profileLookups.length]);
+    if (key === this._warmKey) return;
+    for (let count = 2; count <= MAX_KERNEL_GROUPS; count++) {
+      this._groupFrame(this.profileLookups.map((lookup) => kernelGroupsAt(lookup.profile, 0, count)));
+      this.horizontalPass.render(renderer, this._groupTarget, null);
+      this.verticalPass.render(renderer, this.scatteredTarget, null);
+    }
+    this._warmKey = key;
   }
 
   /**
@@ -363,7 +391,6 @@ export class BlurStage {
       pass.setMode(mode);
       pass.setStrength(this._settings.strength ?? [1, 1, 1]);
     }
-    this._applyGroups();
     this._setPassKernels(this.kernel);
   }
 

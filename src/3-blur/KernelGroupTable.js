@@ -12,10 +12,26 @@ import { MAX_KERNEL_GROUPS, footprintGroupFractions, groupEnergies } from './ker
 /** fractions → packed texels, cached per grouping and footprint table (both are cached objects). */
 const packedTables = new WeakMap();
 
-/** A fraction in [0, 1] as a 10-bit unorm (the shader divides by 1023). */
-const unorm10 = (x) => Math.round(Math.min(Math.max(x, 0), 1) * 1023);
+/** The 10-bit unorm's one (the shader divides by it). */
+const UNORM_ONE = 1023;
 
-/** footprintGroupFractions packed as the shader reads them: texel channel g holds group g + 1's (r, g, b) in bits 0, 10, 20. */
+/**
+ * `fractions` (summing to 1) as integers summing to UNORM_ONE exactly, each within one of its
+ * share (largest remainders), so the shader's parts add up to the footprint's weight.
+ */
+function unormShares(fractions) {
+  const scaled = fractions.map((f) => Math.min(Math.max(f, 0), 1) * UNORM_ONE);
+  const shares = scaled.map(Math.floor);
+  let left = UNORM_ONE - shares.reduce((a, b) => a + b, 0);
+  const order = scaled.map((x, i) => [x - Math.floor(x), i]).sort((a, b) => b[0] - a[0]);
+  for (let k = 0; left > 0; k = (k + 1) % order.length, left--) shares[order[k][1]]++;
+  return shares;
+}
+
+/**
+ * footprintGroupFractions packed as the shader reads them: texel channel g holds group g + 1's
+ * (r, g, b) share in bits 0, 10, 20; group 4 takes the rest in the shader.
+ */
 function packedFractions(grouping, table) {
   let byTable = packedTables.get(grouping);
   if (!byTable) packedTables.set(grouping, (byTable = new WeakMap()));
@@ -24,9 +40,9 @@ function packedFractions(grouping, table) {
     const texels = fractions.length / (MAX_KERNEL_GROUPS * 3);
     const packed = new Uint32Array(texels * 4);
     for (let t = 0; t < texels; t++) {
-      for (let g = 0; g < MAX_KERNEL_GROUPS - 1; g++) {
-        const f = (t * MAX_KERNEL_GROUPS + g) * 3;
-        packed[t * 4 + g] = unorm10(fractions[f]) | (unorm10(fractions[f + 1]) << 10) | (unorm10(fractions[f + 2]) << 20);
+      for (let c = 0; c < 3; c++) {
+        const shares = unormShares(Array.from({ length: MAX_KERNEL_GROUPS }, (_, g) => fractions[(t * MAX_KERNEL_GROUPS + g) * 3 + c]));
+        for (let g = 0; g < MAX_KERNEL_GROUPS - 1; g++) packed[t * 4 + g] |= shares[g] << (10 * c);
       }
     }
     byTable.set(table, packed);

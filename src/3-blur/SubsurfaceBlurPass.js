@@ -92,7 +92,7 @@ export class SubsurfaceBlurPass extends SurfacePass {
       name: `SubsurfaceBlurPass(${direction})`,
       fragmentShader: blurGlsl,
       chunks: CHUNKS,
-      defines: { AXIS: DIRECTIONS.indexOf(direction), SAMPLES: 1, SSS_SKIP_EMPTY_TEXELS: 1, SSS_GROUPS: 1, ...FOOTPRINT_DEFINES, ...enumDefines('KERNEL_MODE', KERNEL_MODES, mode) },
+      defines: { AXIS: DIRECTIONS.indexOf(direction), SAMPLES: 1, SSS_SKIP_EMPTY_TEXELS: 1, SSS_GROUPS: 1, SSS_MAX_GROUPS: MAX_KERNEL_GROUPS, ...FOOTPRINT_DEFINES, ...enumDefines('KERNEL_MODE', KERNEL_MODES, mode) },
       uniforms: {
         kernel: { value: new Float32Array(4) },
         tapCount: { value: 1 },
@@ -103,8 +103,7 @@ export class SubsurfaceBlurPass extends SurfacePass {
         marginalRangesMm: { value: new Float32Array(1) },
         tFootprints: { value: null },
         tKernels: { value: null },
-        // The isotropic blur's groups (setGroups, setGroupFrame; shaders/3-blur/kernelGroups.glsl).
-        groupCount: { value: 1 },
+        // The isotropic blur's groups (setGroupFrame; shaders/3-blur/kernelGroups.glsl).
         groupEnergies: { value: new Float32Array(MAX_KERNEL_GROUPS * 3) },
         tGroupFractions: { value: null },
         tGroups0: { value: null },
@@ -114,8 +113,9 @@ export class SubsurfaceBlurPass extends SurfacePass {
     // GLSL 3: the horizontal pass of the groups writes two unsigned-integer attachments, so the
     // shader declares its own outputs.
     this.material.glslVersion = GLSL3;
-    /** The groups the shader is compiled for: 1 (one kernel) or MAX_KERNEL_GROUPS (setGroups). */
-    this.groupCapacity = 1;
+    /** This frame's groups (setGroupFrame): 1 blurs with `material`, more with its variant for that count. */
+    this.groups = 1;
+    this._groupMaterials = new Map(); // count → the material compiled with SSS_GROUPS count
     this.direction = direction;
     this.mode = mode;
     /** The footprint allocation for the profile and the kernel's tap count ('footprint' mode). */
@@ -130,31 +130,35 @@ export class SubsurfaceBlurPass extends SurfacePass {
   }
 
   /**
-   * The isotropic blur ('footprint' mode): 1 blurs with one kernel (separable, exact along the
-   * screen axes only); MAX_KERNEL_GROUPS compiles the grouped blur once, whose frame then says
-   * how many groups hold light (setGroupFrame). The horizontal pass then writes the groups'
-   * integer target, the vertical one reads it (shaders/3-blur/kernelGroups.glsl).
-   * @param {1|4} capacity
+   * This frame's groups (the isotropic blur, 'footprint' mode; shaders/3-blur/kernelGroups.glsl):
+   * 1 blurs with one kernel (`material`, separable, exact along the screen axes only); 2..4 with
+   * `material`'s variant compiled for that count, which follows its defines (a program per count,
+   * kept: a change of count is no recompile once each has been drawn). The horizontal pass then
+   * writes the group target, the vertical one reads its attachments (`groups`).
+   * @param {{ count: number, energies?: Float32Array, fractions?: import('three').Texture, groups?: readonly import('three').Texture[] }} frame
    */
-  setGroups(capacity) {
-    if (capacity !== 1 && capacity !== MAX_KERNEL_GROUPS) throw new RangeError(`SubsurfaceBlurPass.setGroups: capacity must be 1 or ${MAX_KERNEL_GROUPS}, got ${describe(capacity)}`);
-    if (capacity > 1 && this.mode !== 'footprint') throw new RangeError(`SubsurfaceBlurPass.setGroups: groups need the 'footprint' mode, the pass is in '${this.mode}'`);
-    setDefines(this.material, { SSS_GROUPS: capacity });
-    this.groupCapacity = capacity;
-  }
-
-  /**
-   * This frame's groups (a compiled capacity above 1): how many hold light, their energy shares
-   * and the fraction table (KernelGroupTable), and for the vertical pass the horizontal one's
-   * two attachments. Uniforms only: no recompile.
-   * @param {{ count: number, energies: Float32Array, fractions: import('three').Texture, groups?: readonly import('three').Texture[] }} frame
-   */
-  setGroupFrame({ count, energies, fractions, groups = [] }) {
-    this.uniforms.groupCount.value = count;
+  setGroupFrame({ count, energies = null, fractions = null, groups = [] }) {
+    if (!Number.isInteger(count) || count < 1 || count > MAX_KERNEL_GROUPS) throw new RangeError(`SubsurfaceBlurPass.setGroupFrame: count must be an integer in 1..${MAX_KERNEL_GROUPS}, got ${describe(count)}`);
+    if (count > 1 && this.mode !== 'footprint') throw new RangeError(`SubsurfaceBlurPass.setGroupFrame: groups need the 'footprint' mode, the pass is in '${this.mode}'`);
+    this.groups = count;
+    if (count === 1) return;
     this.uniforms.groupEnergies.value = energies;
     this.uniforms.tGroupFractions.value = fractions;
     this.uniforms.tGroups0.value = groups[0] ?? null;
     this.uniforms.tGroups1.value = groups[1] ?? null;
+  }
+
+  /** The material of this frame's groups: `material`, or its variant for the count (defines synced, uniforms shared). */
+  _groupMaterial() {
+    if (this.groups === 1) return this.material;
+    let variant = this._groupMaterials.get(this.groups);
+    if (!variant) {
+      variant = this.material.clone();
+      variant.uniforms = this.material.uniforms; // one set of uniforms for every count
+      this._groupMaterials.set(this.groups, variant);
+    }
+    setDefines(variant, { ...this.material.defines, SSS_GROUPS: this.groups });
+    return variant;
   }
 
   /** @param {number[]} strength RGB in [0, 1] ('footprint' mode; see the constructor) */
@@ -204,7 +208,7 @@ export class SubsurfaceBlurPass extends SurfacePass {
     }
     setDefines(this.material, enumDefines('KERNEL_MODE', KERNEL_MODES, mode));
     this.mode = mode;
-    if (mode !== 'footprint' && this.groupCapacity > 1) this.setGroups(1); // fixed taps blur with one kernel
+    if (mode !== 'footprint') this.groups = 1; // fixed taps blur with one kernel
   }
 
   /**
@@ -271,11 +275,20 @@ export class SubsurfaceBlurPass extends SurfacePass {
       this.uniforms.tFootprints.value = this.footprintTable.update(this.footprintSamples);
     }
     this.uniforms.kernelRadiusMm.value = this.radiusMm;
-    super.render(renderer, writeBuffer, readBuffer, deltaTime, maskActive);
+    // ShaderPass draws `material`: this frame's groups' variant stands in for the draw.
+    const base = this.material;
+    this.material = this._groupMaterial();
+    try {
+      super.render(renderer, writeBuffer, readBuffer, deltaTime, maskActive);
+    } finally {
+      this.material = base;
+    }
   }
 
   dispose() {
     super.dispose();
+    for (const variant of this._groupMaterials.values()) variant.dispose();
+    this._groupMaterials.clear();
     this.footprintTable?.dispose();
     this.profileStack.dispose();
     this.uniforms.tKernels.value?.dispose();

@@ -317,29 +317,6 @@ export function kernelGroupsAt(profile, pxPerMm, setting = 'auto') {
 /** 'auto' groups at `pxPerMm` (kernelGroupsAt with 'auto'). @param {object} profile @param {number} pxPerMm */
 export const autoKernelGroups = (profile, pxPerMm) => kernelGroupsAt(profile, pxPerMm, 'auto');
 
-/**
- * The grouping as the blur shader's uniforms: per Gaussian i, 1/√(2 v_i) (per mm: erf's argument
- * scale), and its RGB weight in each group g at [i · count + g] (its weight times its fraction in
- * the group: 0 where channel c of Gaussian i lies in other groups); per group its RGB energy.
- * @param {ReturnType<typeof kernelGroups>} grouping
- * @returns {{ erfScales: Float32Array, weights: Float32Array, energies: Float32Array }}
- */
-export function groupUniforms({ count, gaussians, members }) {
-  const n = gaussians.length;
-  const erfScales = Float32Array.from(gaussians, (g) => 1 / Math.sqrt(2 * g.varianceMm2));
-  const weights = new Float32Array(n * count * 3);
-  const energies = new Float32Array(count * 3);
-  for (let c = 0; c < 3; c++) {
-    members[c].forEach((member, g) => {
-      member.forEach((fraction, i) => {
-        weights[(i * count + g) * 3 + c] = fraction * gaussians[i].weights[c];
-        energies[g * 3 + c] += fraction * gaussians[i].weights[c];
-      });
-    });
-  }
-  return { erfScales, weights, energies };
-}
-
 /** Each group's share of the profile's energy per channel (summing to 1): [g][c]. @param {ReturnType<typeof kernelGroups>} grouping */
 export function groupEnergies({ gaussians, members }) {
   const energies = members[0].map(() => [0, 0, 0]);

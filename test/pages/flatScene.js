@@ -4,7 +4,9 @@
 // unit = 1 mm, widthMm 1), lit evenly from the camera (a white Lambert surface: diffuse light =
 // albedo). Its albedo varies along the plane's x axis, turned by `angleDeg` on screen: 'cosines' is
 // 0.5 + 0.1 Σ cos(2π f_k x + φ_k) (f in cycles per mm), 'step' is 1 for x ≥ 0 and `low` below (the
-// edge on a pixel boundary through the view's centre). Nothing here is part of the library.
+// edge on a pixel boundary through the view's centre), 'spot' one lit pixel (albedo 1, the rest `low`)
+// just up and right of the view's centre, the plane's texels on the pixels (`angleDeg` 0 only).
+// Nothing here is part of the library.
 import * as THREE from 'three';
 
 /** A float DataTexture from f(x, y) → [r, g, b]; nearest filtering so edges stay hard. */
@@ -34,6 +36,12 @@ export function flatScene({ width, height, pxPerMm, pattern, frequencies = [], p
   let map;
   if (pattern === 'step') {
     map = dataTexture(2, 1, (x) => (x === 0 ? [low, low, low] : [1, 1, 1]));
+  } else if (pattern === 'spot') {
+    if (angleDeg !== 0) throw new RangeError(`flatScene: the spot is on the pixel grid, angleDeg must be 0, got ${angleDeg}`);
+    // One texel per pixel: the plane spans 2 · size mm = texels pixels, its edge on a pixel boundary.
+    const texels = Math.round(2 * size * pxPerMm);
+    if (Math.abs(texels - 2 * size * pxPerMm) > 1e-6 || texels % 2 !== 0) throw new RangeError(`flatScene: the spot needs whole pixels across the plane, got ${2 * size * pxPerMm}`);
+    map = dataTexture(texels, texels, (x, y) => (x === texels / 2 && y === texels / 2 ? [1, 1, 1] : [low, low, low]));
   } else {
     const texels = 8192;
     map = dataTexture(texels, 1, (i) => {

@@ -319,7 +319,7 @@ function buildScene(name, options = {}) {
 }
 
 window.lab = {
-  THREE, SSS, EffectComposer, RenderPass, ShaderPass, OutputPass, createRenderer, createComposer, read, dataTexture, run, buildScene, flat, DEFAULTS,
+  THREE, SSS, EffectComposer, RenderPass, ShaderPass, OutputPass, createRenderer, createComposer, read, dataTexture, run, buildScene, flat, flatScene, DEFAULTS,
   lightDepthCards, cardDepths,
 };
 window.testReady = true;

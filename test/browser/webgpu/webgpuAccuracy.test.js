@@ -16,6 +16,6 @@ afterAll(async () => {
 for (const backend of BACKENDS) {
   describe(`the node on ${backend}: 'footprint' (the default, samples 'auto', and 17 taps) against closed forms`, () => {
     const measures = accuracyMeasures((o) => evaluateFloats(page, (options) => window.wgpu.flat(options), { ...o, backend }));
-    for (const [title, run] of footprintCases(measures)) it(title, run);
+    for (const [title, run] of footprintCases(measures, { isotropic: false })) it(title, run); // the node blurs with one kernel
   });
 }

@@ -7,8 +7,10 @@ import { AUTO_SAMPLES, AUTO_REACH, METHODS, METHOD_TABLE } from '../../../src/op
 import { AUTO_MAX_SAMPLES } from '../../../src/profiles/footprints.js';
 import { computeKernel, kernelRadiusMm } from '../../../src/profiles/kernel.js';
 import { profiles } from '../../../src/profiles/presets.js';
+import { autoKernelGroups } from '../../../src/3-blur/kernelGroups.js';
 
-const base = { scattering: true, marginalRadiusMm: 3, denseRadiusMm: 7, kernelReachMm: { 17: 4, 25: 5 } };
+const base = { scattering: true, marginalRadiusMm: 3, denseRadiusMm: 7, kernelReachMm: { 17: 4, 25: 5 }, kernelGroups: 1, profiles: [profiles.skin] };
+const oneKernel = { groups: 1, groupings: null };
 
 describe('planBlur', () => {
   it('every method has a blur mode, and every mode a pass kind', () => {
@@ -19,12 +21,12 @@ describe('planBlur', () => {
   });
 
   it("'footprint': the frame keeps the budget (per pixel the table chooses) and reaches the marginal's 99 % radius", () => {
-    expect(planBlur({ ...base, method: 'footprint', samples: 'auto' }, 2)).toEqual({ samples: AUTO_MAX_SAMPLES, kernelPixels: 6, blur: true, passes: 'separable' });
+    expect(planBlur({ ...base, method: 'footprint', samples: 'auto' }, 2)).toEqual({ samples: AUTO_MAX_SAMPLES, kernelPixels: 6, blur: true, passes: 'separable', ...oneKernel });
     expect(planBlur({ ...base, method: 'footprint', samples: 9 }, 2).samples).toBe(9);
   });
 
   it('fixed taps reach their outermost tap; below half a pixel, or switched off, nothing runs', () => {
-    expect(planBlur({ ...base, method: 'marginal', samples: 17 }, 0.1)).toEqual({ samples: 17, kernelPixels: 0.4, blur: false, passes: 'separable' });
+    expect(planBlur({ ...base, method: 'marginal', samples: 17 }, 0.1)).toEqual({ samples: 17, kernelPixels: 0.4, blur: false, passes: 'separable', ...oneKernel });
     expect(planBlur({ ...base, method: 'marginal', samples: 17 }, 0.125).blur).toBe(true); // exactly 0.5 px
     expect(planBlur({ ...base, method: 'reference', samples: 25 }, 0).blur).toBe(false); // nothing drawn
     expect(planBlur({ ...base, method: 'marginal', samples: 17, scattering: false }, 100).blur).toBe(false);
@@ -34,7 +36,7 @@ describe('planBlur', () => {
   it("'auto' fixed taps: the fewest of AUTO_SAMPLES whose (n - 3) / 2 pixels per side reach AUTO_REACH of the radius", () => {
     const reach = Object.fromEntries(AUTO_SAMPLES.map((n) => [n, n / 10]));
     // 3 mm at 2 px/mm: 6 px; 0.92 × 6 = 5.52 px per side: (13 - 3) / 2 = 5 is short, (17 - 3) / 2 = 7 reaches.
-    expect(planBlur({ ...base, kernelReachMm: reach, method: 'marginal', samples: 'auto' }, 2)).toEqual({ samples: 17, kernelPixels: 3.4, blur: true, passes: 'separable' });
+    expect(planBlur({ ...base, kernelReachMm: reach, method: 'marginal', samples: 'auto' }, 2)).toEqual({ samples: 17, kernelPixels: 3.4, blur: true, passes: 'separable', ...oneKernel });
     expect(autoSampleCount(6)).toBe(17);
     expect(autoSampleCount(1e6)).toBe(63);
     for (const n of AUTO_SAMPLES) expect(autoSampleCount((((n - 3) / 2) / AUTO_REACH) * (1 - 1e-9))).toBe(n);
@@ -54,5 +56,19 @@ describe('planBlur', () => {
     const kernel = computeKernel({ samples: 17, method: 'marginal', profile: profiles.skin });
     const mm = kernelRadiusMm(kernel);
     expect(planBlur({ ...base, kernelReachMm: { 17: mm }, method: 'marginal', samples: 17 }, 3).kernelPixels).toBeCloseTo(3 * mm, 12);
+  });
+
+  it("the isotropic blur's groups: 'auto' takes per frame the fewest within the budget at its scale, every slot as many as the one needing most; fixed taps and the dense pass none", () => {
+    const grouped = { ...base, method: 'footprint', samples: 'auto', kernelGroups: 'auto', profiles: [profiles.skin, profiles.marble] };
+    const far = planBlur(grouped, 0.125);
+    expect(far.groups).toBe(1); // a far head pays for one group
+    const near = planBlur(grouped, 5);
+    expect(near.groups).toBe(Math.max(autoKernelGroups(profiles.skin, 5).count, autoKernelGroups(profiles.marble, 5).count));
+    expect(near.groups).toBeGreaterThan(1);
+    expect(near.groupings.map((g) => g.count)).toEqual([near.groups, near.groups]);
+    expect(planBlur({ ...grouped, kernelGroups: 2 }, 5).groups).toBe(2);
+    for (const method of ['marginal', 'dense']) {
+      expect(planBlur({ ...grouped, method, samples: 17 }, 5)).toMatchObject(oneKernel);
+    }
   });
 });

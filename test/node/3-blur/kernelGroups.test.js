@@ -6,7 +6,9 @@ import { describe, it, expect } from 'vitest';
 import { DEON, GAUSSIANS, transferOf, erfc } from '../../oracle/closedForms.js';
 import { profiles } from '../../../src/profiles/presets.js';
 import { gaussianSumOf, nonNegativeLeastSquares } from '../../../src/profiles/gaussianFit.js';
-import { ISOTROPY_ERROR, MAX_KERNEL_GROUPS, autoKernelGroups, checkKernelGroups, groupUniforms, kernelGroups } from '../../../src/3-blur/kernelGroups.js';
+import { ISOTROPY_ERROR, MAX_KERNEL_GROUPS, autoKernelGroups, checkKernelGroups, footprintGroupFractions, groupEnergies, kernelGroups } from '../../../src/3-blur/kernelGroups.js';
+import { KernelGroupTable } from '../../../src/3-blur/KernelGroupTable.js';
+import { FOOTPRINT_ROWS, footprintRowOf, footprintRowScale, footprintTable } from '../../../src/profiles/footprints.js';
 
 const ANGLES_DEG = [0, 11.25, 22.5, 33.75, 45];
 const FREQUENCIES = Array.from({ length: 151 }, (_, k) => k * 0.01); // 0..1.5 cycles/mm
@@ -194,21 +196,72 @@ describe("'auto' groups follow the on-screen scale", () => {
   });
 });
 
-describe('the shader uniforms of a grouping', () => {
-  it("each Gaussian's weight is shared out over the groups per channel; group energies sum to 1", () => {
-    for (const name of ['skin', 'skinBurley']) {
-      const g = kernelGroups(profiles[name], 3, 4);
-      const { erfScales, weights, energies } = groupUniforms(g);
-      expect(erfScales.length).toBe(g.gaussians.length);
-      g.gaussians.forEach((gaussian, i) => {
-        expect(erfScales[i]).toBeCloseTo(1 / Math.sqrt(2 * gaussian.varianceMm2), 4);
+describe("what the blur reads of a grouping (KernelGroupTable, shaders/3-blur/kernelGroups.glsl)", () => {
+  const G = (x) => profiles.skin.marginalIntegral(0, x);
+  const table = footprintTable(G, 17);
+  const grouping = kernelGroups(profiles.skin, 3, 4);
+  const fractions = footprintGroupFractions(grouping, table);
+  const at = (row, column, g, c) => fractions[((row * (table.columns + 1) + column) * MAX_KERNEL_GROUPS + g) * 3 + c];
+  // Group g's energy over [a, b] mm of one side, from the closed-form Gaussians (the oracle's own sum).
+  const groupEnergy = (g, c, a, b) => GAUSSIANS.skin.reduce((sum, [v, w], i) => sum + grouping.members[c][g][i] * w[c] * 0.5 * (erfc(a / Math.sqrt(2 * v)) - (b === Infinity ? 0 : erfc(b / Math.sqrt(2 * v)))), 0);
+
+  it("each footprint's energy is split between the groups as their Gaussians share it, the parts summing to 1", () => {
+    for (const row of [footprintRowOf(1), footprintRowOf(4), footprintRowOf(10)]) {
+      const s = footprintRowScale(row);
+      // The centre pixel (|x| < ½ px) and the first footprint, whose edge the table gives.
+      const edge = Math.floor(table.data[2 * row * table.columns] * s + 0.5);
+      for (const [column, a, b] of [[0, 0, 0.5 / s], [1, 0.5 / s, (edge + 0.5) / s]]) {
         for (let c = 0; c < 3; c++) {
-          const inGroups = [0, 1, 2].map((k) => weights[(i * 3 + k) * 3 + c]);
-          expect(inGroups.filter((w) => w > 0).length).toBeLessThanOrEqual(2); // a boundary splits one Gaussian in two at most
-          expect(inGroups.reduce((s, w) => s + w, 0)).toBeCloseTo(gaussian.weights[c], 6);
+          const e = [0, 1, 2].map((g) => groupEnergy(g, c, a, b));
+          const total = e[0] + e[1] + e[2];
+          for (let g = 0; g < 3; g++) expect(at(row, column, g, c)).toBeCloseTo(e[g] / total, 5);
+          expect(at(row, column, 3, c)).toBe(0); // three groups: the fourth holds nothing
         }
-      });
-      for (let c = 0; c < 3; c++) expect(energies[c] + energies[3 + c] + energies[6 + c]).toBeCloseTo(1, 4);
+      }
+      for (let column = 0; column <= table.columns; column++) {
+        const sum = [0, 1, 2, 3].reduce((s2, g) => s2 + at(row, column, g, 0), 0);
+        if (sum > 0) expect(sum).toBeCloseTo(1, 6); // past the last footprint: unused zeros
+      }
     }
+  });
+
+  it('the narrowest group holds less of each footprint the farther out it lies, and the centre pixel most', () => {
+    const row = footprintRowOf(4);
+    for (let column = 1; column < 4; column++) expect(at(row, column, 0, 1)).toBeLessThan(at(row, column - 1, 0, 1));
+  });
+
+  it("the texture holds them as 10-bit unorms summing to 1023 (so the shader's parts sum to the footprint's energy), the energy shares to 1 (two slots stacked)", () => {
+    const lookups = [profiles.skin, profiles.marble];
+    const groupings = lookups.map((p) => kernelGroups(p, 3, 4));
+    const tables = lookups.map((p) => footprintTable((x) => p.marginalIntegral(0, x), 17));
+    const t = new KernelGroupTable();
+    const texture = t.update(groupings, tables);
+    expect(texture.image.width).toBe(tables[0].columns + 1);
+    expect(texture.image.height).toBe(2 * FOOTPRINT_ROWS);
+    expect(t.update(groupings, tables)).toBe(texture); // unchanged: not refilled
+    const marble = footprintGroupFractions(groupings[1], tables[1]);
+    const row = footprintRowOf(4);
+    for (let column = 0; column < 4; column++) {
+      const texel = (FOOTPRINT_ROWS + row) * texture.image.width + column; // slot 1's rows follow slot 0's
+      for (let c = 0; c < 3; c++) {
+        let sum = 0;
+        for (let g = 0; g < 3; g++) {
+          const share = (texture.image.data[texel * 4 + g] >>> (10 * c)) & 1023;
+          expect(Math.abs(share / 1023 - marble[((row * (tables[1].columns + 1) + column) * MAX_KERNEL_GROUPS + g) * 3 + c])).toBeLessThan(1 / 1023);
+          sum += share;
+        }
+        expect(sum).toBe(1023); // three groups: the fourth holds none
+      }
+    }
+    for (let slot = 0; slot < 2; slot++) {
+      for (let c = 0; c < 3; c++) {
+        let sum = 0;
+        for (let g = 0; g < MAX_KERNEL_GROUPS; g++) sum += t.energies[(slot * MAX_KERNEL_GROUPS + g) * 3 + c];
+        expect(sum).toBeCloseTo(1, 6);
+      }
+    }
+    expect(groupEnergies(groupings[0]).map((e) => e[1])).toEqual(groupings[0].members[1].map((m) => m.reduce((s2, f, i) => s2 + f * groupings[0].gaussians[i].weights[1], 0)).map((e, _, all) => e / all.reduce((a, b) => a + b, 0)));
+    t.dispose();
+    expect(t.texture).toBe(null);
   });
 });
