@@ -11,7 +11,8 @@
 // of the HalfFloatType target they replace), every value premultiplied by the coverage as the
 // multi-target's diffuse is:
 //   tGroups0: rgb = packHalf2x16(group 1, group 2) of that channel, a = the coverage's bits;
-//   tGroups1: rgb = packHalf2x16(group 3, group 4) of that channel (SSS_GROUPS > 2 only).
+//   tGroups1: rgb = packHalf2x16(group 3, group 4) of that channel, a = the coverage's bits again
+//             (SSS_GROUPS > 2 only; the footprints past groups 1 and 2's reach read it alone).
 // The groups are four named vec3s (unused ones compiled out), never an array, and SSS_GROUPS is a
 // define with one program per count (SubsurfaceBlurPass): on SwiftShader an array of groups measured
 // 9x the one-kernel blur's time, and a uniform count's branches another 1.3x.
@@ -44,6 +45,12 @@ void sssSplit( const in vec3 weight, const in int column, const in int row, out 
 	#endif
 }
 
+// The footprints of row `row` within groups 1 and 2's reach (KernelGroupTable's NEAR_SHARE): the
+// centre texel's a. Past them a footprint is blurred for groups 3 and 4 only.
+int sssNearFootprints( const in int row ) {
+	return int( texelFetch( tGroupFractions, ivec2( 0, row ), 0 ).a );
+}
+
 #if AXIS == 0
 	// Both attachments are written at every count: WebGL refuses a draw with a target attachment
 	// the shader has no output for.
@@ -58,7 +65,7 @@ void sssSplit( const in vec3 weight, const in int column, const in int row, out 
 		#if SSS_GROUPS > 2
 			vec3 c = light2 * coverage;
 			vec3 d = light3 * coverage;
-			sssGroupsOut1 = uvec4( packHalf2x16( vec2( c.r, d.r ) ), packHalf2x16( vec2( c.g, d.g ) ), packHalf2x16( vec2( c.b, d.b ) ), 0u );
+			sssGroupsOut1 = uvec4( packHalf2x16( vec2( c.r, d.r ) ), packHalf2x16( vec2( c.g, d.g ) ), packHalf2x16( vec2( c.b, d.b ) ), floatBitsToUint( coverage ) );
 		#else
 			sssGroupsOut1 = uvec4( 0u );
 		#endif
@@ -103,4 +110,26 @@ void sssSplit( const in vec3 weight, const in int column, const in int row, out 
 		#endif
 		return coverage;
 	}
+
+	#if SSS_GROUPS > 2
+		// Groups 3 and 4 of a texel alone (the second attachment, which holds the coverage too).
+		float sssFarGroupsAt( const in ivec2 texel, out vec3 light2, out vec3 light3 ) {
+			uvec4 packed = texelFetch( tGroups1, texel, 0 );
+			float coverage = uintBitsToFloat( packed.a );
+			vec2 r = unpackHalf2x16( packed.r );
+			vec2 g = unpackHalf2x16( packed.g );
+			vec2 b = unpackHalf2x16( packed.b );
+			light2 = vec3( r.x, g.x, b.x );
+			light3 = vec3( r.y, g.y, b.y );
+			if ( ! ( coverage > 0.0 ) || ! sssFinite( light2 + light3 ) ) {
+				light2 = light3 = vec3( 0.0 );
+				return 0.0;
+			}
+			#if SSS_COVERAGE == 1
+				light2 /= coverage;
+				light3 /= coverage;
+			#endif
+			return coverage;
+		}
+	#endif
 #endif

@@ -151,6 +151,35 @@ void addTap( const in float offsetPx, const in vec3 weight, const in ivec2 pixel
 		return weight;
 	}
 
+	#if SSS_GROUPS > 2
+		// As sssAddGroupTexel for groups 3 and 4 only (the footprints past groups 1 and 2's reach:
+		// one fetch, the group target's second attachment).
+		float sssAddFarTexel( const in ivec2 texel, const in float share, const in float expectedDepth, const in vec3 centre2, const in vec3 centre3, inout vec3 light2, inout vec3 light3 ) {
+			vec3 c, d;
+			float coverage = sssFarGroupsAt( texel, c, d );
+			if ( ! ( coverage > 0.0 ) ) return 0.0;
+			float farness;
+			float weight = share * sssTexelRule( texel, coverage, expectedDepth, farness );
+			#if FOLLOW_SURFACE == FOLLOW_SURFACE_LERP
+				c = mix( c, centre2, farness );
+				d = mix( d, centre3, farness );
+			#endif
+			light2 += c * weight;
+			light3 += d * weight;
+			return weight;
+		}
+
+		float sssLinearFarTap( const in float offsetPx, const in ivec2 pixel, const in float centreDepth, const in float slope, const in vec3 centre2, const in vec3 centre3, out vec3 light2, out vec3 light3 ) {
+			ivec2 texel0, texel1;
+			float fraction;
+			light2 = light3 = vec3( 0.0 );
+			if ( ! sssTapTexels( offsetPx, pixel, texel0, texel1, fraction ) ) return 0.0;
+			float kept = sssAddFarTexel( texel0, 1.0 - fraction, centreDepth + slope * float( texel0[ AXIS ] - pixel[ AXIS ] ), centre2, centre3, light2, light3 );
+			if ( SSS_SKIP_EMPTY_TEXELS == 0 || fraction > 0.0 ) kept += sssAddFarTexel( texel1, fraction, centreDepth + slope * float( texel1[ AXIS ] - pixel[ AXIS ] ), centre2, centre3, light2, light3 );
+			return kept;
+		}
+	#endif
+
 	// The vertical pass's tap over the groups: as sssLinearTap, each group apart.
 	float sssLinearGroupTap( const in float offsetPx, const in ivec2 pixel, const in float centreDepth, const in float slope,
 		const in vec3 centre0, const in vec3 centre1, const in vec3 centre2, const in vec3 centre3,
@@ -348,11 +377,24 @@ void main() {
 		vec3 sum0 = centre0 * weightSum0, sum1 = centre1 * weightSum1, sum2 = centre2 * weightSum2, sum3 = centre3 * weightSum3;
 	#endif
 	int lastEdge = 0;
-	for ( int j = 0; j <= BLOCKS; j ++ ) {
+	// With three or four groups the footprints past groups 1 and 2's reach (`near`, from the table)
+	// are blurred for groups 3 and 4 alone, in a second loop: one fetch per texel, not two.
+	#if SSS_GROUPS > 2
+		int near = sssNearFootprints( SSS_FOOTPRINT_ROW( row ) );
+	#else
+		int near = BLOCKS + 1;
+	#endif
+	int j = 0;
+	bool done = false;
+	for ( ; j <= BLOCKS; j ++ ) {
+		if ( j >= near ) break;
 		vec3 weight;
 		float offsetPx;
 		bool last;
-		if ( ! sssFootprint( j, row, stepPx, energyBelow, lastEdge, weight, offsetPx, last ) ) break;
+		if ( ! sssFootprint( j, row, stepPx, energyBelow, lastEdge, weight, offsetPx, last ) ) {
+			done = true;
+			break;
+		}
 		vec3 part0, part1, part2, part3;
 		sssSplit( weight, j + 1, SSS_FOOTPRINT_ROW( row ), part0, part1, part2, part3 );
 		// Both sides' taps, then each group's part of their sum (the parts are the same on both sides).
@@ -384,8 +426,44 @@ void main() {
 			weightSum2 += part2 * kept;
 			weightSum3 += part3 * kept;
 		#endif
-		if ( last ) break;
+		if ( last ) {
+			done = true;
+			break;
+		}
 	}
+	#if SSS_GROUPS > 2
+		for ( ; j <= BLOCKS; j ++ ) {
+			if ( done ) break;
+			vec3 weight;
+			float offsetPx;
+			bool last;
+			if ( ! sssFootprint( j, row, stepPx, energyBelow, lastEdge, weight, offsetPx, last ) ) break;
+			#if SSS_GROUPS == 3
+				vec3 part2 = weight;
+				vec3 part3 = vec3( 0.0 );
+			#else
+				vec3 part2 = weight * sssUnorm10( texelFetch( tGroupFractions, ivec2( j + 1, SSS_FOOTPRINT_ROW( row ) ), 0 ).b );
+				vec3 part3 = max( weight - part2, vec3( 0.0 ) ); // groups 1 and 2's share here is below the table's NEAR_SHARE
+			#endif
+			#if AXIS == 0
+				vec3 light, other;
+				float kept = sssLinearTap( offsetPx, pixel, surface.r, slope, centre, light );
+				kept += sssLinearTap( - offsetPx, pixel, surface.r, slope, centre, other );
+				light += other;
+				sum2 += part2 * light;
+				sum3 += part3 * light;
+			#else
+				vec3 light2, light3, other2, other3;
+				float kept = sssLinearFarTap( offsetPx, pixel, surface.r, slope, centre2, centre3, light2, light3 );
+				kept += sssLinearFarTap( - offsetPx, pixel, surface.r, slope, centre2, centre3, other2, other3 );
+				sum2 += part2 * ( light2 + other2 );
+				sum3 += part3 * ( light3 + other3 );
+			#endif
+			weightSum2 += part2 * kept;
+			weightSum3 += part3 * kept;
+			if ( last ) break;
+		}
+	#endif
 
 	#if AXIS == 0
 		vec3 kept = weightSum0 + weightSum1;

@@ -12,6 +12,14 @@ import { MAX_KERNEL_GROUPS, footprintGroupFractions, groupEnergies } from './ker
 /** fractions → packed texels, cached per grouping and footprint table (both are cached objects). */
 const packedTables = new WeakMap();
 
+/**
+ * A footprint is past groups 1 and 2's reach when their share of its energy is at most this in every
+ * channel (two of the unorm's steps): the shader then blurs it for groups 3 and 4 alone, their split
+ * taking the whole weight (kernelGroups.glsl's second loop). The centre texel's a holds how many
+ * footprints of its row are within the reach.
+ */
+const NEAR_SHARE = 2 / 1023;
+
 /** The 10-bit unorm's one (the shader divides by it). */
 const UNORM_ONE = 1023;
 
@@ -39,7 +47,12 @@ function packedFractions(grouping, table) {
     const fractions = footprintGroupFractions(grouping, table);
     const texels = fractions.length / (MAX_KERNEL_GROUPS * 3);
     const packed = new Uint32Array(texels * 4);
+    const columns = table.columns + 1;
     for (let t = 0; t < texels; t++) {
+      const column = t % columns;
+      // Within groups 1 and 2's reach: the row's near count is one past the last such footprint.
+      const near = [0, 1, 2].some((c) => fractions[(t * MAX_KERNEL_GROUPS) * 3 + c] + fractions[(t * MAX_KERNEL_GROUPS + 1) * 3 + c] > NEAR_SHARE);
+      if (column > 0 && near) packed[(t - column) * 4 + 3] = column;
       for (let c = 0; c < 3; c++) {
         const shares = unormShares(Array.from({ length: MAX_KERNEL_GROUPS }, (_, g) => fractions[(t * MAX_KERNEL_GROUPS + g) * 3 + c]));
         for (let g = 0; g < MAX_KERNEL_GROUPS - 1; g++) packed[t * 4 + g] |= shares[g] << (10 * c);
