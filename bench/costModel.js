@@ -14,7 +14,7 @@
 // No imports: it loads in Node (the runner, the unit test) and in the page alike.
 
 /** Bytes per texel of the formats the pipeline's targets use. */
-export const TEXEL_BYTES = Object.freeze({ rgba16f: 8, rgba32f: 16, rg32f: 8, depth24: 4 });
+export const TEXEL_BYTES = Object.freeze({ rgba16f: 8, rgba32f: 16, rg32f: 8, depth24: 4, rgba32ui: 16 });
 
 /** The pipeline's targets (the composer's own buffers are the application's, as with a RenderPass). */
 export const TARGETS = Object.freeze([
@@ -23,6 +23,7 @@ export const TARGETS = Object.freeze([
   { name: 'surface (multi-target 2)', format: 'rg32f', multisampled: true },
   { name: 'depth (multi-target)', format: 'depth24', multisampled: true },
   { name: 'horizontal blur', format: 'rgba16f', multisampled: false },
+  { name: 'horizontal blur, isotropic groups (two attachments; built when groups are possible)', format: 'rgba32ui', attachments: 2, multisampled: false, groups: true },
   { name: 'scattered light', format: 'rgba16f', multisampled: false },
 ]);
 
@@ -31,9 +32,10 @@ export const TARGETS = Object.freeze([
  * a multisampled renderbuffer per multi-target attachment besides the resolved texture.
  * @returns {{ targets: Array<{ name: string, bytes: number }>, bytes: number }}
  */
-export function targetMemory(width, height, { samples = 0 } = {}) {
+export function targetMemory(width, height, { samples = 0, groups = true } = {}) {
   const pixels = width * height;
-  const targets = TARGETS.map((t) => ({ name: t.name, bytes: pixels * TEXEL_BYTES[t.format] * (1 + (t.multisampled && samples > 0 ? samples : 0)) }));
+  const targets = TARGETS.filter((t) => groups || !t.groups)
+    .map((t) => ({ name: t.name, bytes: pixels * TEXEL_BYTES[t.format] * (t.attachments ?? 1) * (1 + (t.multisampled && samples > 0 ? samples : 0)) }));
   return { targets, bytes: targets.reduce((sum, t) => sum + t.bytes, 0) };
 }
 
@@ -43,10 +45,16 @@ export function targetMemory(width, height, { samples = 0 } = {}) {
  * confineToSubsurface: the blur passes are scissored to the subsurface pixels' screen box;
  * fetchesEverywhere: the compose reads the scattered light and the surface at every pixel;
  * skipsEmptyTexels: a tap on a texel centre fetches one texel, not two (fetches only: its
- * neighbours' taps read the other texel anyway, so the memory traffic is the same).
+ * neighbours' taps read the other texel anyway, so the memory traffic is the same);
+ * kernelGroups: the isotropic blur's groups (issue 20; 1: one kernel): with more, the horizontal
+ * pass writes two RGBA32UI texels (32 B) instead of one RGBA16F (8 B), the vertical pass reads
+ * them (and fetches both per tap, an upper bound: past groups 1 and 2's reach it fetches one), and
+ * the horizontal pass fetches the group fractions per footprint (a small table: free).
  */
-export const BEFORE = Object.freeze({ depthPrepass: true, confineToSubsurface: false, fetchesEverywhere: false, skipsEmptyTexels: false });
-export const AFTER = Object.freeze({ depthPrepass: false, confineToSubsurface: true, fetchesEverywhere: false, skipsEmptyTexels: true });
+export const BEFORE = Object.freeze({ depthPrepass: true, confineToSubsurface: false, fetchesEverywhere: false, skipsEmptyTexels: false, kernelGroups: 1 });
+export const AFTER = Object.freeze({ depthPrepass: false, confineToSubsurface: true, fetchesEverywhere: false, skipsEmptyTexels: true, kernelGroups: 4 });
+/** This version with one kernel (`kernelGroups: 1`): what the isotropic blur adds, modelled. */
+export const ONE_KERNEL = Object.freeze({ ...AFTER, kernelGroups: 1 });
 
 /**
  * Directions the issue names that are not built, modelled on top of AFTER (what they would save,
@@ -69,13 +77,14 @@ const stage = (written, read, fetched = read) => ({ written, read, fetched });
  * A blur pass over `area` of the frame, `subsurface` of it on the mask, `taps` per direction,
  * reading `surface` bytes per texel for the surface (the attachment, or the depth texture).
  */
-function blurPass(area, subsurface, taps, surface, centred = 0) {
-  // Every pixel reads its centre (diffuse, surface) and writes its result; a mask pixel also reads
-  // its two neighbours' surface (the slope) and, per tap, two texels of diffuse and surface (one
-  // for the `centred` taps on a texel centre).
-  const centre = RGBA16F + surface;
-  const perMaskPixel = 2 * surface + (taps * 2 - centred) * (RGBA16F + surface);
-  return stage(area * RGBA16F, area * centre, area * centre + subsurface * perMaskPixel);
+function blurPass(area, subsurface, taps, surface, centred = 0, { input = RGBA16F, output = RGBA16F } = {}) {
+  // Every pixel reads its centre (the light, surface) and writes its result; a mask pixel also
+  // reads its two neighbours' surface (the slope) and, per tap, two texels of light and surface
+  // (one for the `centred` taps on a texel centre). `input`, `output`: bytes per texel of the light
+  // read and written (the isotropic groups between the passes: 32).
+  const centre = input + surface;
+  const perMaskPixel = 2 * surface + (taps * 2 - centred) * (input + surface);
+  return stage(area * output, area * centre, area * centre + subsurface * perMaskPixel);
 }
 
 /**
@@ -103,17 +112,18 @@ export function frameTraffic(switches, { subsurface, box, ordinary = 0, taps, ce
   const area = switches.confineToSubsurface ? box : 1;
   const surface = switches.surfaceFromDepth ? DEPTH : RG32F;
   const skipped = switches.skipsEmptyTexels ? centred : 0;
-  const blurH = blurPass(area, s, taps, surface, skipped);
+  const groups = (switches.kernelGroups ?? 1) > 1 ? 2 * TEXEL_BYTES.rgba32ui : RGBA16F;
+  const blurH = blurPass(area, s, taps, surface, skipped, { output: groups });
   // Compose: depth, colour and diffuse (its mask) at every pixel, the scattered light on the mask
   // (or everywhere, with the surface, as before issue 10); out: the composer's colour and depth.
   const everywhere = switches.fetchesEverywhere ? 1 : 0;
   const composeRead = DEPTH + 2 * RGBA16F + (everywhere ? RGBA16F + RG32F : s * RGBA16F);
-  let blurV = blurPass(area, s, taps, surface, skipped);
+  let blurV = blurPass(area, s, taps, surface, skipped, { input: groups });
   let compose = stage(RGBA16F + DEPTH, composeRead);
   if (switches.composeInBlur) {
     // The vertical pass over the whole frame: its taps as before, plus colour and depth read and
     // the output (colour, depth) written at every pixel instead of the scattered light.
-    const v = blurPass(1, s, taps, surface, skipped);
+    const v = blurPass(1, s, taps, surface, skipped, { input: groups });
     blurV = stage(RGBA16F + DEPTH, v.read + RGBA16F + DEPTH, v.fetched + RGBA16F + DEPTH);
     compose = stage(0, 0);
   }

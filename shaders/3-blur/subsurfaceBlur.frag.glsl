@@ -372,6 +372,9 @@ void main() {
 	vec3 weightSum0, weightSum1, weightSum2, weightSum3;
 	sssSplit( 2.0 * energyBelow, 0, SSS_FOOTPRINT_ROW( row ), weightSum0, weightSum1, weightSum2, weightSum3 );
 	#if AXIS == 0
+		// Each group's weight as planned, dropped taps and all: the horizontal pass writes each group
+		// normalised over its own kept weight, times its planned share (below).
+		vec3 planned0 = weightSum0, planned1 = weightSum1, planned2 = weightSum2, planned3 = weightSum3;
 		vec3 sum0 = centre * weightSum0, sum1 = centre * weightSum1, sum2 = centre * weightSum2, sum3 = centre * weightSum3;
 	#else
 		vec3 sum0 = centre0 * weightSum0, sum1 = centre1 * weightSum1, sum2 = centre2 * weightSum2, sum3 = centre3 * weightSum3;
@@ -426,6 +429,12 @@ void main() {
 			weightSum2 += part2 * kept;
 			weightSum3 += part3 * kept;
 		#endif
+		#if AXIS == 0
+			planned0 += 2.0 * part0;
+			planned1 += 2.0 * part1;
+			planned2 += 2.0 * part2;
+			planned3 += 2.0 * part3;
+		#endif
 		if ( last ) {
 			done = true;
 			break;
@@ -461,27 +470,33 @@ void main() {
 			#endif
 			weightSum2 += part2 * kept;
 			weightSum3 += part3 * kept;
+			#if AXIS == 0
+				planned2 += 2.0 * part2;
+				planned3 += 2.0 * part3;
+			#endif
 			if ( last ) break;
 		}
 	#endif
 
 	#if AXIS == 0
-		vec3 kept = weightSum0 + weightSum1;
-		#if SSS_GROUPS > 2
-			kept += weightSum2 + weightSum3;
-		#endif
-		if ( ! all( greaterThan( kept, vec3( 0.0 ) ) ) ) { // the centre's own weight is 0 only past float range
+		vec3 planned = planned0 + planned1 + planned2 + planned3;
+		if ( ! all( greaterThan( planned, vec3( 0.0 ) ) ) ) { // the centre's own weight is 0 only past float range
 			sssWriteUnblurred( centre, coverage );
 			return;
 		}
-		vec3 inverse = 1.0 / kept;
-		// Each group's share of the weight is what its unblurred light is mixed in by.
-		vec3 light0 = mix( centre * weightSum0, sum0, strength ) * inverse;
-		vec3 light1 = mix( centre * weightSum1, sum1, strength ) * inverse;
+		// Group g: its light normalised over its own kept weight (the one-kernel blur's rule, per
+		// group), times its planned share, mixed with that share of the unblurred light by
+		// `strength`. With nothing dropped the groups sum to the one-kernel blur exactly, so both axes
+		// are its answer; with drops (depth edges, the screen's border) each group keeps its share,
+		// so the vertical pass's per-group averages cannot add up past the light (a share taken from
+		// the kept weights would: the wide group loses more at an edge than the narrow one).
+		vec3 inverse = 1.0 / planned;
+		vec3 light0 = planned0 * inverse * mix( centre, sssNormalised( sum0, weightSum0, centre ), strength );
+		vec3 light1 = planned1 * inverse * mix( centre, sssNormalised( sum1, weightSum1, centre ), strength );
 		vec3 light2 = vec3( 0.0 ), light3 = vec3( 0.0 );
 		#if SSS_GROUPS > 2
-			light2 = mix( centre * weightSum2, sum2, strength ) * inverse;
-			light3 = mix( centre * weightSum3, sum3, strength ) * inverse;
+			light2 = planned2 * inverse * mix( centre, sssNormalised( sum2, weightSum2, centre ), strength );
+			light3 = planned3 * inverse * mix( centre, sssNormalised( sum3, weightSum3, centre ), strength );
 		#endif
 		if ( sssFinite( light0 + light1 + light2 + light3 ) ) sssWriteGroups( light0, light1, light2, light3, coverage );
 		else sssWriteUnblurred( centre, coverage );

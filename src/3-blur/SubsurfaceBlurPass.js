@@ -2,7 +2,7 @@
 // them (horizontal, then vertical) make the paper's two screen-space passes. Only subsurface
 // pixels change; taps on other pixels, off screen or on another surface are dropped and the rest
 // renormalised per channel (or lerped back to the centre colour, as in the reference).
-import { DataTexture, FloatType, GLSL3, NearestFilter, RGBAFormat, Vector3 } from 'three';
+import { DataTexture, FloatType, GLSL3, NearestFilter, RGBAFormat, ShaderMaterial, Vector3 } from 'three';
 import blurGlsl from '../../shaders/3-blur/subsurfaceBlur.frag.glsl?raw';
 import profileLookupGlsl from '../../shaders/common/profileLookup.glsl?raw';
 import kernelGroupsGlsl from '../../shaders/3-blur/kernelGroups.glsl?raw';
@@ -153,8 +153,10 @@ export class SubsurfaceBlurPass extends SurfacePass {
     if (this.groups === 1) return this.material;
     let variant = this._groupMaterials.get(this.groups);
     if (!variant) {
-      variant = this.material.clone();
-      variant.uniforms = this.material.uniforms; // one set of uniforms for every count
+      // As ShaderPass builds `material`, sharing its uniforms (clone() would copy them, and warns
+      // at render targets' textures).
+      const { name, vertexShader, fragmentShader, glslVersion, uniforms } = this.material;
+      variant = new ShaderMaterial({ name, vertexShader, fragmentShader, glslVersion, uniforms, defines: { ...this.material.defines } });
       this._groupMaterials.set(this.groups, variant);
     }
     setDefines(variant, { ...this.material.defines, SSS_GROUPS: this.groups });

@@ -40,7 +40,7 @@ export function autoSampleCount(radiusPx) {
  * @param {BlurSettings} settings @param {number} pixelsPerMm
  */
 export function frameGroupings(settings, pixelsPerMm) {
-  if (settings.kernelGroups === 1) return null;
+  if ((settings.kernelGroups ?? 1) === 1) return null; // one kernel (also a planner without groups: the WebGPU node)
   const count = Math.max(...settings.profiles.map((profile) => kernelGroupsAt(profile, pixelsPerMm, settings.kernelGroups).count));
   return settings.profiles.map((profile) => kernelGroupsAt(profile, pixelsPerMm, count));
 }

@@ -13,10 +13,11 @@ afterAll(async () => {
 
 import { accuracyMeasures, footprintCases } from './accuracyCases.js';
 
-const { stepEdge, grating } = accuracyMeasures((o) => evaluateFloats(page, (options) => window.lab.flat(options), o));
+const measures = accuracyMeasures((o) => evaluateFloats(page, (options) => window.lab.flat(options), o));
+const { stepEdge } = measures;
 
 describe("'footprint' (the default, samples 'auto', and 17 taps) against closed forms", () => {
-  for (const [title, run] of footprintCases({ grating, stepEdge })) it(title, run);
+  for (const [title, run] of footprintCases(measures)) it(title, run);
 });
 
 describe('the other methods against the same closed forms (their known accuracy)', () => {
