@@ -8,7 +8,7 @@ import { drawKernel } from './kernelPlot.js';
 /** Nothing to compare: scattering off, the divider at an edge, or a view the split does not affect. */
 const dividerVisible = (state) => state.sss && state.split > 0 && state.split < 1 && ['final', 'diffuse', 'kernel'].includes(state.view);
 
-export const KERNEL_KEYS = ['profile', 'method', 'samples', 'strength', 'falloff'];
+export const KERNEL_KEYS = ['profile', 'method', 'samples', 'strength', 'falloff', 'groups'];
 
 /** Which of the appliers (createAppliers) a state key belongs to. */
 export function groupOf(key) {
@@ -35,10 +35,15 @@ export function createAppliers(demo) {
       sss.scattering = state.sss;
       showDivider();
     },
-    kernel: () => Object.assign(sss, {
-      profile: state.profile, method: state.method, samples: state.samples,
-      strength: [...state.strength], falloff: [...state.falloff],
-    }),
+    kernel: () => {
+      // A count of groups is for method 'footprint' alone: 'auto' holds for every method while the method changes.
+      sss.kernelGroups = 'auto';
+      Object.assign(sss, {
+        profile: state.profile, method: state.method, samples: state.samples,
+        strength: [...state.strength], falloff: [...state.falloff],
+      });
+      sss.kernelGroups = state.method === 'footprint' ? state.groups : 'auto';
+    },
     // The marble piece, with a profile of its own in the head's pipeline (every method of the
     // demo blurs several per frame). Hidden, it is unbound: the frame holds one profile, as before.
     marble: () => {

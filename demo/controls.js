@@ -12,6 +12,7 @@ const LABELS = {
   lightDepthSize: 'depth map size', lightAzimuth: 'azimuth (°)', lightElevation: 'elevation (°)',
   lightIntensity: 'intensity', lightColor: 'colour', followSurface: 'follow surface', split: 'divider (left: off)',
   resolutionScale: 'resolution scale', marble: 'marble piece (its own profile)',
+  groups: 'isotropy groups (1: one kernel)',
 };
 
 /** Short names of the figures, for the preset rows. */
@@ -109,6 +110,7 @@ export function createControls(state, { onChange, onFigure, onReset, container, 
   add(kernel, 'method');
   // Samples: 'auto' or an odd count; lil-gui has no such control, so a dropdown of both.
   kernel.add(state, 'samples', ['auto', 3, 5, 7, 9, 11, 13, 17, 25, 33, 45, 63]).name('samples').onChange(() => onChange('samples'));
+  add(kernel, 'groups');
   addRgb(kernel, 'strength', 0.01);
   addRgb(kernel, 'falloff', 0.01);
   const edges = more.addFolder('Depth edges');

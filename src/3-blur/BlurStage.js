@@ -60,6 +60,7 @@ export class BlurStage {
    * @param {number[]} [options.falloff]
    * @param {object} options.surface SurfacePass options (camera, surface and diffuse textures,
    *   followSurface, depthThresholdWorld, foreshortening)
+   * @param {'auto'|number} [options.kernelGroups='auto'] the isotropic blur's groups (see `kernelGroups`)
    */
   constructor({ type, profileLookup, method, samples, strength, falloff, surface, kernelGroups = 'auto' }) {
     this.profileLookup = profileLookup;

@@ -73,7 +73,7 @@ export class KernelGroupTable {
   }
 
   /**
-   * @param {ReadonlyArray<ReturnType<import('./kernelGroups.js').kernelGroups>>} groupings per slot
+   * @param {ReadonlyArray<ReturnType<typeof import('./kernelGroups.js').kernelGroups>>} groupings per slot
    * @param {ReadonlyArray<{ data: Float32Array, columns: number }>} tables per slot, the footprint tables the blur reads
    * @returns {DataTexture}
    */

@@ -29,8 +29,8 @@ export function autoSampleCount(radiusPx) {
  * @property {number} denseRadiusMm the dense reference's reach, mm
  * @property {Readonly<Record<number, number>>} kernelReachMm the fixed-tap kernel's outermost tap,
  *   mm, for each count the plan can choose (the count asked for, or every AUTO_SAMPLES for 'auto')
- * @property {'auto'|number} kernelGroups the isotropic blur's groups asked for (1: one kernel)
- * @property {ReadonlyArray<object>} profiles the frame's profiles, by slot
+ * @property {'auto'|number} [kernelGroups=1] the isotropic blur's groups asked for (1: one kernel)
+ * @property {ReadonlyArray<object>} [profiles] the frame's profiles, by slot (needed with groups)
  */
 
 /**

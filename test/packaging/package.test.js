@@ -40,7 +40,7 @@ describe('the built package', () => {
     expect(out.added).toEqual([]);
     // The unstable entry: the blur's plan runs in plain Node too (63 taps: the footprints' budget).
     expect(out.internals).toContain('planBlur');
-    expect(out.planned).toEqual({ samples: 63, kernelPixels: 6, blur: true, passes: 'separable' });
+    expect(out.planned).toEqual({ samples: 63, kernelPixels: 6, blur: true, passes: 'separable', groups: 1, groupings: null }); // a plan without profiles blurs with one kernel
     for (const name of ['computeKernel', 'profiles', 'transmittance', 'LightDepthTarget', 'transmittanceChunk', 'makeSubsurface', 'SubsurfaceBlurPass', 'SubsurfaceScattering']) {
       expect(out.exports).toContain(name);
     }
