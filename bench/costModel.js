@@ -52,9 +52,9 @@ export function targetMemory(width, height, { samples = 0, groups = true } = {})
  * the horizontal pass fetches the group fractions per footprint (a small table: free).
  */
 export const BEFORE = Object.freeze({ depthPrepass: true, confineToSubsurface: false, fetchesEverywhere: false, skipsEmptyTexels: false, kernelGroups: 1 });
-export const AFTER = Object.freeze({ depthPrepass: false, confineToSubsurface: true, fetchesEverywhere: false, skipsEmptyTexels: true, kernelGroups: 4 });
-/** This version with one kernel (`kernelGroups: 1`): what the isotropic blur adds, modelled. */
-export const ONE_KERNEL = Object.freeze({ ...AFTER, kernelGroups: 1 });
+export const AFTER = Object.freeze({ depthPrepass: false, confineToSubsurface: true, fetchesEverywhere: false, skipsEmptyTexels: true, kernelGroups: 1 });
+/** This version with the isotropic blur (`kernelGroups: 'auto'`, four groups near): what the groups add, modelled. */
+export const ISOTROPIC = Object.freeze({ ...AFTER, kernelGroups: 4 });
 
 /**
  * Directions the issue names that are not built, modelled on top of AFTER (what they would save,

@@ -19,20 +19,20 @@ export const PEER_MEASURES = Object.freeze([...VARIANTS, 'stages', 'blur', 'floo
  * scene split (`multisampling`), a transparent object (drawn after the compose), and the compose's
  * depth write (the scene's depth handed on to later passes), and (issue 22) two balls beside
  * the head in its profile (threeObjects) or in two more (threeProfiles: three profiles on screen),
- * and (issue 20) the isotropic blur, measured by its absence like the depth write (oneKernel:
- * `kernelGroups: 1`, the blur of one kernel as before it).
+ * and (issue 20) the isotropic blur (isotropic: `kernelGroups: 'auto'`; the default blurs with one
+ * kernel).
  * Timed on ours frame by frame ('stages') and on the plain three.js frame (`threePlain`) alike.
  */
-export const ADDITIONS = Object.freeze(['msaa4', 'transparent', 'noDepthWrite', 'threeObjects', 'threeProfiles', 'oneKernel']);
+export const ADDITIONS = Object.freeze(['msaa4', 'transparent', 'noDepthWrite', 'threeObjects', 'threeProfiles', 'isotropic']);
 
 /** The additions measured by switching them off (their rows say what they add by the difference's sign). */
-export const MEASURED_BY_ABSENCE = Object.freeze(['noDepthWrite', 'oneKernel']);
+export const MEASURED_BY_ABSENCE = Object.freeze(['noDepthWrite']);
 
 /**
  * Features whose switch recompiles a shader (the blur's group capacity): warmed up in the timed
  * call itself, so the compile falls in the warm-up frame (their CPU time per frame is then not taken).
  */
-export const RECOMPILING_FEATURES = Object.freeze(['oneKernel']);
+export const RECOMPILING_FEATURES = Object.freeze(['isotropic']);
 
 /**
  * Issue 10's and issue 19's optimizations, each undone for the measure by a switch of the passes

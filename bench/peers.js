@@ -89,10 +89,10 @@ const UNDO_SWITCHES = Object.freeze({
   msaaDepthResolvedTwice: (sss) => [sss.scenePass, 'resolvesDepthOnce', false],
 });
 
-/** The additions measured by their absence (bench/peerPlan.js's MEASURED_BY_ABSENCE), as UNDO_SWITCHES. */
+/** The additions switched on or off by a field (bench/peerPlan.js's ADDITIONS), as UNDO_SWITCHES. */
 const ADDITION_SWITCHES = Object.freeze({
   noDepthWrite: (sss) => [sss.composePass, 'writesDepth', false],
-  oneKernel: (sss) => [sss, 'kernelGroups', 1],
+  isotropic: (sss) => [sss, 'kernelGroups', 'auto'],
 });
 
 /** The features measured with MSAA 4 in the scene split (and the plain frame in a 4-sample buffer). */
@@ -102,8 +102,8 @@ const MSAA_FEATURES = Object.freeze(['msaa4', 'msaaDepthResolvedTwice']);
  * Turns `feature` on for the session's head (FEATURES) and returns what turns it off again.
  * msaa4: the scene split multisampled 4 times (the plain frame draws into a 4-sample buffer too);
  * transparent: a half see-through pane in front of the chin; noDepthWrite: the compose writes
- * colour only (version 0.1's compose handed no depth on, `composePass.writesDepth`); oneKernel: the
- * blur of one kernel (`kernelGroups: 1`, as before the isotropic blur);
+ * colour only (version 0.1's compose handed no depth on, `composePass.writesDepth`); isotropic: the
+ * blur in groups (`kernelGroups: 'auto'`; the default is one kernel);
  * threeProfiles: a marble and a milk ball beside the head, each with its own profile (three in
  * the frame), threeObjects: the same balls in the head's profile; the optimizations undone flip
  * their switch (UNDO_SWITCHES).

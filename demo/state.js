@@ -21,7 +21,7 @@ export const STATE_SCHEMA = {
   width: number(0.05, 20, 1, 'mm'),
   samples: { kind: 'samples', fallback: 'auto' },
   // The isotropic blur's groups (method 'footprint'; 1: one separable kernel, as in version 0.2).
-  groups: oneOf(['auto', 1, 2, 3, 4], 'auto'),
+  groups: oneOf([1, 'auto', 2, 3, 4], 1),
   strength: rgb(0, 1, [1, 1, 1]),
   falloff: rgb(0.01, 10, [1, 0.37, 0.3]),
   followSurface: oneOf(['drop', 'lerp', 'off'], 'drop'),

@@ -56,7 +56,7 @@ export { MIN_KERNEL_PIXELS } from './3-blur/samplingModel.js';
  * @property {import('./options.js').ProfileName|object} [profile='skin'] a preset's name ('skin', 'skinBurley', 'marble', 'milk') or a profile object (burleyProfile, dipoleProfile, gaussianSumProfile)
  * @property {import('./options.js').Method} [method='footprint'] how the blur weighs its taps: 'footprint', 'marginal', 'reference' or 'dense' (METHOD_TABLE)
  * @property {number|'auto'} [samples='auto'] taps per direction, odd, 3..63 (a budget for 'footprint'); 'auto': as few as the on-screen scale needs
- * @property {number|'auto'} [kernelGroups='auto'] method 'footprint': the profile's Gaussians blurred in groups, 1..4, so the blur is the same in every direction (1: one kernel, exact along the screen axes only); 'auto': the fewest within the isotropy budget at the on-screen scale
+ * @property {number|'auto'} [kernelGroups=1] method 'footprint': 1, one separable kernel (exact along the screen axes only; the fast blur); 'auto' or 2..4: the profile's Gaussians blurred in groups, the same in every direction, at about twice the blur's time ('auto': one group where one is within the isotropy budget, a far head, else 4)
  * @property {number[]} [strength] RGB, 0..1: mix with no scattering (the reference model)
  * @property {number[]} [falloff] RGB, (0, 10]: method 'reference' only, its kernel's shape
  * @property {import('./options.js').FollowSurfaceMode} [followSurface='drop'] a tap on another surface: 'drop' (renormalise), 'lerp' (to the centre) or 'off'
@@ -228,8 +228,9 @@ export class SubsurfaceScattering extends Pass {
   set samples(samples) { this.blur.setKernel({ samples: checkOption(PIPELINE_SCHEMA, 'samples', samples) }); }
 
   /**
-   * The isotropic blur's groups (method 'footprint'): 'auto', or 1..4 (1: one kernel, exact along
-   * the screen axes only). This frame's count: `plan.groups`.
+   * The isotropic blur's groups (method 'footprint'): 1 (default: one kernel, exact along the
+   * screen axes only), 'auto' or 2..4 (the same in every direction, about twice the blur's time).
+   * This frame's count: `plan.groups`.
    * @type {number|'auto'}
    */
   get kernelGroups() { return this.blur.kernelGroups; }

@@ -172,8 +172,8 @@ export const PIPELINE_SCHEMA = Object.freeze({
     check: checkSamples,
   },
   kernelGroups: {
-    default: 'auto', type: "number|'auto'",
-    doc: `method 'footprint': the profile's Gaussians blurred in groups, 1..${MAX_KERNEL_GROUPS}, so the blur is the same in every direction (1: one kernel, exact along the screen axes only); 'auto': the fewest within the isotropy budget at the on-screen scale`,
+    default: 1, type: "number|'auto'",
+    doc: `method 'footprint': 1, one separable kernel (exact along the screen axes only; the fast blur); 'auto' or 2..${MAX_KERNEL_GROUPS}: the profile's Gaussians blurred in groups, the same in every direction, at about twice the blur's time ('auto': one group where one is within the isotropy budget, a far head, else ${MAX_KERNEL_GROUPS})`,
     check: (value, name) => checkKernelGroups(value, name),
   },
   strength: {

@@ -60,9 +60,9 @@ export class BlurStage {
    * @param {number[]} [options.falloff]
    * @param {object} options.surface SurfacePass options (camera, surface and diffuse textures,
    *   followSurface, depthThresholdWorld, foreshortening)
-   * @param {'auto'|number} [options.kernelGroups='auto'] the isotropic blur's groups (see `kernelGroups`)
+   * @param {'auto'|number} [options.kernelGroups=1] the isotropic blur's groups (see `kernelGroups`)
    */
-  constructor({ type, profileLookup, method, samples, strength, falloff, surface, kernelGroups = 'auto' }) {
+  constructor({ type, profileLookup, method, samples, strength, falloff, surface, kernelGroups = 1 }) {
     this.profileLookup = profileLookup;
     /** The profiles' tables by slot; the first one's kernel is the fixed-tap methods'. */
     this.profileLookups = [profileLookup];
@@ -130,10 +130,11 @@ export class BlurStage {
   }
 
   /**
-   * The isotropic blur's groups ('footprint' only): 'auto' (default) takes per frame the fewest
-   * whose separable error is within src/3-blur/kernelGroups.js's budget at the frame's largest
-   * on-screen scale; 1..4 that many; 1 is the one-kernel blur (exact along the screen axes only).
-   * Changing between 1 and the others recompiles the blur once; the count per frame does not.
+   * The isotropic blur's groups ('footprint' only): 1 (default) is the one-kernel blur (exact
+   * along the screen axes only); 'auto' takes per frame one group where one is within
+   * src/3-blur/kernelGroups.js's budget at the frame's largest on-screen scale (a far head), else
+   * MAX_KERNEL_GROUPS (three cost about what four do); 2..4 that many. A count's programs are
+   * compiled on the first frame that may use them (_warmGroupCounts), so no later frame compiles.
    * @type {'auto'|number}
    */
   get kernelGroups() { return this._kernelGroups; }
@@ -293,15 +294,18 @@ export class BlurStage {
 
   /**
    * With groups possible, the first frame (and the first after a setting changed the passes'
-   * defines) draws both passes once at every count, so each count's programs exist before 'auto'
-   * first picks it: no later frame compiles (test/browser/dropIn.test.js counts the programs).
+   * defines) draws both passes once at the count the setting gives, so its programs exist before
+   * 'auto' first picks it: no later frame compiles (test/browser/dropIn.test.js counts the programs).
    */
   _warmGroupCounts(renderer) {
     if (this.groupCapacity === 1) return;
     const key = JSON.stringify([this.horizontalPass.material.defines, this.verticalPass.material.defines, this.profileLookups.length]);
     if (key === this._warmKey) return;
-    for (let count = 2; count <= MAX_KERNEL_GROUPS; count++) {
-      this._groupFrame(this.profileLookups.map((lookup) => kernelGroupsAt(lookup.profile, 0, count)));
+    // The count the setting gives when it groups ('auto': MAX_KERNEL_GROUPS, fewer for a profile of fewer Gaussians).
+    const count = this._kernelGroups === 'auto' ? MAX_KERNEL_GROUPS : this._kernelGroups;
+    const groupings = this.profileLookups.map((lookup) => kernelGroupsAt(lookup.profile, 1, count));
+    if (Math.max(...groupings.map((g) => g.count)) > 1) {
+      this._groupFrame(groupings);
       this.horizontalPass.render(renderer, this._groupTarget, null);
       this.verticalPass.render(renderer, this.scatteredTarget, null);
     }

@@ -6,7 +6,7 @@
 import { AUTO_REACH, AUTO_SAMPLES, METHOD_TABLE } from '../options.js';
 import { AUTO_MAX_SAMPLES } from '../profiles/footprints.js';
 import { MIN_KERNEL_PIXELS } from './samplingModel.js';
-import { kernelGroupsAt } from './kernelGroups.js';
+import { MAX_KERNEL_GROUPS, kernelGroupsAt } from './kernelGroups.js';
 
 /**
  * 'auto' taps of the fixed-tap methods: the fewest of AUTO_SAMPLES whose (samples - 3) / 2
@@ -34,14 +34,19 @@ export function autoSampleCount(radiusPx) {
  */
 
 /**
- * The isotropic blur's groups for a frame whose largest on-screen scale is `pixelsPerMm`: each
- * slot's profile grouped into as many groups as the slot needing most does ('auto': the fewest
- * within kernelGroups.js's error budget at that scale), or null for one kernel.
+ * The isotropic blur's groups for a frame whose largest on-screen scale is `pixelsPerMm`, per
+ * slot, or null for one kernel: a count, that many in every slot; 'auto', one kernel where every
+ * slot's profile is within kernelGroups.js's error budget with one group at that scale (a far
+ * head), else MAX_KERNEL_GROUPS (fewer for a profile of fewer Gaussians). 'auto' goes no lower:
+ * three groups measured about four's time (the groups' work is per tap, not per group), and one
+ * count keeps one set of programs.
  * @param {BlurSettings} settings @param {number} pixelsPerMm
  */
 export function frameGroupings(settings, pixelsPerMm) {
-  if ((settings.kernelGroups ?? 1) === 1) return null; // one kernel (also a planner without groups: the WebGPU node)
-  const count = Math.max(...settings.profiles.map((profile) => kernelGroupsAt(profile, pixelsPerMm, settings.kernelGroups).count));
+  const setting = settings.kernelGroups ?? 1;
+  if (setting === 1) return null; // one kernel (also a planner without groups: the WebGPU node)
+  if (setting === 'auto' && settings.profiles.every((profile) => kernelGroupsAt(profile, pixelsPerMm, 'auto').count === 1)) return null;
+  const count = setting === 'auto' ? MAX_KERNEL_GROUPS : setting;
   return settings.profiles.map((profile) => kernelGroupsAt(profile, pixelsPerMm, count));
 }
 

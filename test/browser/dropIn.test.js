@@ -124,14 +124,14 @@ describe('transparent objects', () => {
 });
 
 describe('no frame recompiles a shader', () => {
-  it("'auto' changes its tap count with the on-screen scale by a uniform: the program count stays as the first frame left it", async () => {
+  it("'auto' changes its tap count (and the isotropic blur its groups) with the on-screen scale without a compile: the program count stays as the first frame left it", async () => {
     const r = await page.evaluate(() => {
       const { SSS, createRenderer, createComposer, buildScene, DEFAULTS } = window.lab;
       const renderer = createRenderer(DEFAULTS.width, DEFAULTS.height);
       const built = buildScene('slab', { aspect: 1 });
       const out = {};
-      for (const method of ['marginal', 'reference', 'footprint']) {
-        const sss = new SSS.SubsurfaceScattering({ scene: built.scene, camera: built.camera, worldUnitInMm: DEFAULTS.worldUnitInMm, method, samples: 'auto' });
+      for (const [key, method, kernelGroups] of [['marginal', 'marginal', 1], ['reference', 'reference', 1], ['footprint', 'footprint', 1], ['isotropic', 'footprint', 'auto']]) {
+        const sss = new SSS.SubsurfaceScattering({ scene: built.scene, camera: built.camera, worldUnitInMm: DEFAULTS.worldUnitInMm, method, samples: 'auto', kernelGroups });
         sss.makeSubsurface(built.subsurface[0], { widthMm: 1 });
         const composer = createComposer(renderer);
         composer.addPass(sss);
@@ -142,10 +142,10 @@ describe('no frame recompiles a shader', () => {
           built.camera.position.copy(start).multiplyScalar(distance);
           built.camera.updateMatrixWorld();
           composer.render();
-          frames.push({ samples: sss.plan.samples, kernelPixels: sss.plan.kernelPixels, programs: renderer.info.programs.length });
+          frames.push({ samples: sss.plan.samples, kernelPixels: sss.plan.kernelPixels, groups: sss.plan.groups, programs: renderer.info.programs.length });
         }
         built.camera.position.copy(start);
-        out[method] = frames;
+        out[key] = frames;
         sss.dispose();
         composer.dispose();
       }
@@ -161,6 +161,9 @@ describe('no frame recompiles a shader', () => {
     // The fixed-tap methods did change their count (the footprints choose per pixel, the frame keeps 63).
     for (const method of ['marginal', 'reference']) expect(new Set(r[method].map((f) => f.samples)).size, method).toBeGreaterThan(1);
     expect(new Set(r.footprint.map((f) => f.samples))).toEqual(new Set([63]));
+    // The isotropic blur went from one kernel (far) to its groups (near) without a compile.
+    expect(r.isotropic[0].groups).toBe(1);
+    expect(r.isotropic.at(-1).groups).toBeGreaterThan(1);
   });
 });
 

@@ -7,7 +7,7 @@ import { AUTO_SAMPLES, AUTO_REACH, METHODS, METHOD_TABLE } from '../../../src/op
 import { AUTO_MAX_SAMPLES } from '../../../src/profiles/footprints.js';
 import { computeKernel, kernelRadiusMm } from '../../../src/profiles/kernel.js';
 import { profiles } from '../../../src/profiles/presets.js';
-import { autoKernelGroups } from '../../../src/3-blur/kernelGroups.js';
+import { MAX_KERNEL_GROUPS, autoKernelGroups } from '../../../src/3-blur/kernelGroups.js';
 
 const base = { scattering: true, marginalRadiusMm: 3, denseRadiusMm: 7, kernelReachMm: { 17: 4, 25: 5 }, kernelGroups: 1, profiles: [profiles.skin] };
 const oneKernel = { groups: 1, groupings: null };
@@ -58,14 +58,16 @@ describe('planBlur', () => {
     expect(planBlur({ ...base, kernelReachMm: { 17: mm }, method: 'marginal', samples: 17 }, 3).kernelPixels).toBeCloseTo(3 * mm, 12);
   });
 
-  it("the isotropic blur's groups: 'auto' takes per frame the fewest within the budget at its scale, every slot as many as the one needing most; fixed taps and the dense pass none", () => {
+  it("the isotropic blur's groups: 'auto' is one kernel where one group is within the budget at the frame's scale, else the most; a count that many in every slot; fixed taps and the dense pass none", () => {
     const grouped = { ...base, method: 'footprint', samples: 'auto', kernelGroups: 'auto', profiles: [profiles.skin, profiles.marble] };
     const far = planBlur(grouped, 0.125);
-    expect(far.groups).toBe(1); // a far head pays for one group
+    expect(autoKernelGroups(profiles.skin, 0.125).count).toBe(1);
+    expect(far).toMatchObject(oneKernel); // a far head pays for one kernel
     const near = planBlur(grouped, 5);
-    expect(near.groups).toBe(Math.max(autoKernelGroups(profiles.skin, 5).count, autoKernelGroups(profiles.marble, 5).count));
-    expect(near.groups).toBeGreaterThan(1);
-    expect(near.groupings.map((g) => g.count)).toEqual([near.groups, near.groups]);
+    expect(autoKernelGroups(profiles.skin, 5).count).toBeGreaterThan(1);
+    expect(near.groups).toBe(MAX_KERNEL_GROUPS);
+    expect(near.groupings.map((g) => g.count)).toEqual([MAX_KERNEL_GROUPS, MAX_KERNEL_GROUPS]); // marble has four Gaussians
+    expect(planBlur({ ...grouped, kernelGroups: 1 }, 5)).toMatchObject(oneKernel);
     expect(planBlur({ ...grouped, kernelGroups: 2 }, 5).groups).toBe(2);
     for (const method of ['marginal', 'dense']) {
       expect(planBlur({ ...grouped, method, samples: 17 }, 5)).toMatchObject(oneKernel);
