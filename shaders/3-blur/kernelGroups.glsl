@@ -51,6 +51,19 @@ int sssNearFootprints( const in int row ) {
 	return int( texelFetch( tGroupFractions, ivec2( 0, row ), 0 ).a );
 }
 
+// sum_g += part_g * light_g for the groups the frame has (groups 3 and 4 above two): the one way
+// the blur accumulates them (named vec3s, see the header).
+void sssAccumulate( inout vec3 sum0, inout vec3 sum1, inout vec3 sum2, inout vec3 sum3,
+	const in vec3 part0, const in vec3 part1, const in vec3 part2, const in vec3 part3,
+	const in vec3 light0, const in vec3 light1, const in vec3 light2, const in vec3 light3 ) {
+	sum0 += part0 * light0;
+	sum1 += part1 * light1;
+	#if SSS_GROUPS > 2
+		sum2 += part2 * light2;
+		sum3 += part3 * light3;
+	#endif
+}
+
 #if AXIS == 0
 	// Both attachments are written at every count: WebGL refuses a draw with a target attachment
 	// the shader has no output for.
@@ -76,25 +89,25 @@ int sssNearFootprints( const in int row ) {
 		uniform highp usampler2D tGroups1;
 	#endif
 
+	// The two groups of one attachment's texel: rgb = packHalf2x16(first, second) per channel.
+	void sssUnpackGroups( const in uvec3 packed, out vec3 first, out vec3 second ) {
+		vec2 r = unpackHalf2x16( packed.r );
+		vec2 g = unpackHalf2x16( packed.g );
+		vec2 b = unpackHalf2x16( packed.b );
+		first = vec3( r.x, g.x, b.x );
+		second = vec3( r.y, g.y, b.y );
+	}
+
 	// A texel's groups with the coverage divided out; returns the coverage (0 off the mask, or when
 	// a group is not finite).
 	float sssGroupsAt( const in ivec2 texel, out vec3 light0, out vec3 light1, out vec3 light2, out vec3 light3 ) {
 		uvec4 packed = texelFetch( tGroups0, texel, 0 );
 		float coverage = uintBitsToFloat( packed.a );
-		vec2 r = unpackHalf2x16( packed.r );
-		vec2 g = unpackHalf2x16( packed.g );
-		vec2 b = unpackHalf2x16( packed.b );
-		light0 = vec3( r.x, g.x, b.x );
-		light1 = vec3( r.y, g.y, b.y );
+		sssUnpackGroups( packed.rgb, light0, light1 );
 		vec3 sum = light0 + light1;
 		light2 = light3 = vec3( 0.0 );
 		#if SSS_GROUPS > 2
-			uvec3 more = texelFetch( tGroups1, texel, 0 ).rgb;
-			r = unpackHalf2x16( more.r );
-			g = unpackHalf2x16( more.g );
-			b = unpackHalf2x16( more.b );
-			light2 = vec3( r.x, g.x, b.x );
-			light3 = vec3( r.y, g.y, b.y );
+			sssUnpackGroups( texelFetch( tGroups1, texel, 0 ).rgb, light2, light3 );
 			sum += light2 + light3;
 		#endif
 		if ( ! ( coverage > 0.0 ) || ! sssFinite( sum ) ) {
@@ -116,11 +129,7 @@ int sssNearFootprints( const in int row ) {
 		float sssFarGroupsAt( const in ivec2 texel, out vec3 light2, out vec3 light3 ) {
 			uvec4 packed = texelFetch( tGroups1, texel, 0 );
 			float coverage = uintBitsToFloat( packed.a );
-			vec2 r = unpackHalf2x16( packed.r );
-			vec2 g = unpackHalf2x16( packed.g );
-			vec2 b = unpackHalf2x16( packed.b );
-			light2 = vec3( r.x, g.x, b.x );
-			light3 = vec3( r.y, g.y, b.y );
+			sssUnpackGroups( packed.rgb, light2, light3 );
 			if ( ! ( coverage > 0.0 ) || ! sssFinite( light2 + light3 ) ) {
 				light2 = light3 = vec3( 0.0 );
 				return 0.0;

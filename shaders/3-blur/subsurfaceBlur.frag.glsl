@@ -142,12 +142,7 @@ void addTap( const in float offsetPx, const in vec3 weight, const in ivec2 pixel
 				d = mix( d, centre3, farness );
 			#endif
 		#endif
-		light0 += a * weight;
-		light1 += b * weight;
-		#if SSS_GROUPS > 2
-			light2 += c * weight;
-			light3 += d * weight;
-		#endif
+		sssAccumulate( light0, light1, light2, light3, vec3( weight ), vec3( weight ), vec3( weight ), vec3( weight ), a, b, c, d );
 		return weight;
 	}
 
@@ -406,34 +401,16 @@ void main() {
 			float kept = sssLinearTap( offsetPx, pixel, surface.r, slope, centre, light );
 			kept += sssLinearTap( - offsetPx, pixel, surface.r, slope, centre, other );
 			light += other;
-			sum0 += part0 * light;
-			sum1 += part1 * light;
-			#if SSS_GROUPS > 2
-				sum2 += part2 * light;
-				sum3 += part3 * light;
-			#endif
+			sssAccumulate( sum0, sum1, sum2, sum3, part0, part1, part2, part3, light, light, light, light );
 		#else
 			vec3 light0, light1, light2, light3, other0, other1, other2, other3;
 			float kept = sssLinearGroupTap( offsetPx, pixel, surface.r, slope, centre0, centre1, centre2, centre3, light0, light1, light2, light3 );
 			kept += sssLinearGroupTap( - offsetPx, pixel, surface.r, slope, centre0, centre1, centre2, centre3, other0, other1, other2, other3 );
-			sum0 += part0 * ( light0 + other0 );
-			sum1 += part1 * ( light1 + other1 );
-			#if SSS_GROUPS > 2
-				sum2 += part2 * ( light2 + other2 );
-				sum3 += part3 * ( light3 + other3 );
-			#endif
+			sssAccumulate( sum0, sum1, sum2, sum3, part0, part1, part2, part3, light0 + other0, light1 + other1, light2 + other2, light3 + other3 );
 		#endif
-		weightSum0 += part0 * kept;
-		weightSum1 += part1 * kept;
-		#if SSS_GROUPS > 2
-			weightSum2 += part2 * kept;
-			weightSum3 += part3 * kept;
-		#endif
+		sssAccumulate( weightSum0, weightSum1, weightSum2, weightSum3, part0, part1, part2, part3, vec3( kept ), vec3( kept ), vec3( kept ), vec3( kept ) );
 		#if AXIS == 0
-			planned0 += 2.0 * part0;
-			planned1 += 2.0 * part1;
-			planned2 += 2.0 * part2;
-			planned3 += 2.0 * part3;
+			sssAccumulate( planned0, planned1, planned2, planned3, part0, part1, part2, part3, vec3( 2.0 ), vec3( 2.0 ), vec3( 2.0 ), vec3( 2.0 ) );
 		#endif
 		if ( last ) {
 			done = true;

@@ -294,8 +294,9 @@ export class BlurStage {
 
   /**
    * With groups possible, the first frame (and the first after a setting changed the passes'
-   * defines) draws both passes once at the count the setting gives, so its programs exist before
-   * 'auto' first picks it: no later frame compiles (test/browser/dropIn.test.js counts the programs).
+   * defines) draws both passes once at the count the setting gives and once with one kernel, so
+   * both programs exist before 'auto' first picks either: no later frame compiles
+   * (test/browser/dropIn.test.js counts the programs).
    */
   _warmGroupCounts(renderer) {
     if (this.groupCapacity === 1) return;
@@ -309,6 +310,10 @@ export class BlurStage {
       this.horizontalPass.render(renderer, this._groupTarget, null);
       this.verticalPass.render(renderer, this.scatteredTarget, null);
     }
+    // And one kernel's (a far head's), which a first frame in groups would not have drawn.
+    for (const pass of [this.horizontalPass, this.verticalPass]) pass.setGroupFrame({ count: 1 });
+    this.horizontalPass.render(renderer, this._blurTarget, null);
+    this.verticalPass.render(renderer, this.scatteredTarget, null);
     this._warmKey = key;
   }
 
