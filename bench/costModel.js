@@ -49,7 +49,7 @@ export function targetMemory(width, height, { samples = 0, groups = true } = {})
  * kernelGroups: the isotropic blur's groups (issue 20; 1: one kernel): with more, the horizontal
  * pass writes two RGBA32UI texels (32 B) instead of one RGBA16F (8 B), the vertical pass reads
  * them (and fetches both per tap, an upper bound: past groups 1 and 2's reach it fetches one), and
- * the horizontal pass fetches the group fractions per footprint (a small table: free).
+ * both passes fetch the group fractions per footprint (a small table: free in memory traffic).
  */
 export const BEFORE = Object.freeze({ depthPrepass: true, confineToSubsurface: false, fetchesEverywhere: false, skipsEmptyTexels: false, kernelGroups: 1 });
 export const AFTER = Object.freeze({ depthPrepass: false, confineToSubsurface: true, fetchesEverywhere: false, skipsEmptyTexels: true, kernelGroups: 1 });

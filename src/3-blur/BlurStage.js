@@ -74,9 +74,11 @@ export class BlurStage {
     this._blurTarget = new WebGLRenderTarget(1, 1, { type, depthBuffer: false });
     this._blurTarget.texture.name = 'subsurface.horizontal';
     this._kernelGroups = checkKernelGroups(kernelGroups);
+    this._checkGroupsMethod(method, this._kernelGroups);
     this._groupTarget = null; // built when a grouped frame first needs it
     this._groupTable = new KernelGroupTable();
-    this._warmKey = null; // the passes' defines when every group count was last drawn
+    this._warmKey = null; // the passes' defines and the setting when the groups' programs were last drawn
+    this._warmProfiles = []; // and the slots' profiles (a profile of fewer Gaussians takes fewer groups)
     /** The scattered diffuse light, premultiplied by its coverage like the multi-target's. */
     this.scatteredTarget = new WebGLRenderTarget(1, 1, { type, depthBuffer: false });
     this.scatteredTarget.texture.name = 'subsurface.scattered';
@@ -245,6 +247,7 @@ export class BlurStage {
   render(renderer, camera, timed, plan = this.lastPlan, box = null) {
     for (const pass of this.surfacePasses) pass.camera = camera;
     if (this.groupCapacity > 1) this._ensureGroupTarget();
+    else if (this._groupTarget) this._freeGroupTarget(); // back to one kernel: its 32 B per pixel go
     // The scissor's clears (when the box moved) are timed with the first pass.
     const scissored = () => this._scissor(renderer, this.confineToSubsurface ? box : null);
     if (plan.passes === 'dense') {
@@ -281,7 +284,14 @@ export class BlurStage {
     const fractions = this._groupTable.update(groupings, this.profileLookups.map((lookup) => tableOf(lookup, samples)));
     const frame = { count: Math.max(...groupings.map((g) => g.count)), fractions, energies: this._groupTable.energies };
     this.horizontalPass.setGroupFrame(frame);
-    this.verticalPass.setGroupFrame({ ...frame, groups: this._groupTarget.textures });
+    this.verticalPass.setGroupFrame({ ...frame, groups: this._groupTarget.textures, coverage: this._surface.diffuseTexture });
+  }
+
+  _freeGroupTarget() {
+    this._groupTarget.dispose();
+    this._groupTarget = null;
+    this._warmKey = null;
+    this._scissorKey = null;
   }
 
   /** The group target, built when groups first become possible (then cleared and scissored with the others). */
@@ -293,15 +303,17 @@ export class BlurStage {
   }
 
   /**
-   * With groups possible, the first frame (and the first after a setting changed the passes'
-   * defines) draws both passes once at the count the setting gives and once with one kernel, so
+   * With groups possible, the first frame (and the first after the passes' defines, kernelGroups
+   * or the slots' profiles changed) draws both passes once at the count the setting gives and once with one kernel, so
    * both programs exist before 'auto' first picks either: no later frame compiles
    * (test/browser/dropIn.test.js counts the programs).
    */
   _warmGroupCounts(renderer) {
     if (this.groupCapacity === 1) return;
-    const key = JSON.stringify([this.horizontalPass.material.defines, this.verticalPass.material.defines, this.profileLookups.length]);
-    if (key === this._warmKey) return;
+    const key = JSON.stringify([this.horizontalPass.material.defines, this.verticalPass.material.defines, this._kernelGroups]);
+    const profiles = this.profileLookups.map((lookup) => lookup.profile);
+    if (key === this._warmKey && profiles.length === this._warmProfiles.length && profiles.every((p, i) => p === this._warmProfiles[i])) return;
+    this._warmProfiles = profiles;
     // The count the setting gives when it groups ('auto': MAX_KERNEL_GROUPS, fewer for a profile of fewer Gaussians).
     const count = this._kernelGroups === 'auto' ? MAX_KERNEL_GROUPS : this._kernelGroups;
     const groupings = this.profileLookups.map((lookup) => kernelGroupsAt(lookup.profile, 1, count));

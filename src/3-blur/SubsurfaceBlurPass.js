@@ -135,12 +135,17 @@ export class SubsurfaceBlurPass extends SurfacePass {
    * `material`'s variant compiled for that count, which follows its defines (a program per count,
    * kept: a change of count is no recompile once each has been drawn). The horizontal pass then
    * writes the group target, the vertical one reads its attachments (`groups`).
-   * @param {{ count: number, energies?: Float32Array, fractions?: import('three').Texture, groups?: readonly import('three').Texture[] }} frame
+   * `coverage` (the vertical pass): a texture whose alpha is the coverage, for the surface reads
+   * that divide it out (MSAA: the slope's neighbours), in place of the light it no longer reads.
+   * @param {{ count: number, energies?: Float32Array, fractions?: import('three').Texture, groups?: readonly import('three').Texture[], coverage?: import('three').Texture|null }} frame
    */
-  setGroupFrame({ count, energies = null, fractions = null, groups = [] }) {
+  setGroupFrame({ count, energies = null, fractions = null, groups = [], coverage = null }) {
     if (!Number.isInteger(count) || count < 1 || count > MAX_KERNEL_GROUPS) throw new RangeError(`SubsurfaceBlurPass.setGroupFrame: count must be an integer in 1..${MAX_KERNEL_GROUPS}, got ${describe(count)}`);
     if (count > 1 && this.mode !== 'footprint') throw new RangeError(`SubsurfaceBlurPass.setGroupFrame: groups need the 'footprint' mode, the pass is in '${this.mode}'`);
     this.groups = count;
+    // The light's alpha is the coverage the surface reads divide out: the groups' pass reads its
+    // light from `groups`, and the coverage from `coverage` (the multi-target's diffuse).
+    this.uniforms.tDiffuse.value = count > 1 && coverage ? coverage : this.diffuseTexture;
     if (count === 1) return;
     this.uniforms.groupEnergies.value = energies;
     this.uniforms.tGroupFractions.value = fractions;

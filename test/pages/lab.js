@@ -65,6 +65,7 @@ const SCENES = {
     const material = new THREE.MeshStandardMaterial({ color: 0xffffff, roughness: 1, metalness: 0, map: PATTERNS[o.pattern ?? 'uniform'](o) });
     const slab = new THREE.Mesh(new THREE.PlaneGeometry(o.slabSize, o.slabSize), material);
     slab.rotation.y = ((o.tiltDeg ?? 0) * Math.PI) / 180; // seen at a grazing angle
+    slab.rotation.x = ((o.tiltXDeg ?? 0) * Math.PI) / 180; // or turned about the horizontal axis
     scene.add(slab);
     const light = new THREE.DirectionalLight(0xffffff, o.intensity);
     light.position.set(0, 0, 10);

@@ -59,6 +59,9 @@ export const CALL_CASES = [
   ['type: UnsignedByteType', (t) => t.make({ type: t.THREE.UnsignedByteType }), 'RangeError', /^SubsurfaceScattering: type must be THREE\.HalfFloatType or THREE\.FloatType/],
   ['multisampling: -1', (t) => t.make({ multisampling: -1 }), 'RangeError', /multisampling must be an integer in 0\.\.16 samples \(or 'auto'\), got -1/],
   ["multisampling: 'on'", (t) => t.make({ multisampling: 'on' }), 'TypeError', /multisampling must be an integer .*got "on"/],
+  ['kernelGroups: 5', (t) => t.make({ kernelGroups: 5 }), 'RangeError', /kernelGroups must be an integer in 1\.\.4 groups \(or 'auto'\), got 5/],
+  ["kernelGroups: 'all'", (t) => t.make({ kernelGroups: 'all' }), 'TypeError', /kernelGroups must be 'auto' or an integer in 1\.\.4, got 'all'/],
+  ["kernelGroups: 3 with method 'marginal'", (t) => t.make({ method: 'marginal', kernelGroups: 3 }), 'RangeError', /kernelGroups 3 needs method 'footprint'/],
   ['a misspelt option', (t) => t.make({ sampels: 17 }), 'TypeError', /unknown option "sampels" \(accepted: scene, camera, light, worldUnitInMm, /],
   ["Pass's enabled as an option", (t) => t.make({ enabled: false }), 'TypeError', /unknown option "enabled"/],
 
@@ -80,6 +83,7 @@ export const CALL_CASES = [
   ['sss.stageTimer = {}', (t) => { t.sss.stageTimer = {}; }, 'TypeError', /stageTimer must be null or an object with begin\(stage\) and end\(stage\) functions/],
   ['sss.stageTimer = a function', (t) => { t.sss.stageTimer = () => {}; }, 'TypeError', /stageTimer must be null or an object/],
   ["sss.multisampling = 'on'", (t) => { t.sss.multisampling = 'on'; }, 'TypeError', /multisampling must be an integer in 0\.\.16/],
+  ["sss.method = 'reference' with kernelGroups 2", (t) => { t.sss.kernelGroups = 2; t.sss.method = 'reference'; }, 'RangeError', /kernelGroups 2 needs method 'footprint'/],
   ['sss.worldUnitInMm = NaN', (t) => { t.sss.worldUnitInMm = NaN; }, 'TypeError', /worldUnitInMm must be a finite number, got NaN/],
   ['sss.worldUnitInMm = 1e-9', (t) => { t.sss.worldUnitInMm = 1e-9; }, 'RangeError', /worldUnitInMm must be in .*got 1e-9/],
   ["transmittance = 'no'", (t) => { t.sss.transmittance = 'no'; }, 'TypeError', /transmittance must be a boolean \(true or false\), got "no"/],

@@ -55,10 +55,11 @@ describe('aspect fix: horizontal and vertical widths agree in world units at 16:
 describe('grazing angles', () => {
   // A point of light on a slab turned 60° about the vertical axis: on the surface, light must spread
   // as far across (x) as up (y); on screen the x spread is foreshortened by cos 60° = 0.5.
-  const spread = async (foreshortening) => {
+  // `vertical`: the slab turned about the horizontal axis instead (the y spread foreshortened).
+  const spread = async (foreshortening, { vertical = false, sss = {}, samples = 0 } = {}) => {
     const r = await runLab(page, {
-      scene: 'slab', pattern: 'point', cells: 255, tiltDeg: 60, width: 256, height: 144, widthMm: 4, type: 'float',
-      sss: { followSurface: 'drop', samples: 25, foreshortening }, reads: ['output', 'light', 'diffuse', 'surface'],
+      scene: 'slab', pattern: 'point', cells: 255, ...(vertical ? { tiltXDeg: 60 } : { tiltDeg: 60 }), width: 256, height: 144, widthMm: 4, type: 'float', samples,
+      sss: { followSurface: 'drop', samples: 25, foreshortening, ...sss }, reads: ['output', 'light', 'diffuse', 'surface'],
     });
     const { width, height } = r;
     const moments = (img) => {
@@ -75,15 +76,24 @@ describe('grazing angles', () => {
     const depth = r.surface[at(width, Math.round(before.mx), Math.round(before.my))];
     const pxX = (2 * depth) / (r.projectionScale[0] * width);
     const pxY = (2 * depth) / (r.projectionScale[1] * height);
-    const surfaceX = (Math.sqrt(after.varX - before.varX) * pxX) / Math.cos(Math.PI / 3);
-    const surfaceY = Math.sqrt(after.varY - before.varY) * pxY;
-    return surfaceX / surfaceY;
+    const surfaceX = (Math.sqrt(after.varX - before.varX) * pxX) / (vertical ? 1 : Math.cos(Math.PI / 3));
+    const surfaceY = (Math.sqrt(after.varY - before.varY) * pxY) / (vertical ? Math.cos(Math.PI / 3) : 1);
+    return vertical ? surfaceY / surfaceX : surfaceX / surfaceY;
   };
 
   it('the blur spreads light equally along a tilted surface (within 5 %) with the correction, and not without', async () => {
     expect(Math.abs((await spread(true)) - 1)).toBeLessThan(0.05);
     // Without it, 'drop' reads the tilted plane as a depth edge and cuts the kernel short across it.
     expect(Math.abs((await spread(false)) - 1)).toBeGreaterThan(0.4);
+  });
+
+  it("the isotropic blur with MSAA 4, turned about either axis, spreads light equally along the surface too (within 5 %)", async () => {
+    // Turned about the horizontal axis, the vertical pass's own slope is the one corrected: the
+    // groups' vertical pass reads the slope's coverage from the multi-target's diffuse (its light
+    // comes from the group target).
+    for (const vertical of [false, true]) {
+      expect(Math.abs((await spread(true, { vertical, samples: 4, sss: { kernelGroups: 'auto' } })) - 1), vertical ? 'about x' : 'about y').toBeLessThan(0.05);
+    }
   });
 });
 
