@@ -268,8 +268,7 @@ export class BlurStage {
    * @param {import('./blurPlan.js').BlurPlan} plan
    */
   _horizontalTarget(plan) {
-    const count = this.groupCapacity > 1 && plan.groupings ? plan.groups : 1;
-    if (count === 1) {
+    if (this.groupCapacity === 1 || !plan.groupings) { // one kernel (a plan made before the setting changed, too)
       for (const pass of [this.horizontalPass, this.verticalPass]) pass.setGroupFrame({ count: 1 });
       return this._blurTarget;
     }
@@ -304,9 +303,9 @@ export class BlurStage {
 
   /**
    * With groups possible, the first frame (and the first after the passes' defines, kernelGroups
-   * or the slots' profiles changed) draws both passes once at the count the setting gives and once with one kernel, so
-   * both programs exist before 'auto' first picks either: no later frame compiles
-   * (test/browser/dropIn.test.js counts the programs).
+   * or the slots' profiles changed) draws both passes once at the count the setting gives and
+   * once with one kernel, so both programs exist before 'auto' first picks either: no later frame
+   * compiles (test/browser/dropIn.test.js counts the programs).
    */
   _warmGroupCounts(renderer) {
     if (this.groupCapacity === 1) return;
