@@ -22,7 +22,8 @@ export const TARGETS = Object.freeze([
   { name: 'diffuse (multi-target 1)', format: 'rgba16f', multisampled: true },
   { name: 'surface (multi-target 2)', format: 'rg32f', multisampled: true },
   { name: 'depth (multi-target)', format: 'depth24', multisampled: true },
-  { name: 'horizontal blur', format: 'rgba16f', multisampled: false },
+  // RGBA32F while it carries the depth (BlurStage.lightCarriesDepth, the default), else the pipeline's type.
+  { name: 'horizontal blur', format: 'rgba16f', carriedFormat: 'rgba32f', multisampled: false },
   { name: 'horizontal blur, isotropic groups (two attachments; built when groups are possible)', format: 'rgba32ui', attachments: 2, multisampled: false, groups: true },
   { name: 'scattered light', format: 'rgba16f', multisampled: false },
 ]);
@@ -32,10 +33,11 @@ export const TARGETS = Object.freeze([
  * a multisampled renderbuffer per multi-target attachment besides the resolved texture.
  * @returns {{ targets: Array<{ name: string, bytes: number }>, bytes: number }}
  */
-export function targetMemory(width, height, { samples = 0, groups = true } = {}) {
+export function targetMemory(width, height, { samples = 0, groups = true, lightCarriesDepth = true } = {}) {
   const pixels = width * height;
+  const formatOf = (t) => (lightCarriesDepth && t.carriedFormat ? t.carriedFormat : t.format);
   const targets = TARGETS.filter((t) => groups || !t.groups)
-    .map((t) => ({ name: t.name, bytes: pixels * TEXEL_BYTES[t.format] * (t.attachments ?? 1) * (1 + (t.multisampled && samples > 0 ? samples : 0)) }));
+    .map((t) => ({ name: t.name, bytes: pixels * TEXEL_BYTES[formatOf(t)] * (t.attachments ?? 1) * (1 + (t.multisampled && samples > 0 ? samples : 0)) }));
   return { targets, bytes: targets.reduce((sum, t) => sum + t.bytes, 0) };
 }
 
@@ -46,13 +48,16 @@ export function targetMemory(width, height, { samples = 0, groups = true } = {})
  * fetchesEverywhere: the compose reads the scattered light and the surface at every pixel;
  * skipsEmptyTexels: a tap on a texel centre fetches one texel, not two (fetches only: its
  * neighbours' taps read the other texel anyway, so the memory traffic is the same);
+ * lightCarriesDepth: the horizontal pass writes its light with the depth in the alpha (RGBA32F,
+ * 16 B, instead of RGBA16F), so a vertical tap fetches one texel of 16 B instead of light and
+ * surface (8 + 8; the same bytes read, half the fetches; one kernel only);
  * kernelGroups: the isotropic blur's groups (issue 20; 1: one kernel): with more, the horizontal
  * pass writes two RGBA32UI texels (32 B) instead of one RGBA16F (8 B), the vertical pass reads
  * them (and fetches both per tap, an upper bound: past groups 1 and 2's reach it fetches one), and
  * both passes fetch the group fractions per footprint (a small table: free in memory traffic).
  */
-export const BEFORE = Object.freeze({ depthPrepass: true, confineToSubsurface: false, fetchesEverywhere: false, skipsEmptyTexels: false, kernelGroups: 1 });
-export const AFTER = Object.freeze({ depthPrepass: false, confineToSubsurface: true, fetchesEverywhere: false, skipsEmptyTexels: true, kernelGroups: 1 });
+export const BEFORE = Object.freeze({ depthPrepass: true, confineToSubsurface: false, fetchesEverywhere: false, skipsEmptyTexels: false, lightCarriesDepth: false, kernelGroups: 1 });
+export const AFTER = Object.freeze({ depthPrepass: false, confineToSubsurface: true, fetchesEverywhere: false, skipsEmptyTexels: true, lightCarriesDepth: true, kernelGroups: 1 });
 /** This version with the isotropic blur (`kernelGroups: 'auto'`, four groups near): what the groups add, modelled. */
 export const ISOTROPIC = Object.freeze({ ...AFTER, kernelGroups: 4 });
 
@@ -77,13 +82,14 @@ const stage = (written, read, fetched = read) => ({ written, read, fetched });
  * A blur pass over `area` of the frame, `subsurface` of it on the mask, `taps` per direction,
  * reading `surface` bytes per texel for the surface (the attachment, or the depth texture).
  */
-function blurPass(area, subsurface, taps, surface, centred = 0, { input = RGBA16F, output = RGBA16F } = {}) {
+function blurPass(area, subsurface, taps, surface, centred = 0, { input = RGBA16F, output = RGBA16F, carried = false } = {}) {
   // Every pixel reads its centre (the light, surface) and writes its result; a mask pixel also
   // reads its two neighbours' surface (the slope) and, per tap, two texels of light and surface
   // (one for the `centred` taps on a texel centre). `input`, `output`: bytes per texel of the light
-  // read and written (the isotropic groups between the passes: 32).
+  // read and written (the isotropic groups between the passes: 32); `carried`: the light holds the
+  // depth, so a tap reads no surface.
   const centre = input + surface;
-  const perMaskPixel = 2 * surface + (taps * 2 - centred) * (input + surface);
+  const perMaskPixel = 2 * surface + (taps * 2 - centred) * (input + (carried ? 0 : surface));
   return stage(area * output, area * centre, area * centre + subsurface * perMaskPixel);
 }
 
@@ -112,18 +118,20 @@ export function frameTraffic(switches, { subsurface, box, ordinary = 0, taps, ce
   const area = switches.confineToSubsurface ? box : 1;
   const surface = switches.surfaceFromDepth ? DEPTH : RG32F;
   const skipped = switches.skipsEmptyTexels ? centred : 0;
-  const groups = (switches.kernelGroups ?? 1) > 1 ? 2 * TEXEL_BYTES.rgba32ui : RGBA16F;
-  const blurH = blurPass(area, s, taps, surface, skipped, { output: groups });
+  const grouped = (switches.kernelGroups ?? 1) > 1;
+  const carried = !grouped && switches.lightCarriesDepth === true;
+  const between = grouped ? 2 * TEXEL_BYTES.rgba32ui : carried ? TEXEL_BYTES.rgba32f : RGBA16F; // the light between the passes
+  const blurH = blurPass(area, s, taps, surface, skipped, { output: between });
   // Compose: depth, colour and diffuse (its mask) at every pixel, the scattered light on the mask
   // (or everywhere, with the surface, as before issue 10); out: the composer's colour and depth.
   const everywhere = switches.fetchesEverywhere ? 1 : 0;
   const composeRead = DEPTH + 2 * RGBA16F + (everywhere ? RGBA16F + RG32F : s * RGBA16F);
-  let blurV = blurPass(area, s, taps, surface, skipped, { input: groups });
+  let blurV = blurPass(area, s, taps, surface, skipped, { input: between, carried });
   let compose = stage(RGBA16F + DEPTH, composeRead);
   if (switches.composeInBlur) {
     // The vertical pass over the whole frame: its taps as before, plus colour and depth read and
     // the output (colour, depth) written at every pixel instead of the scattered light.
-    const v = blurPass(1, s, taps, surface, skipped, { input: groups });
+    const v = blurPass(1, s, taps, surface, skipped, { input: between, carried });
     blurV = stage(RGBA16F + DEPTH, v.read + RGBA16F + DEPTH, v.fetched + RGBA16F + DEPTH);
     compose = stage(0, 0);
   }

@@ -86,6 +86,7 @@ const UNDO_SWITCHES = Object.freeze({
   depthPrepass: (sss) => [sss.scenePass, 'depthPrepass', true],
   fullFrameBlur: (sss) => [sss.blur, 'confineToSubsurface', false],
   bothTexelsFetched: (sss) => [sss.blur, 'skipsEmptyTexels', false],
+  depthFromSurface: (sss) => [sss.blur, 'lightCarriesDepth', false],
   msaaDepthResolvedTwice: (sss) => [sss.scenePass, 'resolvesDepthOnce', false],
 });
 

@@ -6,7 +6,10 @@
 // SSS_ENERGY_LEFT (the numbers of src/3-blur/samplingModel.js), PROFILE_COUNT (the profiles in the
 // frame; above 1 each pixel blurs with its own, shaders/common/surfaceSample.glsl), SSS_GROUPS (1:
 // one kernel; 2..4: the isotropic blur's groups, 'footprint' only, shaders/3-blur/kernelGroups.glsl:
-// the horizontal pass then writes the groups, the vertical one sums them) and KERNEL_MODE:
+// the horizontal pass then writes the groups, the vertical one sums them), SSS_CARRIES_DEPTH (1, one
+// kernel: the horizontal pass writes the depth into its output's alpha and the vertical pass reads
+// it there, one fetch per tap instead of two: SSS_LIGHT_DEPTH, shaders/common/surfaceSample.glsl)
+// and KERNEL_MODE:
 //   KERNEL_MODE_TAPS: fixed weights and offsets (computeKernel's reference or marginal kernel);
 //   KERNEL_MODE_FOOTPRINT: per pixel, footprints of whole pixels from the FootprintTable, weighted
 //     by the profile marginal's exact energy from the ProfileLookup.
@@ -24,6 +27,10 @@ uniform vec2 projectionScale;   // camera.projectionMatrix.elements[0], [5]
 uniform vec2 resolution;        // pixels (width, height)
 uniform float depthFalloff;     // 1 / depth threshold (world units): dz beyond it is another surface
 uniform bool perspective;       // false for an orthographic camera: the step does not shrink with depth
+
+#if SSS_CARRIES_DEPTH == 1 && AXIS == 1
+	#define SSS_LIGHT_DEPTH 1 // the light read carries its depth
+#endif
 
 #include "common/finite.glsl"
 #include "common/screenScale.glsl"
@@ -235,6 +242,16 @@ float sssAxisStep( const in ivec2 pixel, const in vec2 surface, out float slope 
 #endif
 
 #if SSS_GROUPS == 1
+// A subsurface pixel's result: premultiplied by its coverage (sssCovered) or, from the horizontal
+// pass with SSS_CARRIES_DEPTH, as it is with the centre's depth in the alpha (surfaceSample.glsl).
+vec4 sssBlurOutput( const in vec3 colour, const in float coverage, const in float depth ) {
+	#if SSS_CARRIES_DEPTH == 1 && AXIS == 0
+		return vec4( colour, sssCarriedDepth( depth ) );
+	#else
+		return sssCovered( colour, coverage );
+	#endif
+}
+
 void main() {
 	ivec2 pixel = ivec2( gl_FragCoord.xy );
 	SssCentre pixelCentre = sssCentreAt( pixel );
@@ -253,7 +270,7 @@ void main() {
 	float stepPx = sssAxisStep( pixel, surface, slope );
 	// Below half a pixel the kernel cannot move light to another pixel: no work.
 	if ( ! ( stepPx * kernelRadiusMm >= SSS_MIN_KERNEL_PIXELS ) ) {
-		gl_FragColor = sssCovered( centre, pixelCentre.coverage );
+		gl_FragColor = sssBlurOutput( centre, pixelCentre.coverage, surface.r );
 		return;
 	}
 
@@ -289,7 +306,7 @@ void main() {
 	#if KERNEL_MODE == KERNEL_MODE_FOOTPRINT
 		result = mix( centre, result, strength ); // fixed-tap kernels have the strength built in
 	#endif
-	gl_FragColor = sssCovered( sssFinite( result ) ? result : centre, pixelCentre.coverage );
+	gl_FragColor = sssBlurOutput( sssFinite( result ) ? result : centre, pixelCentre.coverage, surface.r );
 }
 #else
 // Each channel's sum over its weights, or `fallback` where nothing was kept.

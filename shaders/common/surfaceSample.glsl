@@ -6,6 +6,43 @@
 // exactly where one surface meets the background or an ordinary material (silhouettes); where two
 // subsurface surfaces share a pixel, their coverage-weighted mean. Needs `tSurface`, `tDiffuse`
 // and shaders/common/finite.glsl, and PROFILE_COUNT (1: one profile, the b channel unread).
+//
+// SSS_LIGHT_DEPTH 1 (the vertical blur's input, which the horizontal pass wrote with
+// SSS_CARRIES_DEPTH: shaders/3-blur/subsurfaceBlur.frag.glsl): the light carries the surface's depth, so a tap fetches one texel, not two.
+// Its rgb is the light with the coverage divided out and its alpha the texel's linear view depth
+// (coverage divided out too) on the mask; off it the alpha is +0.0. A depth of exactly 0 (an
+// orthographic camera sees behind its plane) is written as -0.0: the mask is "the alpha's bits are
+// not +0.0's", whatever the depth's sign. With SSS_COVERAGE the coverage comes from `tCoverage`'s
+// alpha (the multi-target's diffuse): one number cannot hold both.
+
+#ifndef SSS_LIGHT_DEPTH
+	#define SSS_LIGHT_DEPTH 0
+#endif
+#if SSS_LIGHT_DEPTH == 1 && SSS_COVERAGE == 1
+	uniform sampler2D tCoverage; // the multi-target's diffuse: its alpha is the coverage
+#endif
+
+// Whether a depth-carrying texel's alpha marks the mask.
+bool sssCarriesSurface( const in float alpha ) {
+	return floatBitsToUint( alpha ) != 0u;
+}
+
+// The alpha that carries `depth` (on the mask): -0.0 for a depth of 0, so it is not read as off it.
+float sssCarriedDepth( const in float depth ) {
+	return floatBitsToUint( depth ) == 0u ? uintBitsToFloat( 0x80000000u ) : depth;
+}
+
+// The coverage of a texel on the mask (SSS_COVERAGE only: without MSAA it is 1): the light's alpha,
+// or tCoverage's where the light carries the depth.
+float sssCoverageAt( const in ivec2 texel ) {
+	#if SSS_LIGHT_DEPTH == 1 && SSS_COVERAGE == 1
+		return texelFetch( tCoverage, texel, 0 ).a;
+	#elif SSS_LIGHT_DEPTH == 1
+		return 1.0;
+	#else
+		return texelFetch( tDiffuse, texel, 0 ).a;
+	#endif
+}
 
 // Divides a premultiplied value by its coverage (a no-op without SSS_COVERAGE).
 vec2 sssUncovered( const in vec2 value, const in float coverage ) {
@@ -19,7 +56,7 @@ vec2 sssUncovered( const in vec2 value, const in float coverage ) {
 vec2 sssSurfaceAt( const in ivec2 texel ) {
 	vec2 surface = texelFetch( tSurface, texel, 0 ).rg;
 	#if SSS_COVERAGE == 1
-		surface = sssUncovered( surface, texelFetch( tDiffuse, texel, 0 ).a );
+		surface = sssUncovered( surface, sssCoverageAt( texel ) );
 	#endif
 	return surface;
 }
@@ -35,11 +72,15 @@ SssCentre sssCentreAt( const in ivec2 pixel ) {
 	vec4 light = texelFetch( tDiffuse, pixel, 0 );
 	SssCentre centre;
 	centre.colour = sssFinite( light.rgb ) ? light.rgb : vec3( 0.0 );
-	centre.coverage = light.a > 0.0 ? light.a : 0.0;
-	centre.surface = sssUncovered( texelFetch( tSurface, pixel, 0 ).rg, centre.coverage );
-	#if SSS_COVERAGE == 1
-		if ( centre.coverage > 0.0 ) centre.colour /= centre.coverage;
+	#if SSS_LIGHT_DEPTH == 1
+		centre.coverage = sssCarriesSurface( light.a ) ? sssCoverageAt( pixel ) : 0.0;
+	#else
+		centre.coverage = light.a > 0.0 ? light.a : 0.0;
+		#if SSS_COVERAGE == 1
+			if ( centre.coverage > 0.0 ) centre.colour /= centre.coverage;
+		#endif
 	#endif
+	centre.surface = sssUncovered( texelFetch( tSurface, pixel, 0 ).rg, centre.coverage );
 	return centre;
 }
 

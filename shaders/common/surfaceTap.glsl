@@ -18,6 +18,21 @@
 // and the depth, whatever the light is stored as (the diffuse texture, or the isotropic blur's
 // groups, shaders/3-blur/kernelGroups.glsl); `farness` is what 'lerp' moves its colour by (0 in
 // the other modes).
+// The depth rule alone, for a texel at `depth` (linear view depth, coverage divided out): its
+// weight ('drop': 1 - farness; 1 otherwise) and the farness 'lerp' moves its colour by.
+float sssDepthRule( const in float depth, const in float expectedDepth, out float farness ) {
+	farness = 0.0;
+	#if FOLLOW_SURFACE != FOLLOW_SURFACE_OFF
+		float far = clamp( abs( depth - expectedDepth ) * depthFalloff, 0.0, 1.0 );
+		#if FOLLOW_SURFACE == FOLLOW_SURFACE_DROP
+			return 1.0 - far;
+		#else
+			farness = far;
+		#endif
+	#endif
+	return 1.0;
+}
+
 float sssTexelRule( const in ivec2 texel, const in float coverage, const in float expectedDepth, out float farness ) {
 	farness = 0.0;
 	float weight = 1.0;
@@ -35,12 +50,7 @@ float sssTexelRule( const in ivec2 texel, const in float coverage, const in floa
 		#if PROFILE_COUNT == 1
 			vec2 surfaceTexel = texelFetch( tSurface, texel, 0 ).rg;
 		#endif
-		float far = clamp( abs( sssUncovered( surfaceTexel.rg, coverage ).r - expectedDepth ) * depthFalloff, 0.0, 1.0 );
-		#if FOLLOW_SURFACE == FOLLOW_SURFACE_DROP
-			weight *= 1.0 - far;
-		#else
-			farness = far;
-		#endif
+		weight *= sssDepthRule( sssUncovered( surfaceTexel.rg, coverage ).r, expectedDepth, farness );
 	#endif
 	return weight;
 }
@@ -48,15 +58,33 @@ float sssTexelRule( const in ivec2 texel, const in float coverage, const in floa
 float sssTapWeight( const in ivec2 texel, const in float expectedDepth, const in vec3 centre, out vec3 colour ) {
 	vec4 light = texelFetch( tDiffuse, texel, 0 );
 	colour = light.rgb;
-	if ( ! ( light.a > 0.0 ) || ! sssFinite( colour ) ) {
+	#if SSS_LIGHT_DEPTH == 1
+		// The light carries the depth (surfaceSample.glsl): one fetch, and with MSAA the coverage's.
+		bool onMask = sssCarriesSurface( light.a );
+	#else
+		bool onMask = light.a > 0.0;
+	#endif
+	if ( ! onMask || ! sssFinite( colour ) ) {
 		colour = vec3( 0.0 );
 		return 0.0;
 	}
-	#if SSS_COVERAGE == 1
-		colour /= light.a;
-	#endif
 	float farness;
-	float weight = sssTexelRule( texel, light.a, expectedDepth, farness );
+	#if SSS_LIGHT_DEPTH == 1
+		float coverage = sssCoverageAt( texel );
+		#if PROFILE_COUNT == 1
+			float weight = sssDepthRule( light.a, expectedDepth, farness );
+			#if SSS_COVERAGE == 1
+				weight *= coverage;
+			#endif
+		#else
+			float weight = sssTexelRule( texel, coverage, expectedDepth, farness );
+		#endif
+	#else
+		#if SSS_COVERAGE == 1
+			colour /= light.a;
+		#endif
+		float weight = sssTexelRule( texel, light.a, expectedDepth, farness );
+	#endif
 	#if FOLLOW_SURFACE == FOLLOW_SURFACE_LERP
 		colour = mix( colour, centre, farness );
 	#endif

@@ -7,7 +7,7 @@
 // The profiles are the orchestrator's (one per slot, src/profiles/profileSlots.js): setProfiles.
 // Over 300 lines because it is the stage's one owner: its settings' setters, the kernels of every
 // method and profile, the plan, the scissor and the two targets (the passes are their own files).
-import { NearestFilter, RGBAIntegerFormat, UnsignedIntType, WebGLRenderTarget } from 'three';
+import { FloatType, NearestFilter, RGBAIntegerFormat, UnsignedIntType, WebGLRenderTarget } from 'three';
 import { computeKernel, kernelRadiusMm } from '../profiles/kernel.js';
 import { getProfile } from '../profiles/presets.js';
 import { AUTO_SAMPLES, METHOD_TABLE, PIPELINE_SCHEMA, checkOption } from '../options.js';
@@ -71,7 +71,8 @@ export class BlurStage {
     this._settings = { profile: profileLookup.profile, method: checkOption(PIPELINE_SCHEMA, 'method', method), samples, strength, falloff };
     this._kernels = new WeakMap(); // profile → computed kernels by their arguments: 'auto' switches between a few
     this._surface = surface;
-    this._blurTarget = new WebGLRenderTarget(1, 1, { type, depthBuffer: false });
+    this._type = type;
+    this._blurTarget = new WebGLRenderTarget(1, 1, { type: FloatType, depthBuffer: false }); // it carries the depth (lightCarriesDepth)
     this._blurTarget.texture.name = 'subsurface.horizontal';
     this._kernelGroups = checkKernelGroups(kernelGroups);
     this._checkGroupsMethod(method, this._kernelGroups);
@@ -95,6 +96,8 @@ export class BlurStage {
      */
     this.confineToSubsurface = true;
     this._skipsEmptyTexels = true;
+    this._lightCarriesDepth = false;
+    this.lightCarriesDepth = true;
     this._scissorKey = null; // the box the targets were last scissored to ('full' or x,y,w,h)
     /** The kernel the separable passes hold (computeKernel's layout). */
     this.kernel = firstKernel;
@@ -129,6 +132,31 @@ export class BlurStage {
   set skipsEmptyTexels(enabled) {
     this._skipsEmptyTexels = checkBoolean('BlurStage.skipsEmptyTexels', enabled);
     for (const pass of [this.horizontalPass, this.verticalPass]) setDefines(pass.material, { SSS_SKIP_EMPTY_TEXELS: enabled ? 1 : 0 });
+  }
+
+  /**
+   * Documented-internal switch (issue 19; the bench undoes it for one measure): true (default)
+   * hands the depth from the horizontal pass to the vertical one in the light's alpha (a 32-bit
+   * float target), so each vertical tap fetches one texel instead of two (light, surface);
+   * false: the horizontal target in the pipeline's `type`, premultiplied by the coverage, as before.
+   * The sums are the same; with a half-float `type` the light between the passes then keeps 32
+   * bits instead of 16.
+   * @type {boolean}
+   */
+  get lightCarriesDepth() { return this._lightCarriesDepth; }
+
+  set lightCarriesDepth(enabled) {
+    checkBoolean('BlurStage.lightCarriesDepth', enabled);
+    if (enabled === this._lightCarriesDepth) return;
+    this._lightCarriesDepth = enabled;
+    this.horizontalPass.setCarriedDepth(enabled);
+    this.verticalPass.setCarriedDepth(enabled, enabled ? this._surface.diffuseTexture : null);
+    const type = enabled ? FloatType : this._type;
+    if (this._blurTarget.texture.type !== type) {
+      this._blurTarget.texture.type = type;
+      this._blurTarget.dispose(); // three reallocates it on its next use
+      this._scissorKey = null; // and it is cleared again
+    }
   }
 
   /**

@@ -6,12 +6,13 @@ import { AFTER, BEFORE, NOT_BUILT, ISOTROPIC, TEXEL_BYTES, frameTraffic, targetM
 import { issueRatios, msaaRatio } from '../../../bench/costReport.js';
 
 describe('cost model', () => {
-  it('targets at 1920×1080: 2 × RGBA16F + RG32F + depth in the multi-target, 2 × RGBA16F for the blur, 2 × RGBA32UI for its groups', () => {
+  it('targets at 1920×1080: 2 × RGBA16F + RG32F + depth in the multi-target, RGBA32F (the depth carried) + RGBA16F for the blur, 2 × RGBA32UI for its groups', () => {
     const pixels = 1920 * 1080;
-    expect(targetMemory(1920, 1080).bytes).toBe(pixels * (8 + 8 + 8 + 4 + 8 + 8 + 32));
-    expect(targetMemory(1920, 1080, { groups: false }).bytes).toBe(pixels * (8 + 8 + 8 + 4 + 8 + 8));
+    expect(targetMemory(1920, 1080).bytes).toBe(pixels * (8 + 8 + 8 + 4 + 16 + 8 + 32));
+    expect(targetMemory(1920, 1080, { groups: false }).bytes).toBe(pixels * (8 + 8 + 8 + 4 + 16 + 8));
+    expect(targetMemory(1920, 1080, { groups: false, lightCarriesDepth: false }).bytes).toBe(pixels * (8 + 8 + 8 + 4 + 8 + 8));
     // MSAA 4: a 4-sample renderbuffer per multi-target attachment besides its resolved texture.
-    expect(targetMemory(1920, 1080, { samples: 4 }).bytes).toBe(pixels * ((8 + 8 + 8 + 4) * 5 + 16 + 32));
+    expect(targetMemory(1920, 1080, { samples: 4 }).bytes).toBe(pixels * ((8 + 8 + 8 + 4) * 5 + 24 + 32));
     expect(TEXEL_BYTES.rg32f).toBe(8);
   });
 
@@ -36,8 +37,10 @@ describe('cost model', () => {
     expect(t.blurV.fetched).toBeCloseTo(16 + s * (16 + 9 * 2 * 16), 12);
     const after = frameTraffic(AFTER, { subsurface: s, box: 0.5, taps: 9 });
     expect(t.scene.written - after.scene.written).toBeCloseTo(4 * s, 12); // no prepass depth write
-    expect(after.blurH.written).toBeCloseTo(0.5 * 8, 12); // the box only
+    expect(after.blurH.written).toBeCloseTo(0.5 * 16, 12); // the box only, RGBA32F (the depth carried)
     expect(after.blurH.fetched).toBeCloseTo(0.5 * 16 + s * (16 + 9 * 2 * 16), 12);
+    // The vertical taps fetch the carried light alone (16 B), the centre its light and surface.
+    expect(after.blurV.fetched).toBeCloseTo(0.5 * 24 + s * (16 + 9 * 2 * 16), 12);
     expect(after.total.written + after.total.read).toBeLessThan(t.total.written + t.total.read);
   });
 
@@ -51,6 +54,19 @@ describe('cost model', () => {
     // Vertical: centre 32 + 8, slope 2 × 8, 9 taps × 2 texels × (32 + 8).
     expect(grouped.blurV.fetched).toBeCloseTo(0.5 * 40 + s * (16 + 9 * 2 * 40), 12);
     expect(grouped.blurV.written).toBe(one.blurV.written);
+  });
+
+  it('the depth carried in the light: the same bytes a vertical tap reads, in one fetch instead of two; 8 B more written and read per box pixel', () => {
+    const s = 0.25;
+    const scene = { subsurface: s, box: 0.5, taps: 9 };
+    const carried = frameTraffic(AFTER, scene);
+    const apart = frameTraffic({ ...AFTER, lightCarriesDepth: false }, scene);
+    expect(carried.blurH.written - apart.blurH.written).toBeCloseTo(0.5 * 8, 12);
+    expect(carried.blurV.read - apart.blurV.read).toBeCloseTo(0.5 * 8, 12);
+    expect(carried.blurV.fetched - apart.blurV.fetched).toBeCloseTo(0.5 * 8, 12); // per tap 16 B either way
+    expect(carried.blurH.fetched).toBeCloseTo(apart.blurH.fetched, 12);
+    // Fetches, counted: 1 per vertical tap texel instead of 2 (light and surface).
+    expect(apart.blurV.fetched - 0.5 * 16).toBeCloseTo(s * (16 + 18 * 16), 12);
   });
 
   it('taps on a texel centre fetch one texel with skipsEmptyTexels (after), two without (before); memory traffic unchanged', () => {
@@ -70,8 +86,8 @@ describe('cost model', () => {
     expect(frameTraffic(NOT_BUILT.surfaceFromDepth, scene).blurH.read).toBeCloseTo(0.5 * (8 + 4), 12); // depth: 4 B
     const folded = frameTraffic(NOT_BUILT.composeInBlur, scene);
     expect(folded.compose).toEqual({ written: 0, read: 0, fetched: 0 });
-    // The vertical pass over the whole frame: centre 16 + colour 8 + depth 4 read, colour + depth out.
-    expect(folded.blurV).toEqual({ written: 12, read: 28, fetched: 28 });
+    // The vertical pass over the whole frame: centre 24 (the carried light 16, surface 8) + colour 8 + depth 4 read, colour + depth out.
+    expect(folded.blurV).toEqual({ written: 12, read: 36, fetched: 36 });
   });
 });
 
