@@ -19,7 +19,8 @@ export const TEXEL_BYTES = Object.freeze({ rgba16f: 8, rgba32f: 16, rg32f: 8, de
 /** The pipeline's targets (the composer's own buffers are the application's, as with a RenderPass). */
 export const TARGETS = Object.freeze([
   { name: 'colour (multi-target 0)', format: 'rgba16f', multisampled: true },
-  { name: 'diffuse (multi-target 1)', format: 'rgba16f', multisampled: true },
+  // RGBA32F while it carries the depth (SubsurfaceScenePass.diffuseCarriesDepth: without MSAA only).
+  { name: 'diffuse (multi-target 1)', format: 'rgba16f', carriedFormat: 'rgba32f', multisampled: true, carriedWithMsaa: false },
   { name: 'surface (multi-target 2)', format: 'rg32f', multisampled: true },
   { name: 'depth (multi-target)', format: 'depth24', multisampled: true },
   // RGBA32F while it carries the depth (BlurStage.lightCarriesDepth, the default), else the pipeline's type.
@@ -33,9 +34,9 @@ export const TARGETS = Object.freeze([
  * a multisampled renderbuffer per multi-target attachment besides the resolved texture.
  * @returns {{ targets: Array<{ name: string, bytes: number }>, bytes: number }}
  */
-export function targetMemory(width, height, { samples = 0, groups = true, lightCarriesDepth = true } = {}) {
+export function targetMemory(width, height, { samples = 0, groups = true, carriesDepth = true } = {}) {
   const pixels = width * height;
-  const formatOf = (t) => (lightCarriesDepth && t.carriedFormat ? t.carriedFormat : t.format);
+  const formatOf = (t) => (carriesDepth && t.carriedFormat && !(samples > 0 && t.carriedWithMsaa === false) ? t.carriedFormat : t.format);
   const targets = TARGETS.filter((t) => groups || !t.groups)
     .map((t) => ({ name: t.name, bytes: pixels * TEXEL_BYTES[formatOf(t)] * (t.attachments ?? 1) * (1 + (t.multisampled && samples > 0 ? samples : 0)) }));
   return { targets, bytes: targets.reduce((sum, t) => sum + t.bytes, 0) };
@@ -51,13 +52,16 @@ export function targetMemory(width, height, { samples = 0, groups = true, lightC
  * lightCarriesDepth: the horizontal pass writes its light with the depth in the alpha (RGBA32F,
  * 16 B, instead of RGBA16F), so a vertical tap fetches one texel of 16 B instead of light and
  * surface (8 + 8; the same bytes read, half the fetches; one kernel only);
+ * diffuseCarriesDepth: the diffuse attachment does so too (RGBA32F; without MSAA), so a
+ * horizontal tap fetches one texel; the split writes and clears 8 B more per pixel, and the
+ * compose reads 16 B of it for the mask;
  * kernelGroups: the isotropic blur's groups (issue 20; 1: one kernel): with more, the horizontal
  * pass writes two RGBA32UI texels (32 B) instead of one RGBA16F (8 B), the vertical pass reads
  * them (and fetches both per tap, an upper bound: past groups 1 and 2's reach it fetches one), and
  * both passes fetch the group fractions per footprint (a small table: free in memory traffic).
  */
-export const BEFORE = Object.freeze({ depthPrepass: true, confineToSubsurface: false, fetchesEverywhere: false, skipsEmptyTexels: false, lightCarriesDepth: false, kernelGroups: 1 });
-export const AFTER = Object.freeze({ depthPrepass: false, confineToSubsurface: true, fetchesEverywhere: false, skipsEmptyTexels: true, lightCarriesDepth: true, kernelGroups: 1 });
+export const BEFORE = Object.freeze({ depthPrepass: true, confineToSubsurface: false, fetchesEverywhere: false, skipsEmptyTexels: false, lightCarriesDepth: false, diffuseCarriesDepth: false, kernelGroups: 1 });
+export const AFTER = Object.freeze({ depthPrepass: false, confineToSubsurface: true, fetchesEverywhere: false, skipsEmptyTexels: true, lightCarriesDepth: true, diffuseCarriesDepth: true, kernelGroups: 1 });
 /** This version with the isotropic blur (`kernelGroups: 'auto'`, four groups near): what the groups add, modelled. */
 export const ISOTROPIC = Object.freeze({ ...AFTER, kernelGroups: 4 });
 
@@ -112,8 +116,9 @@ export function frameTraffic(switches, { subsurface, box, ordinary = 0, taps, ce
   // write, colour); the prepass's depth; the split's fragments (depth, three attachments).
   const prepass = switches.depthPrepass ? s : 0;
   const surfaceAttachment = switches.surfaceFromDepth ? 0 : RG32F;
-  const attachments = 2 * RGBA16F + surfaceAttachment + DEPTH; // colour, diffuse, surface, depth
-  const scene = stage(attachments + ordinary * (DEPTH + RGBA16F) + prepass * DEPTH + s * (DEPTH + 2 * RGBA16F + surfaceAttachment),
+  const diffuse = switches.diffuseCarriesDepth ? TEXEL_BYTES.rgba32f : RGBA16F;
+  const attachments = RGBA16F + diffuse + surfaceAttachment + DEPTH; // colour, diffuse, surface, depth
+  const scene = stage(attachments + ordinary * (DEPTH + RGBA16F) + prepass * DEPTH + s * (DEPTH + RGBA16F + diffuse + surfaceAttachment),
     ordinary * DEPTH + prepass * DEPTH + s * DEPTH);
   const area = switches.confineToSubsurface ? box : 1;
   const surface = switches.surfaceFromDepth ? DEPTH : RG32F;
@@ -121,18 +126,18 @@ export function frameTraffic(switches, { subsurface, box, ordinary = 0, taps, ce
   const grouped = (switches.kernelGroups ?? 1) > 1;
   const carried = !grouped && switches.lightCarriesDepth === true;
   const between = grouped ? 2 * TEXEL_BYTES.rgba32ui : carried ? TEXEL_BYTES.rgba32f : RGBA16F; // the light between the passes
-  const blurH = blurPass(area, s, taps, surface, skipped, { output: between });
+  const blurH = blurPass(area, s, taps, surface, skipped, { input: diffuse, output: between, carried: switches.diffuseCarriesDepth === true });
   // Compose: depth, colour and diffuse (its mask) at every pixel, the scattered light on the mask
   // (or everywhere, with the surface, as before issue 10); out: the composer's colour and depth.
   const everywhere = switches.fetchesEverywhere ? 1 : 0;
-  const composeRead = DEPTH + 2 * RGBA16F + (everywhere ? RGBA16F + RG32F : s * RGBA16F);
+  const composeRead = DEPTH + RGBA16F + diffuse + (everywhere ? RGBA16F + RG32F : s * RGBA16F);
   let blurV = blurPass(area, s, taps, surface, skipped, { input: between, carried });
   let compose = stage(RGBA16F + DEPTH, composeRead);
   if (switches.composeInBlur) {
     // The vertical pass over the whole frame: its taps as before, plus colour and depth read and
     // the output (colour, depth) written at every pixel instead of the scattered light.
     const v = blurPass(1, s, taps, surface, skipped, { input: between, carried });
-    blurV = stage(RGBA16F + DEPTH, v.read + RGBA16F + DEPTH, v.fetched + RGBA16F + DEPTH);
+    blurV = stage(RGBA16F + DEPTH, v.read + RGBA16F + DEPTH, v.fetched + RGBA16F + DEPTH); // (the mask from the light it reads)
     compose = stage(0, 0);
   }
   const stages = { scene, blurH, blurV, compose };

@@ -46,11 +46,13 @@ export const RECOMPILING_FEATURES = Object.freeze(['isotropic']);
  * bothTexelsFetched has the blur fetch both texels around every tap, as before it skipped the one
  * a tap on a texel centre weighs 0; depthFromSurface has the vertical blur read each tap's depth
  * from the surface attachment (two fetches per texel, the light between the passes in the
- * pipeline's type), as before the horizontal pass handed it on in the light's alpha;
+ * pipeline's type), as before the horizontal pass handed it on in the light's alpha; maskInDiffuse
+ * has the diffuse attachment hold the mask in its alpha (in the pipeline's type), as before it
+ * carried the depth there, so the horizontal taps (and the dense reference's) read the surface too;
  * msaaDepthResolvedTwice (with MSAA 4, against msaa4) lets three resolve the scene split's depth
  * after its first call too, as before.
  */
-export const UNDONE_OPTIMIZATIONS = Object.freeze(['lightDepthEveryFrame', 'composeAsBefore', 'depthPrepass', 'fullFrameBlur', 'bothTexelsFetched', 'depthFromSurface', 'msaaDepthResolvedTwice']);
+export const UNDONE_OPTIMIZATIONS = Object.freeze(['lightDepthEveryFrame', 'composeAsBefore', 'depthPrepass', 'fullFrameBlur', 'bothTexelsFetched', 'depthFromSurface', 'maskInDiffuse', 'msaaDepthResolvedTwice']);
 
 /** Everything the features block switches, one at a time. */
 export const FEATURES = Object.freeze([...ADDITIONS, ...UNDONE_OPTIMIZATIONS]);

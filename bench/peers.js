@@ -87,6 +87,7 @@ const UNDO_SWITCHES = Object.freeze({
   fullFrameBlur: (sss) => [sss.blur, 'confineToSubsurface', false],
   bothTexelsFetched: (sss) => [sss.blur, 'skipsEmptyTexels', false],
   depthFromSurface: (sss) => [sss.blur, 'lightCarriesDepth', false],
+  maskInDiffuse: (sss) => [sss.scenePass, 'diffuseCarriesDepth', false],
   msaaDepthResolvedTwice: (sss) => [sss.scenePass, 'resolvesDepthOnce', false],
 });
 

@@ -259,6 +259,7 @@ function optimizationsSection(json) {
     ['fullFrameBlur', ['blurH', 'blurV'], 'both blur passes scissored to the subsurface pixels\' screen box (`blur.confineToSubsurface`)'],
     ['bothTexelsFetched', ['blurH', 'blurV'], 'the blur fetches only the texels a tap weighs: one, not two, for a tap on a texel centre (`blur.skipsEmptyTexels`)'],
     ['depthFromSurface', ['blurV'], 'the horizontal blur hands the depth on in its light\'s alpha (a float target), so a vertical tap fetches one texel, not two (light and surface; `blur.lightCarriesDepth`)'],
+    ['maskInDiffuse', ['scene', 'blurH', 'compose'], 'the diffuse attachment carries the depth in its alpha (float, without MSAA), so a horizontal tap fetches one texel, not two (`scenePass.diffuseCarriesDepth`)'],
     ['msaaDepthResolvedTwice', ['scene'], 'with MSAA 4, the scene split\'s depth resolved once, after its second call (three resolved it after each call, once per attachment; `scenePass.resolvesDepthOnce`)'],
   ].filter(([feature]) => rounds.every((r) => r[feature] && r[baseOf(feature)]));
   const cpuSaved = (feature) => (rounds.every((r) => Number.isFinite(r[feature].cpuMs) && Number.isFinite(r[baseOf(feature)].cpuMs))
@@ -277,7 +278,7 @@ function optimizationsSection(json) {
     lines.push(`| ${what} | ${stages.join(' + ')} ${without.toFixed(1)} / ${withIt.toFixed(1)} ms | ${range(saving)} | ${range(saved(feature, stageSum), 0)} | ${cpu ? range(cpu, 0) : '—'} | ${verdict(saving, cpu)} |`);
   }
   lines.push('', 'Also in the first one\'s commit: the materials read the light depth map and the profile only where the wrap weight is above 0 (nowhere on the front-lit head); the bench cannot undo it, so it is not measured apart.', '',
-    'Not tried yet: the thickness from the shadow map instead of a second render from the light (on the head the pass is skipped anyway), the compose fused into the last blur, fewer and smaller attachments (the surface from the depth texture and a half-float width), the colour attachments resolved once with MSAA (three resolves every attachment after each of the split\'s two calls; only the depth could be held back through its API), and fewer fetches per tap in the horizontal pass (the depth in the diffuse attachment's alpha: a float attachment) and bilinear taps away from edges.');
+    'Not tried yet: the thickness from the shadow map instead of a second render from the light (on the head the pass is skipped anyway), the compose fused into the last blur, fewer and smaller attachments (the surface from the depth texture and a half-float width), the colour attachments resolved once with MSAA (three resolves every attachment after each of the split\'s two calls; only the depth could be held back through its API), and bilinear taps away from edges.');
   return lines.join('\n');
 }
 

@@ -128,6 +128,7 @@ export class SubsurfaceScattering extends Pass {
     // Stages 2, 3 and 4.
     /** @internal */
     this.scenePass = new SubsurfaceScenePass(o.scene, o.camera, { type: o.type, owner: this });
+    this.scenePass.diffuseCarriesDepth = true; // without MSAA: the blur's taps read light and depth in one fetch
     /** @internal */
     this.blur = new BlurStage({
       type: o.type, profileLookup: this.profileLookup, method: o.method, samples: o.samples, strength: o.strength, falloff: o.falloff, kernelGroups: o.kernelGroups,
@@ -398,6 +399,7 @@ export class SubsurfaceScattering extends Pass {
     Object.assign(this.scenePass, { scene, camera, clearColor: this.clearColor, clearAlpha: this.clearAlpha });
     const msaaSamples = this._multisampling === 'auto' ? (readBuffer?.samples ?? 0) : this._multisampling;
     if (this.scenePass.setSamples(msaaSamples)) this.blur.setMultisampled(msaaSamples > 0);
+    this.blur.diffuseCarriesDepth = this.scenePass.diffuseHoldsDepth; // its layout, as MSAA and the switch leave it
     this._stage('scene', () => this.scenePass.render(renderer));
     // 3. Plan: the blur plans itself (src/3-blur/blurPlan.js) from the on-screen size of a profile
     //    millimetre: its taps for 'auto', no blur under half a pixel.

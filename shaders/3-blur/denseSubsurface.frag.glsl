@@ -31,6 +31,7 @@ uniform bool perspective;      // false for an orthographic camera
 uniform int maxRadiusPx;       // bound on the loops (the bench checks the radius stays below it)
 
 #include "common/finite.glsl"
+#include "common/carriedDepth.glsl"
 #include "common/screenScale.glsl"
 #include "common/surfaceSample.glsl"
 #include "common/surfaceSlope.glsl"

@@ -6,10 +6,10 @@
 // SSS_ENERGY_LEFT (the numbers of src/3-blur/samplingModel.js), PROFILE_COUNT (the profiles in the
 // frame; above 1 each pixel blurs with its own, shaders/common/surfaceSample.glsl), SSS_GROUPS (1:
 // one kernel; 2..4: the isotropic blur's groups, 'footprint' only, shaders/3-blur/kernelGroups.glsl:
-// the horizontal pass then writes the groups, the vertical one sums them), SSS_CARRIES_DEPTH (1, one
-// kernel: the horizontal pass writes the depth into its output's alpha and the vertical pass reads
-// it there, one fetch per tap instead of two: SSS_LIGHT_DEPTH, shaders/common/surfaceSample.glsl)
-// and KERNEL_MODE:
+// the horizontal pass then writes the groups, the vertical one sums them), SSS_LIGHT_DEPTH (1: the
+// light read carries the depth in its alpha, one fetch per tap instead of two:
+// shaders/common/surfaceSample.glsl), SSS_WRITES_DEPTH (1, one kernel: the horizontal pass writes
+// its light that way for the vertical one) and KERNEL_MODE:
 //   KERNEL_MODE_TAPS: fixed weights and offsets (computeKernel's reference or marginal kernel);
 //   KERNEL_MODE_FOOTPRINT: per pixel, footprints of whole pixels from the FootprintTable, weighted
 //     by the profile marginal's exact energy from the ProfileLookup.
@@ -28,11 +28,8 @@ uniform vec2 resolution;        // pixels (width, height)
 uniform float depthFalloff;     // 1 / depth threshold (world units): dz beyond it is another surface
 uniform bool perspective;       // false for an orthographic camera: the step does not shrink with depth
 
-#if SSS_CARRIES_DEPTH == 1 && AXIS == 1
-	#define SSS_LIGHT_DEPTH 1 // the light read carries its depth
-#endif
-
 #include "common/finite.glsl"
+#include "common/carriedDepth.glsl"
 #include "common/screenScale.glsl"
 #include "common/surfaceSample.glsl"
 #include "common/surfaceSlope.glsl"
@@ -243,9 +240,9 @@ float sssAxisStep( const in ivec2 pixel, const in vec2 surface, out float slope 
 
 #if SSS_GROUPS == 1
 // A subsurface pixel's result: premultiplied by its coverage (sssCovered) or, from the horizontal
-// pass with SSS_CARRIES_DEPTH, as it is with the centre's depth in the alpha (surfaceSample.glsl).
+// pass with SSS_WRITES_DEPTH, as it is with the centre's depth in the alpha (surfaceSample.glsl).
 vec4 sssBlurOutput( const in vec3 colour, const in float coverage, const in float depth ) {
-	#if SSS_CARRIES_DEPTH == 1 && AXIS == 0
+	#if SSS_WRITES_DEPTH == 1
 		return vec4( colour, sssCarriedDepth( depth ) );
 	#else
 		return sssCovered( colour, coverage );

@@ -9,7 +9,7 @@
 
 uniform sampler2D tColor;      // the multi-target's colour: specular + emissive of subsurface pixels, full colour elsewhere
 uniform sampler2D tScattered;  // the blurred diffuse light
-uniform sampler2D tDiffuse;    // the diffuse light before the blur; alpha 1 on subsurface pixels (the mask)
+uniform sampler2D tDiffuse;    // the diffuse light before the blur; alpha: the mask (1, the coverage, or a carried depth)
 uniform sampler2D tSurface;    // r: linear view depth (world units)
 uniform sampler2D tDepth;      // the multi-target's depth texture
 uniform float farDepth;        // the depth buffer's cleared value: 1 (0 with a reversed depth buffer)
@@ -20,6 +20,7 @@ uniform float debugThicknessRangeMm; // millimetres mapped to white in the thick
 varying vec2 vUv;
 
 #include "common/finite.glsl"
+#include "common/carriedDepth.glsl"
 
 void main() {
 	ivec2 pixel = ivec2( gl_FragCoord.xy );
@@ -30,7 +31,7 @@ void main() {
 	gl_FragDepth = depth;
 	vec4 light = texelFetch( tColor, pixel, 0 );
 	vec4 unscattered = texelFetch( tDiffuse, pixel, 0 );
-	bool subsurface = unscattered.a > 0.0;
+	bool subsurface = sssCarriesSurface( unscattered.a );
 	#if FETCH_EVERYWHERE == 1
 		// As before issue 10 (SubsurfaceComposePass.fetchesEverywhere, for the bench): every pixel
 		// reads the scattered light, and the surface (which the compiler may drop, as it could then).

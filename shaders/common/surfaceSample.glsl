@@ -7,30 +7,15 @@
 // subsurface surfaces share a pixel, their coverage-weighted mean. Needs `tSurface`, `tDiffuse`
 // and shaders/common/finite.glsl, and PROFILE_COUNT (1: one profile, the b channel unread).
 //
-// SSS_LIGHT_DEPTH 1 (the vertical blur's input, which the horizontal pass wrote with
-// SSS_CARRIES_DEPTH: shaders/3-blur/subsurfaceBlur.frag.glsl): the light carries the surface's depth, so a tap fetches one texel, not two.
-// Its rgb is the light with the coverage divided out and its alpha the texel's linear view depth
-// (coverage divided out too) on the mask; off it the alpha is +0.0. A depth of exactly 0 (an
-// orthographic camera sees behind its plane) is written as -0.0: the mask is "the alpha's bits are
-// not +0.0's", whatever the depth's sign. With SSS_COVERAGE the coverage comes from `tCoverage`'s
-// alpha (the multi-target's diffuse): one number cannot hold both.
+// SSS_LIGHT_DEPTH 1: the light read (`tDiffuse`) carries the depth in its alpha
+// (shaders/common/carriedDepth.glsl): the multi-target's diffuse without MSAA, or the horizontal
+// blur's output (SSS_WRITES_DEPTH). A tap then fetches one texel, not two (light, surface). Its rgb
+// has the coverage divided out; with SSS_COVERAGE the coverage comes from `tCoverage`'s alpha (the
+// multi-target's diffuse): one number cannot hold both. Needs shaders/common/carriedDepth.glsl.
 
-#ifndef SSS_LIGHT_DEPTH
-	#define SSS_LIGHT_DEPTH 0
-#endif
 #if SSS_LIGHT_DEPTH == 1 && SSS_COVERAGE == 1
 	uniform sampler2D tCoverage; // the multi-target's diffuse: its alpha is the coverage
 #endif
-
-// Whether a depth-carrying texel's alpha marks the mask.
-bool sssCarriesSurface( const in float alpha ) {
-	return floatBitsToUint( alpha ) != 0u;
-}
-
-// The alpha that carries `depth` (on the mask): -0.0 for a depth of 0, so it is not read as off it.
-float sssCarriedDepth( const in float depth ) {
-	return floatBitsToUint( depth ) == 0u ? uintBitsToFloat( 0x80000000u ) : depth;
-}
 
 // The coverage of a texel on the mask (SSS_COVERAGE only: without MSAA it is 1): the light's alpha,
 // or tCoverage's where the light carries the depth.

@@ -20,9 +20,9 @@ import { Color, FloatType, HalfFloatType } from 'three';
 import { Pass } from 'three/addons/postprocessing/Pass.js';
 import { getSubsurface } from './subsurfaceMaterial.js';
 import { subsurfaceScreenBox } from './subsurfaceScreenBox.js';
-import { ATTACHMENTS, DRAW_BUFFERS, DRAW_PHASES, createSubsurfaceTarget, drawingInto, setSurfaceChannels } from './subsurfaceTarget.js';
+import { ATTACHMENTS, DRAW_BUFFERS, DRAW_PHASES, createSubsurfaceTarget, diffuseCarriesDepth, drawingInto, setDiffuseCarriesDepth, setSurfaceChannels } from './subsurfaceTarget.js';
 import { assertFloatRenderTargets, describe } from '../support/rendererSupport.js';
-import { checkOptions } from '../support/parameterChecks.js';
+import { checkBoolean, checkOptions } from '../support/parameterChecks.js';
 import { PASS_BOOLEANS, booleanFields } from '../support/booleanFields.js';
 import { preservingRendererState } from '../support/rendererState.js';
 import { checkThreeRevision } from '../support/threeVersion.js';
@@ -96,6 +96,8 @@ export class SubsurfaceScenePass extends Pass {
     this.resolvesDepthOnce = true;
     /** The multi-target (see subsurfaceTarget.js for what each attachment holds). */
     this.renderTarget = createSubsurfaceTarget(type);
+    this._type = type;
+    this._diffuseCarriesDepth = false;
 
     this._visibility = new Map();
     this._writes = new Map();
@@ -104,7 +106,7 @@ export class SubsurfaceScenePass extends Pass {
 
   /** The colour attachment: specular + emissive of subsurface pixels, full colour elsewhere. */
   get colorTexture() { return this.renderTarget.textures[ATTACHMENTS.COLOR]; }
-  /** The diffuse attachment: the light to scatter; alpha, the mask. */
+  /** The diffuse attachment: the light to scatter; alpha, the mask (or the depth: diffuseHoldsDepth). */
   get diffuseTexture() { return this.renderTarget.textures[ATTACHMENTS.DIFFUSE]; }
   /** The surface attachment: linear view depth and world units per profile mm. */
   get surfaceTexture() { return this.renderTarget.textures[ATTACHMENTS.SURFACE]; }
@@ -119,6 +121,28 @@ export class SubsurfaceScenePass extends Pass {
   }
 
   /**
+   * Documented-internal switch (issue 19; SubsurfaceScattering turns it on, the bench undoes it
+   * for one measure): true has the diffuse attachment carry the depth in its alpha while the
+   * target is not multisampled (subsurfaceTarget.js's setDiffuseCarriesDepth: 32-bit float), so
+   * the blur's taps read light and depth in one fetch; false (the default, for this pass before a
+   * blur of your own): its alpha is 1, the mask. `diffuseHoldsDepth` says which layout it has.
+   * @type {boolean}
+   */
+  get diffuseCarriesDepth() { return this._diffuseCarriesDepth; }
+
+  set diffuseCarriesDepth(enabled) {
+    this._diffuseCarriesDepth = checkBoolean('SubsurfaceScenePass.diffuseCarriesDepth', enabled);
+    this._applyDiffuseLayout();
+  }
+
+  /** Whether the diffuse attachment's alpha is the depth now (diffuseCarriesDepth without MSAA), not the mask. */
+  get diffuseHoldsDepth() { return diffuseCarriesDepth(this.renderTarget); }
+
+  _applyDiffuseLayout() {
+    setDiffuseCarriesDepth(this.renderTarget, this._diffuseCarriesDepth && this.renderTarget.samples === 0, this._type);
+  }
+
+  /**
    * MSAA samples of the multi-target (0: none); three resolves it by averaging, so the blur must
    * then read its inputs as coverage-weighted (SurfacePass.setMultisampled).
    * @param {number} samples
@@ -128,6 +152,7 @@ export class SubsurfaceScenePass extends Pass {
     if (this.renderTarget.samples === samples) return false;
     this.renderTarget.samples = samples;
     this.renderTarget.dispose(); // three rebuilds its buffers, multisampled or not, on the next use
+    this._applyDiffuseLayout(); // MSAA keeps the coverage in the diffuse alpha
     return true;
   }
 

@@ -25,12 +25,13 @@ import splitGlsl from '../../shaders/2-scene-split/material/split.glsl?raw';
 import clearcoatGlsl from '../../shaders/2-scene-split/material/clearcoat.glsl?raw';
 import outputGlsl from '../../shaders/2-scene-split/material/output.glsl?raw';
 import finiteGlsl from '../../shaders/common/finite.glsl?raw';
+import carriedDepthGlsl from '../../shaders/common/carriedDepth.glsl?raw';
 import { assembleGlsl, enumDefines } from '../support/glsl.js';
 import { checkOneOf, checkOptions } from '../support/parameterChecks.js';
 import { describe } from '../support/rendererSupport.js';
 import { checkThreeRevision, supportedThreeNote, threeRelease } from '../support/threeVersion.js';
 import { MATERIAL_DEFAULTS, MATERIAL_SCHEMA, PIPELINE_SCHEMA, checkOption } from '../options.js';
-import { ATTACHMENT_DEFINES, DRAW_PHASES, currentDraw } from './subsurfaceTarget.js';
+import { ATTACHMENT_DEFINES, DRAW_PHASES, currentDraw, diffuseCarriesDepth } from './subsurfaceTarget.js';
 import { MATERIAL_OUTPUTS } from '../4-compose/debugViews.js';
 import { LightDepthTarget } from '../1-light-depth/LightDepthTarget.js';
 import {
@@ -48,7 +49,7 @@ const STANDALONE_OPTIONS = Object.freeze(['widthMm', 'widthScale', 'strength', '
 const STANDALONE = Object.freeze({ name: 'makeSubsurface' });
 
 /** The declarations before main(), with the finiteness check and transmittance. */
-const declarations = assembleGlsl('makeSubsurface', parsGlsl, { 'common/finite.glsl': finiteGlsl, ...TRANSMITTANCE_CHUNKS });
+const declarations = assembleGlsl('makeSubsurface', parsGlsl, { 'common/finite.glsl': finiteGlsl, 'common/carriedDepth.glsl': carriedDepthGlsl, ...TRANSMITTANCE_CHUNKS });
 const defines = Object.freeze({
   ...ATTACHMENT_DEFINES, ...enumDefines('SSS_OUTPUT', MATERIAL_OUTPUTS, 'diffuse'), ...enumDefines('SSS_LIGHT_TYPE', LIGHT_TYPES, 'spot'),
   ...TRANSMITTED_LIGHT_DEFINES,
@@ -81,6 +82,7 @@ function patch(material) {
     sssWidthWorld: { value: 0 },
     sssWidthScale: { value: 1 },
     sssDebugOutput: { value: 0 },
+    sssDiffuseDepth: { value: false },
     sssProfileSlot: { value: 0 },
     sssTransmits: { value: false },
     sssLightType: { value: 0 },
@@ -124,6 +126,7 @@ function patch(material) {
     uniforms.sssSplit.value = draw.phase === DRAW_PHASES.SPLIT;
     uniforms.sssDepthOnly.value = draw.phase === DRAW_PHASES.DEPTH;
     uniforms.sssHidden.value = draw.phase === DRAW_PHASES.HIDDEN;
+    uniforms.sssDiffuseDepth.value = draw.phase === DRAW_PHASES.SPLIT && diffuseCarriesDepth(draw.target);
     const binding = draw.owner === null ? undefined : bindings.get(draw.owner) ?? latest(bindings);
     if (binding) applyBinding(uniforms, binding, scene, camera);
     else uniforms.sssTransmits.value = false;

@@ -5,7 +5,8 @@
 //   attachment  name      format                     on subsurface pixels                       elsewhere
 //   0           color     half float RGBA (or float) specular + emissive                         the material's full colour, the background
 //   1           diffuse   half float RGBA (or float) rgb: diffuse light + transmitted light;    0
-//                                                    a: 1, the mask (whatever the width)
+//                 (float while it carries the depth) a: 1, the mask (whatever the width);
+//                                                       or the linear view depth (below)
 //   2           surface   float RG                   r: linear view depth (world units)          0
 //                 (RGBA with several profiles)       g: world units per profile mm × widthScale
 //                                                    b: the material's profile slot (several profiles
@@ -19,6 +20,13 @@
 // material with widthScale 0 keeps its diffuse light unblurred instead of losing it. The surface
 // grows to RGBA (RGB float is not renderable) only while a frame holds several profiles: one
 // profile keeps the 8 bytes a pixel it had.
+//
+// The diffuse attachment may carry the depth (setDiffuseCarriesDepth; the orchestrator does so
+// without MSAA): it is then 32-bit float and its alpha on subsurface pixels is the surface's
+// linear view depth, as in the surface's r (shaders/common/carriedDepth.glsl: -0.0 for a depth of
+// 0; the mask is "alpha not +0.0"), so the blur's taps read light and depth in one fetch. A reader
+// that tests the mask with sssCarriesSurface reads both layouts. With MSAA the resolve would
+// average depths with the zeros of uncovered samples, so the alpha stays the coverage there.
 import { DepthTexture, FloatType, NearestFilter, RGBAFormat, RGFormat, UnsignedIntType, WebGLRenderTarget } from 'three';
 
 /** Attachment indices of the multi-target (see the table above). */
@@ -85,6 +93,39 @@ export function setSurfaceChannels(target, profileCount) {
   surface.format = format;
   target.dispose();
   return true;
+}
+
+/** Multi-targets whose diffuse attachment carries the depth in its alpha. */
+const carryingDepth = new WeakSet();
+
+/**
+ * Makes the diffuse attachment carry the depth in its alpha (FloatType: the depth needs 32 bits)
+ * or the mask (`type`, as created). three reallocates the buffers on the next use when the type
+ * changes. The subsurface materials read it per draw (diffuseCarriesDepth).
+ * @param {WebGLRenderTarget} target from createSubsurfaceTarget
+ * @param {boolean} enabled
+ * @param {number} type the attachment's type without the depth (HalfFloatType or FloatType)
+ * @returns {boolean} whether the layout changed
+ */
+export function setDiffuseCarriesDepth(target, enabled, type) {
+  if (enabled === carryingDepth.has(target)) return false;
+  if (enabled) carryingDepth.add(target);
+  else carryingDepth.delete(target);
+  const diffuse = target.textures[ATTACHMENTS.DIFFUSE];
+  const nextType = enabled ? FloatType : type;
+  if (diffuse.type !== nextType) {
+    diffuse.type = nextType;
+    target.dispose();
+  }
+  return true;
+}
+
+/**
+ * Whether `target`'s diffuse alpha is the depth (setDiffuseCarriesDepth), not the mask.
+ * @param {WebGLRenderTarget|null|undefined} target
+ */
+export function diffuseCarriesDepth(target) {
+  return target != null && carryingDepth.has(target);
 }
 
 /** What is being drawn, while a pipeline draws: its target, the draw phase and the pipeline. */

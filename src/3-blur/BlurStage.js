@@ -96,6 +96,7 @@ export class BlurStage {
      */
     this.confineToSubsurface = true;
     this._skipsEmptyTexels = true;
+    this._diffuseCarriesDepth = false;
     this._lightCarriesDepth = false;
     this.lightCarriesDepth = true;
     this._scissorKey = null; // the box the targets were last scissored to ('full' or x,y,w,h)
@@ -149,14 +150,36 @@ export class BlurStage {
     checkBoolean('BlurStage.lightCarriesDepth', enabled);
     if (enabled === this._lightCarriesDepth) return;
     this._lightCarriesDepth = enabled;
-    this.horizontalPass.setCarriedDepth(enabled);
-    this.verticalPass.setCarriedDepth(enabled, enabled ? this._surface.diffuseTexture : null);
+    this.horizontalPass.setWritesDepth(enabled);
+    this._applyCoverage();
     const type = enabled ? FloatType : this._type;
     if (this._blurTarget.texture.type !== type) {
       this._blurTarget.texture.type = type;
       this._blurTarget.dispose(); // three reallocates it on its next use
       this._scissorKey = null; // and it is cleared again
     }
+  }
+
+  /**
+   * Whether the multi-target's diffuse alpha is the depth (SubsurfaceScenePass.diffuseHoldsDepth,
+   * which the orchestrator hands on every frame): the horizontal pass and the dense reference then
+   * read light and depth in one fetch per tap.
+   * @type {boolean}
+   */
+  get diffuseCarriesDepth() { return this._diffuseCarriesDepth; }
+
+  set diffuseCarriesDepth(enabled) {
+    checkBoolean('BlurStage.diffuseCarriesDepth', enabled);
+    if (enabled === this._diffuseCarriesDepth) return;
+    this._diffuseCarriesDepth = enabled;
+    this.horizontalPass.setLightCarriesDepth(enabled);
+    this._densePass?.setLightCarriesDepth(enabled);
+  }
+
+  /** The vertical pass reads a carried depth (lightCarriesDepth), with MSAA the coverage from the multi-target's diffuse. */
+  _applyCoverage() {
+    const carried = this._lightCarriesDepth;
+    this.verticalPass.setLightCarriesDepth(carried, carried && this._multisampled ? this._surface.diffuseTexture : null);
   }
 
   /**
@@ -193,6 +216,7 @@ export class BlurStage {
       this._densePass = new DenseSubsurfacePass({ ...this._surface, profile: this._settings.profile, maxRadiusPx: DENSE_MAX_RADIUS_PX });
       this._densePass.setSize(this._size.width, this._size.height);
       this._densePass.setMultisampled(this._multisampled);
+      this._densePass.setLightCarriesDepth(this._diffuseCarriesDepth);
     }
     return this._densePass;
   }
@@ -482,6 +506,7 @@ export class BlurStage {
   setMultisampled(multisampled) {
     for (const pass of this.surfacePasses) pass.setMultisampled(multisampled);
     this._multisampled = multisampled;
+    this._applyCoverage();
   }
 
   /** @param {number} width device pixels @param {number} height device pixels */

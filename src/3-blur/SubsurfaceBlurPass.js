@@ -92,7 +92,7 @@ export class SubsurfaceBlurPass extends SurfacePass {
       name: `SubsurfaceBlurPass(${direction})`,
       fragmentShader: blurGlsl,
       chunks: CHUNKS,
-      defines: { AXIS: DIRECTIONS.indexOf(direction), SAMPLES: 1, SSS_SKIP_EMPTY_TEXELS: 1, SSS_CARRIES_DEPTH: 0, SSS_GROUPS: 1, SSS_MAX_GROUPS: MAX_KERNEL_GROUPS, ...FOOTPRINT_DEFINES, ...enumDefines('KERNEL_MODE', KERNEL_MODES, mode) },
+      defines: { AXIS: DIRECTIONS.indexOf(direction), SAMPLES: 1, SSS_SKIP_EMPTY_TEXELS: 1, SSS_WRITES_DEPTH: 0, SSS_GROUPS: 1, SSS_MAX_GROUPS: MAX_KERNEL_GROUPS, ...FOOTPRINT_DEFINES, ...enumDefines('KERNEL_MODE', KERNEL_MODES, mode) },
       uniforms: {
         kernel: { value: new Float32Array(4) },
         tapCount: { value: 1 },
@@ -108,8 +108,6 @@ export class SubsurfaceBlurPass extends SurfacePass {
         tGroupFractions: { value: null },
         tGroups0: { value: null },
         tGroups1: { value: null },
-        // The vertical pass of a pair that carries the depth in the light (setCarriedDepth), with MSAA.
-        tCoverage: { value: null },
       },
     }, surface);
     // GLSL 3: the horizontal pass of the groups writes two unsigned-integer attachments, so the
@@ -117,8 +115,8 @@ export class SubsurfaceBlurPass extends SurfacePass {
     this.material.glslVersion = GLSL3;
     /** This frame's groups (setGroupFrame): 1 blurs with `material`, more with its variant for that count. */
     this.groups = 1;
-    /** Whether the light handed between the passes carries the depth (setCarriedDepth). */
-    this.carriesDepth = false;
+    /** Whether the pass writes its light with the depth in the alpha (setWritesDepth). */
+    this.writesDepth = false;
     this._groupMaterials = new Map(); // count → the material compiled with SSS_GROUPS count
     this.direction = direction;
     this.mode = mode;
@@ -158,22 +156,17 @@ export class SubsurfaceBlurPass extends SurfacePass {
   }
 
   /**
-   * Whether this pass and its partner hand the depth on in the light (one kernel: the groups'
-   * variants do not): the horizontal pass then writes its light with the coverage divided out and
-   * the centre's linear depth in the alpha (into a float target: the depth needs 32 bits), and the
-   * vertical pass reads the depth there, one texel fetch per tap instead of two
-   * (shaders/common/surfaceSample.glsl's SSS_LIGHT_DEPTH). Off (the default): the light is
-   * premultiplied by its coverage, the mask in its alpha, the depth read from the surface.
+   * Whether the pass writes its light with the depth in the alpha (one kernel; the horizontal pass
+   * for a vertical one with setLightCarriesDepth): the light with the coverage divided out and the
+   * centre's linear depth as shaders/common/carriedDepth.glsl says, into a 32-bit float target.
+   * Off (the default): premultiplied by the coverage, the mask in the alpha. The groups' variants
+   * write their own target either way.
    * @param {boolean} enabled
-   * @param {import('three').Texture|null} [coverage=null] the vertical pass: a texture whose alpha is
-   *   the coverage (the multi-target's diffuse), read with MSAA (the alpha then holds the depth)
    */
-  setCarriedDepth(enabled, coverage = null) {
-    checkBoolean('SubsurfaceBlurPass.setCarriedDepth enabled', enabled);
-    if (coverage !== null && coverage?.isTexture !== true) throw new TypeError(`SubsurfaceBlurPass.setCarriedDepth: coverage must be a THREE.Texture or null, got ${describe(coverage)}`);
-    setDefines(this.material, { SSS_CARRIES_DEPTH: enabled ? 1 : 0 });
-    this.uniforms.tCoverage.value = coverage;
-    this.carriesDepth = enabled;
+  setWritesDepth(enabled) {
+    checkBoolean('SubsurfaceBlurPass.setWritesDepth enabled', enabled);
+    setDefines(this.material, { SSS_WRITES_DEPTH: enabled ? 1 : 0 });
+    this.writesDepth = enabled;
   }
 
   /** The material of this frame's groups: `material`, or its variant for the count (defines synced, uniforms shared). */
@@ -187,7 +180,8 @@ export class SubsurfaceBlurPass extends SurfacePass {
       variant = new ShaderMaterial({ name, vertexShader, fragmentShader, glslVersion, uniforms, defines: { ...this.material.defines } });
       this._groupMaterials.set(this.groups, variant);
     }
-    setDefines(variant, { ...this.material.defines, SSS_GROUPS: this.groups, SSS_CARRIES_DEPTH: 0 }); // groups have their own target
+    // The groups have their own target: the vertical pass reads them, not a carried depth.
+    setDefines(variant, { ...this.material.defines, SSS_GROUPS: this.groups, SSS_WRITES_DEPTH: 0, ...(this.direction === 'vertical' ? { SSS_LIGHT_DEPTH: 0 } : {}) });
     return variant;
   }
 

@@ -6,6 +6,7 @@ import { Vector2 } from 'three';
 import { ShaderPass } from 'three/addons/postprocessing/ShaderPass.js';
 import vertexShader from '../../shaders/common/fullscreen.vert.glsl?raw';
 import finiteGlsl from '../../shaders/common/finite.glsl?raw';
+import carriedDepthGlsl from '../../shaders/common/carriedDepth.glsl?raw';
 import screenScaleGlsl from '../../shaders/common/screenScale.glsl?raw';
 import surfaceSampleGlsl from '../../shaders/common/surfaceSample.glsl?raw';
 import surfaceSlopeGlsl from '../../shaders/common/surfaceSlope.glsl?raw';
@@ -34,9 +35,10 @@ const SAMPLING_DEFINES = Object.freeze({
   SSS_SLOT_SPREAD_TOLERANCE: glslFloat(0.5 * (1 / MAX_MULTISAMPLING) * (1 - 1 / MAX_MULTISAMPLING)),
 });
 
-/** The chunks every surface pass includes: finiteness, screen scale, reading the surface, its slope, the tap rule. */
+/** The chunks every surface pass includes: finiteness, the carried depth, screen scale, reading the surface, its slope, the tap rule. */
 const SURFACE_CHUNKS = Object.freeze({
   'common/finite.glsl': finiteGlsl,
+  'common/carriedDepth.glsl': carriedDepthGlsl,
   'common/screenScale.glsl': screenScaleGlsl,
   'common/surfaceSample.glsl': surfaceSampleGlsl,
   'common/surfaceSlope.glsl': surfaceSlopeGlsl,
@@ -70,10 +72,11 @@ export class SurfacePass extends ShaderPass {
     }
     super({
       name,
-      defines: { ...SAMPLING_DEFINES, ...enumDefines('FOLLOW_SURFACE', FOLLOW_SURFACE_MODES, 'drop'), FORESHORTEN: 1, SSS_COVERAGE: 0, PROFILE_COUNT: 1, ...defines },
+      defines: { ...SAMPLING_DEFINES, ...enumDefines('FOLLOW_SURFACE', FOLLOW_SURFACE_MODES, 'drop'), FORESHORTEN: 1, SSS_COVERAGE: 0, SSS_LIGHT_DEPTH: 0, PROFILE_COUNT: 1, ...defines },
       uniforms: {
         tDiffuse: { value: null },
         tSurface: { value: null },
+        tCoverage: { value: null }, // setLightCarriesDepth, with MSAA
         projectionScale: { value: new Vector2(1, 1) },
         resolution: { value: new Vector2(1, 1) },
         depthFalloff: { value: 1 },
@@ -90,6 +93,25 @@ export class SurfacePass extends ShaderPass {
     this.setFollowSurface(followSurface, depthThresholdWorld);
     this.setForeshortening(foreshortening);
     this.multisampled = false;
+    this.lightCarriesDepth = false;
+  }
+
+  /**
+   * Whether the light this pass reads carries the depth in its alpha
+   * (shaders/common/carriedDepth.glsl: the multi-target's diffuse with
+   * SubsurfaceScenePass.diffuseHoldsDepth, or the horizontal blur's output with its
+   * setWritesDepth): each tap then fetches one texel, not two. Off (the default): the alpha is the
+   * mask (the coverage with MSAA) and the depth is read from the surface.
+   * @param {boolean} enabled
+   * @param {import('three').Texture|null} [coverage=null] with MSAA: a texture whose alpha is the
+   *   coverage (the multi-target's diffuse), since the light's alpha then holds the depth
+   */
+  setLightCarriesDepth(enabled, coverage = null) {
+    if (typeof enabled !== 'boolean') throw new TypeError(`${this.material.name}: setLightCarriesDepth's enabled must be a boolean, got ${describe(enabled)}`);
+    if (coverage !== null && coverage?.isTexture !== true) throw new TypeError(`${this.material.name}: setLightCarriesDepth's coverage must be a THREE.Texture or null, got ${describe(coverage)}`);
+    setDefines(this.material, { SSS_LIGHT_DEPTH: enabled ? 1 : 0 });
+    this.uniforms.tCoverage.value = coverage;
+    this.lightCarriesDepth = enabled;
   }
 
   /** The light to blur: a texture, or null for the composer's read buffer. */

@@ -7,6 +7,7 @@ import { ShaderPass } from 'three/addons/postprocessing/ShaderPass.js';
 import vertexShader from '../../shaders/common/fullscreen.vert.glsl?raw';
 import composeGlsl from '../../shaders/4-compose/compose.frag.glsl?raw';
 import finiteGlsl from '../../shaders/common/finite.glsl?raw';
+import carriedDepthGlsl from '../../shaders/common/carriedDepth.glsl?raw';
 import { assembleGlsl, enumDefines, setDefines } from '../support/glsl.js';
 import { describe } from '../support/rendererSupport.js';
 import { checkBoolean, checkOneOf, checkNumber, checkOptions } from '../support/parameterChecks.js';
@@ -15,7 +16,7 @@ import { DEBUG_VIEWS, DEBUG_VIEW } from './debugViews.js';
 
 export { DEBUG_VIEWS, DEBUG_VIEW };
 
-const fragmentShader = assembleGlsl('SubsurfaceComposePass', composeGlsl, { 'common/finite.glsl': finiteGlsl });
+const fragmentShader = assembleGlsl('SubsurfaceComposePass', composeGlsl, { 'common/finite.glsl': finiteGlsl, 'common/carriedDepth.glsl': carriedDepthGlsl });
 
 /** Adds the scattered diffuse light to the colour attachment (a ShaderPass); split and debug views. */
 export class SubsurfaceComposePass extends ShaderPass {

@@ -1,8 +1,8 @@
 // Issue 19's savings and their switches (the bench undoes each for one measure): the scene split
 // without the depth prepass (each subsurface object rasterised once), the blur scissored to the
 // subsurface pixels' screen box, the compose fetching less, the light depth pass skipped while
-// unread, the blur fetching only the texels its taps weigh, the depth handed between the blur
-// passes in the light, and with MSAA the depth resolved once. Each switch must leave the image as it is: every variant is held against the frame with
+// unread, the blur fetching only the texels its taps weigh, the depth carried in the diffuse
+// attachment and handed between the blur passes in the light, and with MSAA the depth resolved once. Each switch must leave the image as it is: every variant is held against the frame with
 // every saving on, float read-backs, and the ordinary pixels against a plain three.js frame (the
 // shadows cast by and onto subsurface objects kept).
 import { describe, it, expect, beforeAll, afterAll } from 'vitest';
@@ -112,6 +112,8 @@ const VARIANTS = {
   lightDepthEveryFrame: { switches: { 'pipeline.skipsUnreadLightDepth': false } },
   bothTexelsFetched: { switches: { 'blur.skipsEmptyTexels': false } },
   depthFromSurface: { switches: { 'blur.lightCarriesDepth': false } },
+  maskInDiffuse: { switches: { 'scene.diffuseCarriesDepth': false } },
+  neitherCarriesDepth: { switches: { 'scene.diffuseCarriesDepth': false, 'blur.lightCarriesDepth': false } },
   moved: { moved: true },
   // With MSAA 4, against the MSAA frame with every saving.
   msaa: { multisampling: 4, base: true },

@@ -307,3 +307,60 @@ describe('below one pixel, no work', () => {
     expect(wide.blurEnabled).toBe(true);
   });
 });
+
+describe('the depth carried in the light (one fetch per tap)', () => {
+  // The diffuse attachment and the horizontal blur's output carry the linear view depth in their
+  // alpha; off the mask the alpha is +0.0, and a depth of exactly 0 is written as -0.0
+  // (shaders/common/carriedDepth.glsl). An orthographic camera sees a plane on its own plane (depth
+  // 0) and behind it (negative depths): the blur must not take either for off the mask. With an
+  // orthographic camera the scale does not depend on depth, so each frame must equal the one with
+  // the plane in front, to the bit.
+  it('a plane at depth 0 and behind an orthographic camera blurs exactly as in front of it', async () => {
+    const r = await page.evaluate(async () => {
+      const { SSS, createRenderer, createComposer, flatScene, read } = window.lab;
+      const width = 160, height = 90;
+      const renderer = createRenderer(width, height);
+      const built = flatScene({ width, height, pxPerMm: 4, pattern: 'step' });
+      const frame = async (cameraZ, near) => {
+        Object.assign(built.camera, { near, far: 1000 });
+        built.camera.position.z = cameraZ;
+        built.camera.updateProjectionMatrix();
+        built.camera.updateMatrixWorld();
+        const sss = new SSS.SubsurfaceScattering({ scene: built.scene, camera: built.camera, worldUnitInMm: 1, type: window.lab.THREE.FloatType });
+        sss.makeSubsurface(built.material, { widthMm: 1 });
+        const composer = createComposer(renderer, { type: window.lab.THREE.FloatType });
+        composer.addPass(sss);
+        composer.render();
+        const out = {
+          scattered: Array.from(await read(renderer, sss.scatteredTarget)),
+          depthAlpha: (await read(renderer, sss.scenePass.renderTarget, 1))[((height >> 1) * width + (width >> 1)) * 4 + 3],
+          carries: sss.scenePass.diffuseHoldsDepth,
+          blur: sss.plan.blur,
+        };
+        sss.dispose();
+        composer.dispose();
+        return out;
+      };
+      const front = await frame(100, 1);
+      const onPlane = await frame(0, -10);
+      const behind = await frame(-50, -100);
+      renderer.dispose();
+      return { width, height, front, onPlane, behind };
+    });
+    expect(r.front.blur && r.front.carries).toBe(true);
+    expect(r.front.depthAlpha).toBeCloseTo(100, 4);
+    expect(Object.is(r.onPlane.depthAlpha, -0)).toBe(true); // depth 0, carried as -0.0
+    expect(r.behind.depthAlpha).toBeCloseTo(-50, 4);
+    // The edge did blur: across it the scattered light runs between the two levels.
+    const row = (img) => Array.from({ length: r.width }, (_, x) => img[((r.height >> 1) * r.width + x) * 4]);
+    const middle = row(r.front.scattered);
+    expect(middle.filter((v) => v > 0.1 && v < 0.9).length).toBeGreaterThan(2);
+    let worstOnPlane = 0, worstBehind = 0;
+    for (let i = 0; i < r.front.scattered.length; i++) {
+      worstOnPlane = Math.max(worstOnPlane, Math.abs(r.onPlane.scattered[i] - r.front.scattered[i]));
+      worstBehind = Math.max(worstBehind, Math.abs(r.behind.scattered[i] - r.front.scattered[i]));
+    }
+    expect(worstOnPlane).toBe(0);
+    expect(worstBehind).toBe(0);
+  });
+});

@@ -6,13 +6,14 @@ import { AFTER, BEFORE, NOT_BUILT, ISOTROPIC, TEXEL_BYTES, frameTraffic, targetM
 import { issueRatios, msaaRatio } from '../../../bench/costReport.js';
 
 describe('cost model', () => {
-  it('targets at 1920×1080: 2 × RGBA16F + RG32F + depth in the multi-target, RGBA32F (the depth carried) + RGBA16F for the blur, 2 × RGBA32UI for its groups', () => {
+  it('targets at 1920×1080: RGBA16F + RGBA32F (the depth carried) + RG32F + depth in the multi-target, RGBA32F + RGBA16F for the blur, 2 × RGBA32UI for its groups', () => {
     const pixels = 1920 * 1080;
-    expect(targetMemory(1920, 1080).bytes).toBe(pixels * (8 + 8 + 8 + 4 + 16 + 8 + 32));
-    expect(targetMemory(1920, 1080, { groups: false }).bytes).toBe(pixels * (8 + 8 + 8 + 4 + 16 + 8));
-    expect(targetMemory(1920, 1080, { groups: false, lightCarriesDepth: false }).bytes).toBe(pixels * (8 + 8 + 8 + 4 + 8 + 8));
-    // MSAA 4: a 4-sample renderbuffer per multi-target attachment besides its resolved texture.
-    expect(targetMemory(1920, 1080, { samples: 4 }).bytes).toBe(pixels * ((8 + 8 + 8 + 4) * 5 + 24 + 32));
+    expect(targetMemory(1920, 1080).bytes).toBe(pixels * (8 + 16 + 8 + 4 + 16 + 8 + 32));
+    expect(targetMemory(1920, 1080, { groups: false }).bytes).toBe(pixels * (8 + 16 + 8 + 4 + 16 + 8));
+    expect(targetMemory(1920, 1080, { groups: false, carriesDepth: false }).bytes).toBe(pixels * (8 + 8 + 8 + 4 + 8 + 8));
+    // MSAA 4: a 4-sample renderbuffer per multi-target attachment besides its resolved texture; the
+    // diffuse holds the coverage then (half float), the horizontal blur still carries the depth.
+    expect(targetMemory(1920, 1080, { samples: 4 }).bytes).toBe(pixels * ((8 + 8 + 8 + 4) * 5 + 16 + 8 + 32));
     expect(TEXEL_BYTES.rg32f).toBe(8);
   });
 
@@ -24,7 +25,9 @@ describe('cost model', () => {
     // Scissored to an empty box the blur passes cost nothing.
     const after = frameTraffic(AFTER, { subsurface: 0, box: 0, taps: 11 });
     expect(after.blurH).toEqual({ written: 0, read: 0, fetched: 0 });
-    expect(after.total.written).toBe(28 + 12);
+    expect(after.scene.written).toBe(8 + 16 + 8 + 4); // the diffuse attachment RGBA32F (it carries the depth)
+    expect(after.compose.read).toBe(4 + 8 + 16); // depth, colour, the diffuse for the mask
+    expect(after.total.written).toBe(36 + 12);
   });
 
   it('a mask pixel: the split writes 28 B, a blur tap fetches two texels of diffuse and surface', () => {
@@ -36,12 +39,16 @@ describe('cost model', () => {
     // Fetched per mask pixel: centre 16, slope 2 × 8, 9 taps × 2 texels × 16.
     expect(t.blurV.fetched).toBeCloseTo(16 + s * (16 + 9 * 2 * 16), 12);
     const after = frameTraffic(AFTER, { subsurface: s, box: 0.5, taps: 9 });
-    expect(t.scene.written - after.scene.written).toBeCloseTo(4 * s, 12); // no prepass depth write
+    // After: clears 36 (the diffuse RGBA32F), no prepass; split depth 4 + 4, colour 8, diffuse 16, surface 8.
+    expect(after.scene.written).toBeCloseTo(36 + s * (4 + 8 + 16 + 8), 12);
     expect(after.blurH.written).toBeCloseTo(0.5 * 16, 12); // the box only, RGBA32F (the depth carried)
-    expect(after.blurH.fetched).toBeCloseTo(0.5 * 16 + s * (16 + 9 * 2 * 16), 12);
+    // Centre 16 + 8, slope 2 × 8, 9 taps × 2 texels × 16 (light and depth in one texel).
+    expect(after.blurH.fetched).toBeCloseTo(0.5 * 24 + s * (16 + 9 * 2 * 16), 12);
     // The vertical taps fetch the carried light alone (16 B), the centre its light and surface.
     expect(after.blurV.fetched).toBeCloseTo(0.5 * 24 + s * (16 + 9 * 2 * 16), 12);
-    expect(after.total.written + after.total.read).toBeLessThan(t.total.written + t.total.read);
+    // Without the depth carried (the two float layouts' extra bytes), after moves less than before.
+    const apart = frameTraffic({ ...AFTER, lightCarriesDepth: false, diffuseCarriesDepth: false }, { subsurface: s, box: 0.5, taps: 9 });
+    expect(apart.total.written + apart.total.read).toBeLessThan(t.total.written + t.total.read);
   });
 
   it('the isotropic groups: the horizontal pass writes 32 B (two RGBA32UI), the vertical one reads 32 B of light per texel', () => {
@@ -69,13 +76,25 @@ describe('cost model', () => {
     expect(apart.blurV.fetched - 0.5 * 16).toBeCloseTo(s * (16 + 18 * 16), 12);
   });
 
+  it('the depth carried in the diffuse attachment: 8 B more cleared, written and read for the mask; the horizontal taps fetch the same bytes in one texel', () => {
+    const s = 0.25;
+    const scene = { subsurface: s, box: 0.5, taps: 9 };
+    const carried = frameTraffic(AFTER, scene);
+    const apart = frameTraffic({ ...AFTER, diffuseCarriesDepth: false }, scene);
+    expect(carried.scene.written - apart.scene.written).toBeCloseTo(8 + 8 * s, 12);
+    expect(carried.compose.read - apart.compose.read).toBeCloseTo(8, 12);
+    expect(carried.blurH.read - apart.blurH.read).toBeCloseTo(0.5 * 8, 12); // the centre's light
+    expect(carried.blurH.fetched - apart.blurH.fetched).toBeCloseTo(0.5 * 8, 12); // per tap 16 B either way
+    expect(carried.blurV).toEqual(apart.blurV);
+  });
+
   it('taps on a texel centre fetch one texel with skipsEmptyTexels (after), two without (before); memory traffic unchanged', () => {
     const s = 0.25;
     const scene = { subsurface: s, box: 0.5, taps: 9, centred: 4 };
     const before = frameTraffic(BEFORE, scene);
     const after = frameTraffic(AFTER, scene);
     expect(before.blurH.fetched).toBeCloseTo(16 + s * (16 + 9 * 2 * 16), 12); // the box is not confined before
-    expect(after.blurH.fetched).toBeCloseTo(0.5 * 16 + s * (16 + (9 * 2 - 4) * 16), 12);
+    expect(after.blurH.fetched).toBeCloseTo(0.5 * 24 + s * (16 + (9 * 2 - 4) * 16), 12);
     expect(after.blurV.read).toBeCloseTo(frameTraffic(AFTER, { ...scene, centred: 0 }).blurV.read, 12);
   });
 
@@ -83,7 +102,7 @@ describe('cost model', () => {
     const scene = { subsurface: 0, box: 0.5, taps: 9 };
     const after = frameTraffic(AFTER, scene);
     expect(after.scene.written - frameTraffic(NOT_BUILT.surfaceFromDepth, scene).scene.written).toBe(8);
-    expect(frameTraffic(NOT_BUILT.surfaceFromDepth, scene).blurH.read).toBeCloseTo(0.5 * (8 + 4), 12); // depth: 4 B
+    expect(frameTraffic(NOT_BUILT.surfaceFromDepth, scene).blurH.read).toBeCloseTo(0.5 * (16 + 4), 12); // the carried light 16 B, depth 4 B
     const folded = frameTraffic(NOT_BUILT.composeInBlur, scene);
     expect(folded.compose).toEqual({ written: 0, read: 0, fetched: 0 });
     // The vertical pass over the whole frame: centre 24 (the carried light 16, surface 8) + colour 8 + depth 4 read, colour + depth out.
