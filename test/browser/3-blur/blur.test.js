@@ -334,6 +334,7 @@ describe('the depth carried in the light (one fetch per tap)', () => {
         const out = {
           scattered: Array.from(await read(renderer, sss.scatteredTarget)),
           depthAlpha: (await read(renderer, sss.scenePass.renderTarget, 1))[((height >> 1) * width + (width >> 1)) * 4 + 3],
+          horizontalAlpha: (await read(renderer, sss.blur._blurTarget))[((height >> 1) * width + (width >> 1)) * 4 + 3],
           carries: sss.scenePass.diffuseHoldsDepth,
           blur: sss.plan.blur,
         };
@@ -345,11 +346,19 @@ describe('the depth carried in the light (one fetch per tap)', () => {
       const onPlane = await frame(0, -10);
       const behind = await frame(-50, -100);
       renderer.dispose();
+      // -0 does not survive the trip out of the page: its sign, read here.
+      for (const f of [front, onPlane, behind]) {
+        f.depthAlphaNegativeZero = Object.is(f.depthAlpha, -0);
+        f.horizontalAlphaNegativeZero = Object.is(f.horizontalAlpha, -0);
+      }
       return { width, height, front, onPlane, behind };
     });
     expect(r.front.blur && r.front.carries).toBe(true);
     expect(r.front.depthAlpha).toBeCloseTo(100, 4);
-    expect(Object.is(r.onPlane.depthAlpha, -0)).toBe(true); // depth 0, carried as -0.0
+    // Depth 0 is carried as -0.0 in the diffuse attachment and in the horizontal blur's output.
+    expect(r.onPlane.depthAlphaNegativeZero).toBe(true);
+    expect(r.onPlane.horizontalAlphaNegativeZero).toBe(true);
+    expect(r.front.horizontalAlpha).toBeCloseTo(100, 4);
     expect(r.behind.depthAlpha).toBeCloseTo(-50, 4);
     // The edge did blur: across it the scattered light runs between the two levels.
     const row = (img) => Array.from({ length: r.width }, (_, x) => img[((r.height >> 1) * r.width + x) * 4]);
