@@ -54,7 +54,8 @@ export function targetMemory(width, height, { samples = 0, groups = true, carrie
  * surface (8 + 8; the same bytes read, half the fetches; one kernel only);
  * diffuseCarriesDepth: the diffuse attachment does so too (RGBA32F; without MSAA), so a
  * horizontal tap fetches one texel; the split writes and clears 8 B more per pixel, and the
- * compose reads 16 B of it for the mask;
+ * compose reads 16 B of it for the mask (both modelled for the head's frame: one profile, the
+ * depth rule on; several profiles still fetch the surface per tap for the slot);
  * kernelGroups: the isotropic blur's groups (issue 20; 1: one kernel): with more, the horizontal
  * pass writes two RGBA32UI texels (32 B) instead of one RGBA16F (8 B), the vertical pass reads
  * them (and fetches both per tap, an upper bound: past groups 1 and 2's reach it fetches one), and
@@ -68,7 +69,7 @@ export const ISOTROPIC = Object.freeze({ ...AFTER, kernelGroups: 4 });
 /**
  * Directions the issue names that are not built, modelled on top of AFTER (what they would save,
  * not a measurement): surfaceFromDepth, no surface attachment (the blur reads the depth texture,
- * 4 B, and the width from the diffuse alpha); composeInBlur, the compose folded into the vertical
+ * 4 B, and the width from a channel elsewhere: the diffuse alpha now carries the depth); composeInBlur, the compose folded into the vertical
  * pass (no scattered target; that pass then covers the whole frame and writes the output).
  */
 export const NOT_BUILT = Object.freeze({

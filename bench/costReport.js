@@ -104,7 +104,7 @@ export function costModelSection(json) {
   lines.push(`| a plain three.js frame | ${bytes(before.plain.written)} | ${bytes(before.plain.read)} | ${bytes(before.plain.fetched)} |`, '',
     `Memory traffic (written + read) per pixel: ${bytes(traffic(before.total))} B before, ${bytes(traffic(after.total))} B after (×${(traffic(after.total) / traffic(before.total)).toFixed(2)}; the goal: ×0.5, **${traffic(after.total) <= 0.5 * traffic(before.total) ? 'met' : 'not met'}**); a plain frame's: ${bytes(traffic(before.plain))} B.`);
   const modelled = Object.entries({
-    surfaceFromDepth: 'no surface attachment (depth texture + the width in the diffuse alpha)',
+    surfaceFromDepth: 'no surface attachment (the depth texture, the width in a channel elsewhere)',
     composeInBlur: 'the compose folded into the vertical pass',
     both: 'both',
   }).map(([key, name]) => {

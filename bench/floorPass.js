@@ -1,9 +1,9 @@
 // The blur's floor (browser side, a bench row): two full-screen passes, horizontal then vertical,
-// that do what any 17-tap separable blur must do and nothing more: per subsurface pixel (the same
-// mask test as the blur, on the same scene split) 17 texel fetches of the light along the axis,
+// that do what any 17-tap separable blur must do and nothing more: per subsurface pixel (the mask
+// as the blur sees it, alpha not 0, on the same scene split) 17 texel fetches of the light along the axis,
 // summed with equal weights. No depth, no profile, no renormalisation: what is left of the real
 // blur's time above this is the cost of its sampling model.
-import { HalfFloatType, ShaderMaterial, WebGLRenderTarget } from 'three';
+import { FloatType, ShaderMaterial, WebGLRenderTarget } from 'three';
 import { FullScreenQuad } from 'three/addons/postprocessing/Pass.js';
 
 export const FLOOR_TAPS = 17;
@@ -15,7 +15,7 @@ uniform ivec2 last; // resolution - 1
 void main() {
 	ivec2 pixel = ivec2( gl_FragCoord.xy );
 	vec4 centre = texelFetch( tDiffuse, pixel, 0 );
-	if ( ! ( centre.a > 0.0 ) ) { gl_FragColor = centre; return; }
+	if ( centre.a == 0.0 ) { gl_FragColor = centre; return; }
 	vec3 sum = vec3( 0.0 );
 	for ( int i = - ( TAPS / 2 ); i <= TAPS / 2; i ++ ) {
 		sum += texelFetch( tDiffuse, clamp( pixel + i * axis, ivec2( 0 ), last ), 0 ).rgb;
@@ -37,7 +37,8 @@ export class FetchFloor {
     });
     this.horizontal = new FullScreenQuad(material([1, 0]));
     this.vertical = new FullScreenQuad(material([0, 1]));
-    this.targets = [0, 1].map(() => new WebGLRenderTarget(1, 1, { type: HalfFloatType, depthBuffer: false }));
+    // The format the blur's own light between its passes has (32-bit float: it carries the depth).
+    this.targets = [0, 1].map(() => new WebGLRenderTarget(1, 1, { type: FloatType, depthBuffer: false }));
   }
 
   /**

@@ -399,7 +399,6 @@ export class SubsurfaceScattering extends Pass {
     Object.assign(this.scenePass, { scene, camera, clearColor: this.clearColor, clearAlpha: this.clearAlpha });
     const msaaSamples = this._multisampling === 'auto' ? (readBuffer?.samples ?? 0) : this._multisampling;
     if (this.scenePass.setSamples(msaaSamples)) this.blur.setMultisampled(msaaSamples > 0);
-    this.blur.diffuseCarriesDepth = this.scenePass.diffuseHoldsDepth; // its layout, as MSAA and the switch leave it
     this._stage('scene', () => this.scenePass.render(renderer));
     // 3. Plan: the blur plans itself (src/3-blur/blurPlan.js) from the on-screen size of a profile
     //    millimetre: its taps for 'auto', no blur under half a pixel.
@@ -429,6 +428,7 @@ export class SubsurfaceScattering extends Pass {
    * @param {import('three').WebGLRenderer} renderer
    */
   renderScattering(renderer) {
+    this.blur.diffuseCarriesDepth = this.scenePass.diffuseHoldsDepth; // its layout, as MSAA and the switch left it
     this.blur.render(renderer, this.camera, (stage, draw) => this._stage(stage, draw), this.plan, this.scenePass.subsurfaceBox);
   }
 

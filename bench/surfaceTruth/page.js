@@ -295,7 +295,7 @@ function close() {
  * One frame of the pipeline with `setting` ({ method: 'none' }: no scattering and no transmittance,
  * the light the truth scatters; or the options of SubsurfaceScattering, e.g. { method: 'footprint',
  * samples: 'auto' }, and transmittance: false to turn it off); returns the diffuse light
- * before and after the blur (RGBA floats, alpha: the subsurface mask).
+ * before and after the blur (RGBA floats, alpha: not 0 on the subsurface mask: the depth it carries).
  */
 async function renderSetting(setting) {
   const { renderer } = session;

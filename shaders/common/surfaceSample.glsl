@@ -49,7 +49,7 @@ vec2 sssSurfaceAt( const in ivec2 texel ) {
 // The pixel a surface pass shades.
 struct SssCentre {
 	vec3 colour;    // its diffuse light (0 if not finite), coverage divided out
-	float coverage; // the diffuse alpha: 0 off subsurface pixels (or NaN), 1 on them, the MSAA coverage between
+	float coverage; // 0 off subsurface pixels (or NaN), 1 on them, the MSAA coverage between (the diffuse alpha, or tCoverage's with SSS_LIGHT_DEPTH)
 	vec2 surface;   // linear view depth and world units per profile mm, coverage divided out
 };
 

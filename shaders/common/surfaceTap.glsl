@@ -14,10 +14,6 @@
 // With several profiles (PROFILE_COUNT > 1) a texel of another profile weighs 0 too, like one off
 // the mask (surfaceSample.glsl's sssOnProfile).
 
-// The rule's weight of a texel of coverage `coverage` (its light's alpha) by the mask, the profile
-// and the depth, whatever the light is stored as (the diffuse texture, or the isotropic blur's
-// groups, shaders/3-blur/kernelGroups.glsl); `farness` is what 'lerp' moves its colour by (0 in
-// the other modes).
 // The depth rule alone, for a texel at `depth` (linear view depth, coverage divided out): its
 // weight ('drop': 1 - farness; 1 otherwise) and the farness 'lerp' moves its colour by.
 float sssDepthRule( const in float depth, const in float expectedDepth, out float farness ) {
@@ -33,6 +29,10 @@ float sssDepthRule( const in float depth, const in float expectedDepth, out floa
 	return 1.0;
 }
 
+// The rule's weight of a texel of coverage `coverage` (its light's alpha) by the mask, the profile
+// and the depth, whatever the light is stored as (the diffuse texture, or the isotropic blur's
+// groups, shaders/3-blur/kernelGroups.glsl); `farness` is what 'lerp' moves its colour by (0 in
+// the other modes).
 float sssTexelRule( const in ivec2 texel, const in float coverage, const in float expectedDepth, out float farness ) {
 	farness = 0.0;
 	float weight = 1.0;
@@ -55,6 +55,10 @@ float sssTexelRule( const in ivec2 texel, const in float coverage, const in floa
 	return weight;
 }
 
+// The rule's weight of the light texel `texel` (tDiffuse) for a centre expecting `expectedDepth`,
+// its colour (coverage divided out, moved by 'lerp') in `colour`. With SSS_LIGHT_DEPTH the light
+// carries its depth (one fetch; with MSAA a second for the coverage; several profiles still read
+// the surface for the slot).
 float sssTapWeight( const in ivec2 texel, const in float expectedDepth, const in vec3 centre, out vec3 colour ) {
 	vec4 light = texelFetch( tDiffuse, texel, 0 );
 	colour = light.rgb;

@@ -23,11 +23,12 @@
 //
 // The diffuse attachment may carry the depth (setDiffuseCarriesDepth; the orchestrator does so
 // without MSAA): it is then 32-bit float and its alpha on subsurface pixels is the surface's
-// linear view depth, as in the surface's r (shaders/common/carriedDepth.glsl: -0.0 for a depth of
-// 0; the mask is "alpha not +0.0"), so the blur's taps read light and depth in one fetch. A reader
+// linear view depth, as in the surface's r (shaders/common/carriedDepth.glsl: 1e-30 for a depth of
+// 0; the mask is "alpha != 0"), so the blur's taps read light and depth in one fetch. A reader
 // that tests the mask with sssCarriesSurface reads both layouts. With MSAA the resolve would
 // average depths with the zeros of uncovered samples, so the alpha stays the coverage there.
 import { DepthTexture, FloatType, NearestFilter, RGBAFormat, RGFormat, UnsignedIntType, WebGLRenderTarget } from 'three';
+import { setTextureType } from '../support/textureType.js';
 
 /** Attachment indices of the multi-target (see the table above). */
 export const ATTACHMENTS = Object.freeze({ COLOR: 0, DIFFUSE: 1, SURFACE: 2 });
@@ -71,11 +72,13 @@ export function createSubsurfaceTarget(type) {
   const { COLOR, DIFFUSE, SURFACE } = ATTACHMENTS;
   target.textures[COLOR].name = 'subsurface.color';
   target.textures[DIFFUSE].name = 'subsurface.diffuse';
+  // Every reader fetches texels (texelFetch); nearest also keeps a 32-bit float attachment complete
+  // where float filtering (OES_texture_float_linear) is missing.
+  for (const texture of target.textures) texture.minFilter = texture.magFilter = NearestFilter;
   const surface = target.textures[SURFACE];
   surface.name = 'subsurface.surface';
   surface.type = FloatType;
   surface.format = RGFormat;
-  surface.minFilter = surface.magFilter = NearestFilter;
   return target;
 }
 
@@ -111,12 +114,7 @@ export function setDiffuseCarriesDepth(target, enabled, type) {
   if (enabled === carryingDepth.has(target)) return false;
   if (enabled) carryingDepth.add(target);
   else carryingDepth.delete(target);
-  const diffuse = target.textures[ATTACHMENTS.DIFFUSE];
-  const nextType = enabled ? FloatType : type;
-  if (diffuse.type !== nextType) {
-    diffuse.type = nextType;
-    target.dispose();
-  }
+  setTextureType(target, target.textures[ATTACHMENTS.DIFFUSE], enabled ? FloatType : type);
   return true;
 }
 

@@ -20,6 +20,7 @@ import { DenseSubsurfacePass } from './DenseSubsurfacePass.js';
 import { KernelGroupTable } from './KernelGroupTable.js';
 import { MAX_KERNEL_GROUPS, checkKernelGroups, kernelGroupsAt } from './kernelGroups.js';
 import { tableOf } from '../profiles/FootprintTable.js';
+import { setTextureType } from '../support/textureType.js';
 
 const TRANSPARENT_BLACK = new Float32Array(4);
 const ZERO_UINTS = new Uint32Array(4);
@@ -51,7 +52,8 @@ const KERNEL_SETTINGS = Object.freeze(['method', 'samples', 'strength', 'falloff
 export class BlurStage {
   /**
    * @param {object} options
-   * @param {number} options.type HalfFloatType or FloatType for the two targets
+   * @param {number} options.type HalfFloatType or FloatType for the scattered light (and the
+   *   horizontal pass's output when it does not carry the depth: then 32-bit float)
    * @param {import('../profiles/ProfileLookup.js').ProfileLookup} options.profileLookup the first
    *   profile's tables (setProfiles gives the frame's profiles)
    * @param {import('../options.js').Method} options.method
@@ -72,7 +74,8 @@ export class BlurStage {
     this._kernels = new WeakMap(); // profile → computed kernels by their arguments: 'auto' switches between a few
     this._surface = surface;
     this._type = type;
-    this._blurTarget = new WebGLRenderTarget(1, 1, { type: FloatType, depthBuffer: false }); // it carries the depth (lightCarriesDepth)
+    // Nearest: the passes fetch texels, and a 32-bit float target stays complete without float filtering.
+    this._blurTarget = new WebGLRenderTarget(1, 1, { type: FloatType, depthBuffer: false, minFilter: NearestFilter, magFilter: NearestFilter }); // it carries the depth (lightCarriesDepth)
     this._blurTarget.texture.name = 'subsurface.horizontal';
     this._kernelGroups = checkKernelGroups(kernelGroups);
     this._checkGroupsMethod(method, this._kernelGroups);
@@ -140,8 +143,9 @@ export class BlurStage {
    * hands the depth from the horizontal pass to the vertical one in the light's alpha (a 32-bit
    * float target), so each vertical tap fetches one texel instead of two (light, surface);
    * false: the horizontal target in the pipeline's `type`, premultiplied by the coverage, as before.
-   * The sums are the same; with a half-float `type` the light between the passes then keeps 32
-   * bits instead of 16.
+   * With a float `type` and no MSAA the image is the same to the bit (with MSAA to about an ulp:
+   * light × coverage / coverage); with a half-float `type` the light between the passes now
+   * keeps 32 bits instead of 16. Several profiles still fetch the surface per tap (the slot).
    * @type {boolean}
    */
   get lightCarriesDepth() { return this._lightCarriesDepth; }
@@ -152,12 +156,7 @@ export class BlurStage {
     this._lightCarriesDepth = enabled;
     this.horizontalPass.setWritesDepth(enabled);
     this._applyCoverage();
-    const type = enabled ? FloatType : this._type;
-    if (this._blurTarget.texture.type !== type) {
-      this._blurTarget.texture.type = type;
-      this._blurTarget.dispose(); // three reallocates it on its next use
-      this._scissorKey = null; // and it is cleared again
-    }
+    if (setTextureType(this._blurTarget, this._blurTarget.texture, enabled ? FloatType : this._type)) this._scissorKey = null; // cleared again
   }
 
   /**

@@ -21,7 +21,8 @@ export class DenseSubsurfacePass extends SurfacePass {
    * @param {import('three').Texture} options.surfaceTexture the scene pass's surface attachment
    *   (r: linear view depth in world units, g: world units per profile mm, 0 off subsurface pixels)
    * @param {import('three').Texture|null} [options.diffuseTexture=null] the scene pass's diffuse
-   *   attachment (alpha: the mask); null reads the composer's read buffer
+   *   attachment (alpha: the mask, or the depth it carries: setLightCarriesDepth); null reads the
+   *   composer's read buffer
    * @param {string|object} [options.profile='skin'] profile name or object (ignored when
    *   `energyLookup` is given)
    * @param {QuadrantEnergyLookup|null} [options.energyLookup=null] a table to share (not disposed

@@ -12,7 +12,7 @@ import surfaceSampleGlsl from '../../shaders/common/surfaceSample.glsl?raw';
 import surfaceSlopeGlsl from '../../shaders/common/surfaceSlope.glsl?raw';
 import surfaceTapGlsl from '../../shaders/common/surfaceTap.glsl?raw';
 import { assembleGlsl, enumDefines, glslFloat, setDefines } from '../support/glsl.js';
-import { checkNumber, checkOneOf } from '../support/parameterChecks.js';
+import { checkBoolean, checkNumber, checkOneOf } from '../support/parameterChecks.js';
 import { describe } from '../support/rendererSupport.js';
 import { PASS_BOOLEANS, booleanFields } from '../support/booleanFields.js';
 import { isPerspective } from '../support/screenScale.js';
@@ -107,7 +107,7 @@ export class SurfacePass extends ShaderPass {
    *   coverage (the multi-target's diffuse), since the light's alpha then holds the depth
    */
   setLightCarriesDepth(enabled, coverage = null) {
-    if (typeof enabled !== 'boolean') throw new TypeError(`${this.material.name}: setLightCarriesDepth's enabled must be a boolean, got ${describe(enabled)}`);
+    checkBoolean(`${this.material.name}.setLightCarriesDepth enabled`, enabled);
     if (coverage !== null && coverage?.isTexture !== true) throw new TypeError(`${this.material.name}: setLightCarriesDepth's coverage must be a THREE.Texture or null, got ${describe(coverage)}`);
     setDefines(this.material, { SSS_LIGHT_DEPTH: enabled ? 1 : 0 });
     this.uniforms.tCoverage.value = coverage;

@@ -26,7 +26,8 @@ export class SubsurfaceComposePass extends ShaderPass {
    *   specular + emissive of subsurface pixels, full colour elsewhere (old name: lightTexture)
    * @param {import('three').Texture} options.surfaceTexture the multi-target's surface attachment
    * @param {import('three').Texture} options.diffuseTexture the diffuse light before the blur; its
-   *   alpha is the mask (split view, debug views; old name: unscatteredTexture)
+   *   alpha marks the mask, as 1, the coverage or a carried depth: not 0 (split view, debug views;
+   *   old name: unscatteredTexture)
    * @param {import('three').Texture|null} [options.scatteredTexture=null] the blurred diffuse light;
    *   null reads the composer's read buffer
    * @param {import('three').DepthTexture} options.depthTexture the multi-target's depth, written
