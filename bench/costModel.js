@@ -56,13 +56,15 @@ export function targetMemory(width, height, { samples = 0, groups = true, carrie
  * horizontal tap fetches one texel; the split writes and clears 8 B more per pixel, and the
  * compose reads 16 B of it for the mask (both modelled for the head's frame: one profile, the
  * depth rule on; several profiles still fetch the surface per tap for the slot);
+ * composeMaskFromScattered: the compose reads the mask from the scattered light (8 B) inside the
+ * box only, instead of the diffuse attachment at every pixel and the scattered light on the mask;
  * kernelGroups: the isotropic blur's groups (issue 20; 1: one kernel): with more, the horizontal
  * pass writes two RGBA32UI texels (32 B) instead of one RGBA16F (8 B), the vertical pass reads
  * them (and fetches both per tap, an upper bound: past groups 1 and 2's reach it fetches one), and
  * both passes fetch the group fractions per footprint (a small table: free in memory traffic).
  */
-export const BEFORE = Object.freeze({ depthPrepass: true, confineToSubsurface: false, fetchesEverywhere: false, skipsEmptyTexels: false, lightCarriesDepth: false, diffuseCarriesDepth: false, kernelGroups: 1 });
-export const AFTER = Object.freeze({ depthPrepass: false, confineToSubsurface: true, fetchesEverywhere: false, skipsEmptyTexels: true, lightCarriesDepth: true, diffuseCarriesDepth: true, kernelGroups: 1 });
+export const BEFORE = Object.freeze({ depthPrepass: true, confineToSubsurface: false, fetchesEverywhere: false, skipsEmptyTexels: false, lightCarriesDepth: false, diffuseCarriesDepth: false, composeMaskFromScattered: false, kernelGroups: 1 });
+export const AFTER = Object.freeze({ depthPrepass: false, confineToSubsurface: true, fetchesEverywhere: false, skipsEmptyTexels: true, lightCarriesDepth: true, diffuseCarriesDepth: true, composeMaskFromScattered: true, kernelGroups: 1 });
 /** This version with the isotropic blur (`kernelGroups: 'auto'`, four groups near): what the groups add, modelled. */
 export const ISOTROPIC = Object.freeze({ ...AFTER, kernelGroups: 4 });
 
@@ -128,10 +130,11 @@ export function frameTraffic(switches, { subsurface, box, ordinary = 0, taps, ce
   const carried = !grouped && switches.lightCarriesDepth === true;
   const between = grouped ? 2 * TEXEL_BYTES.rgba32ui : carried ? TEXEL_BYTES.rgba32f : RGBA16F; // the light between the passes
   const blurH = blurPass(area, s, taps, surface, skipped, { input: diffuse, output: between, carried: switches.diffuseCarriesDepth === true });
-  // Compose: depth, colour and diffuse (its mask) at every pixel, the scattered light on the mask
-  // (or everywhere, with the surface, as before issue 10); out: the composer's colour and depth.
+  // Compose: depth and colour at every pixel; the scattered light (its alpha the mask) in the box
+  // (composeMaskFromScattered), or the diffuse (its mask) at every pixel and the scattered light on
+  // the mask, or everything everywhere with the surface (as before issue 10); out: colour and depth.
   const everywhere = switches.fetchesEverywhere ? 1 : 0;
-  const composeRead = DEPTH + RGBA16F + diffuse + (everywhere ? RGBA16F + RG32F : s * RGBA16F);
+  const composeRead = DEPTH + RGBA16F + (everywhere ? diffuse + RGBA16F + RG32F : switches.composeMaskFromScattered ? box * RGBA16F : diffuse + s * RGBA16F);
   let blurV = blurPass(area, s, taps, surface, skipped, { input: between, carried });
   let compose = stage(RGBA16F + DEPTH, composeRead);
   if (switches.composeInBlur) {

@@ -49,10 +49,12 @@ export const RECOMPILING_FEATURES = Object.freeze(['isotropic']);
  * pipeline's type), as before the horizontal pass handed it on in the light's alpha; maskInDiffuse
  * has the diffuse attachment hold the mask in its alpha (in the pipeline's type), as before it
  * carried the depth there, so the horizontal taps (and the dense reference's) read the surface too;
+ * maskFromDiffuse has the compose read the mask from the diffuse attachment at every pixel, as
+ * before it read it from the scattered light's alpha inside the subsurface pixels' box;
  * msaaDepthResolvedTwice (with MSAA 4, against msaa4) lets three resolve the scene split's depth
  * after its first call too, as before.
  */
-export const UNDONE_OPTIMIZATIONS = Object.freeze(['lightDepthEveryFrame', 'composeAsBefore', 'depthPrepass', 'fullFrameBlur', 'bothTexelsFetched', 'depthFromSurface', 'maskInDiffuse', 'msaaDepthResolvedTwice']);
+export const UNDONE_OPTIMIZATIONS = Object.freeze(['lightDepthEveryFrame', 'composeAsBefore', 'depthPrepass', 'fullFrameBlur', 'bothTexelsFetched', 'depthFromSurface', 'maskInDiffuse', 'maskFromDiffuse', 'msaaDepthResolvedTwice']);
 
 /** Everything the features block switches, one at a time. */
 export const FEATURES = Object.freeze([...ADDITIONS, ...UNDONE_OPTIMIZATIONS]);

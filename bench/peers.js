@@ -88,6 +88,7 @@ const UNDO_SWITCHES = Object.freeze({
   bothTexelsFetched: (sss) => [sss.blur, 'skipsEmptyTexels', false],
   depthFromSurface: (sss) => [sss.blur, 'lightCarriesDepth', false],
   maskInDiffuse: (sss) => [sss.scenePass, 'diffuseCarriesDepth', false],
+  maskFromDiffuse: (sss) => [sss.composePass, 'maskFromScattered', false],
   msaaDepthResolvedTwice: (sss) => [sss.scenePass, 'resolvesDepthOnce', false],
 });
 

@@ -145,6 +145,7 @@ export class SubsurfaceScattering extends Pass {
       scatteredTexture: this.blur.scatteredTarget.texture,
       depthTexture: this.scenePass.depthTexture,
     });
+    this.composePass.maskFromScattered = true; // its blur writes the mask into the scattered light's alpha
     this._debug = { view: 'final', depthRange: 100, thicknessRangeMm: 10 };
     /** @internal The materials made subsurface through this pipeline (see makeSubsurface; `materials` is the public view). */
     this.subsurfaceMaterials = new PipelineMaterials(this, () => ({
@@ -409,6 +410,7 @@ export class SubsurfaceScattering extends Pass {
     // 5. Compose: colour + the scattered (without blur: the unblurred) diffuse light, and the
     //    scene's depth, into the target: every pixel (clear), or over what it holds (clear false).
     this.composePass.scatteredTexture = this.plan.blur ? this.blur.scatteredTarget.texture : this.scenePass.diffuseTexture;
+    this.composePass.setMaskBox(this.scenePass.subsurfaceBox); // (the diffuse's alpha marks the mask too, without the blur)
     this.composePass.renderToScreen = this.renderToScreen;
     this.composePass.setClear(this.clear, this.clearDepth);
     const autoClear = renderer.autoClear;

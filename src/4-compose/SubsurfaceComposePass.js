@@ -2,7 +2,7 @@
 // multi-target's colour attachment), in linear HDR. Pixels that are not subsurface come out as
 // their material wrote them. Also offers a split view (unblurred on the left) and debug views of
 // each ingredient (src/4-compose/debugViews.js).
-import { AlwaysDepth, LessEqualDepth } from 'three';
+import { AlwaysDepth, LessEqualDepth, Vector4 } from 'three';
 import { ShaderPass } from 'three/addons/postprocessing/ShaderPass.js';
 import vertexShader from '../../shaders/common/fullscreen.vert.glsl?raw';
 import composeGlsl from '../../shaders/4-compose/compose.frag.glsl?raw';
@@ -50,11 +50,12 @@ export class SubsurfaceComposePass extends ShaderPass {
     }
     super({
       name: 'SubsurfaceComposePass',
-      defines: { ...enumDefines('DEBUG_VIEW', DEBUG_VIEWS, DEBUG_VIEW.FINAL), KEEP_BACKGROUND: 0, FETCH_EVERYWHERE: 0 },
+      defines: { ...enumDefines('DEBUG_VIEW', DEBUG_VIEWS, DEBUG_VIEW.FINAL), KEEP_BACKGROUND: 0, FETCH_EVERYWHERE: 0, MASK_FROM_SCATTERED: 0 },
       uniforms: {
         tColor: { value: null }, tScattered: { value: null }, tDiffuse: { value: null }, tSurface: { value: null },
         tDepth: { value: null }, farDepth: { value: 1 },
         splitX: { value: 0 }, debugDepthRange: { value: 100 }, debugThicknessRangeMm: { value: 10 },
+        maskBox: { value: new Vector4(0, 0, 0x7fffffff, 0x7fffffff) },
       },
       vertexShader,
       fragmentShader,
@@ -66,6 +67,7 @@ export class SubsurfaceComposePass extends ShaderPass {
     this.scatteredTexture = scatteredTexture;
     this._writesDepth = true;
     this._fetchesEverywhere = false;
+    this._maskFromScattered = false;
     this.setClear(true);
     this.debugView = DEBUG_VIEW.FINAL;
     this.split = 0;
@@ -130,6 +132,32 @@ export class SubsurfaceComposePass extends ShaderPass {
   set fetchesEverywhere(enabled) {
     this._fetchesEverywhere = checkBoolean('fetchesEverywhere', enabled);
     setDefines(this.material, { FETCH_EVERYWHERE: enabled ? 1 : 0 });
+  }
+
+  /**
+   * Documented-internal switch (issue 19; SubsurfaceScattering turns it on, the bench undoes it
+   * for one measure): true reads the mask from the scattered light's alpha (the blur's output:
+   * its centre's coverage, 0 off the mask), and nothing outside `setMaskBox`'s box, so the diffuse
+   * attachment is read only where its unblurred light is shown; false (the default, for a
+   * scattered texture of your own whose alpha may not be the mask) reads the mask from the diffuse
+   * attachment at every pixel. The image is the same.
+   * @type {boolean}
+   */
+  get maskFromScattered() { return this._maskFromScattered; }
+
+  set maskFromScattered(enabled) {
+    this._maskFromScattered = checkBoolean('maskFromScattered', enabled);
+    setDefines(this.material, { MASK_FROM_SCATTERED: enabled ? 1 : 0 });
+  }
+
+  /**
+   * With maskFromScattered: the subsurface pixels' screen box (device pixels, origin bottom left,
+   * as SubsurfaceScenePass.subsurfaceBox; null: anywhere). Outside it no pixel is taken for subsurface.
+   * @param {{ x: number, y: number, width: number, height: number }|null} box
+   */
+  setMaskBox(box) {
+    if (box === null) this.uniforms.maskBox.value.set(0, 0, 0x7fffffff, 0x7fffffff);
+    else this.uniforms.maskBox.value.set(box.x, box.y, box.x + box.width, box.y + box.height);
   }
 
   render(renderer, writeBuffer, readBuffer, deltaTime, maskActive) {

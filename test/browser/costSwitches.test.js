@@ -2,7 +2,8 @@
 // without the depth prepass (each subsurface object rasterised once), the blur scissored to the
 // subsurface pixels' screen box, the compose fetching less, the light depth pass skipped while
 // unread, the blur fetching only the texels its taps weigh, the depth carried in the diffuse
-// attachment and handed between the blur passes in the light, and with MSAA the depth resolved once. Each switch must leave the image as it is: every variant is held against the frame with
+// attachment and handed between the blur passes in the light, the compose's mask from the scattered
+// light, and with MSAA the depth resolved once. Each switch must leave the image as it is: every variant is held against the frame with
 // every saving on, float read-backs, and the ordinary pixels against a plain three.js frame (the
 // shadows cast by and onto subsurface objects kept).
 import { describe, it, expect, beforeAll, afterAll } from 'vitest';
@@ -114,6 +115,7 @@ const VARIANTS = {
   depthFromSurface: { switches: { 'blur.lightCarriesDepth': false } },
   maskInDiffuse: { switches: { 'scene.diffuseCarriesDepth': false } },
   neitherCarriesDepth: { switches: { 'scene.diffuseCarriesDepth': false, 'blur.lightCarriesDepth': false } },
+  maskFromDiffuse: { switches: { 'compose.maskFromScattered': false } },
   moved: { moved: true },
   // With MSAA 4, against the MSAA frame with every saving.
   msaa: { multisampling: 4, base: true },
@@ -122,6 +124,7 @@ const VARIANTS = {
   // Premultiplied between the passes, as before: (light × coverage) / coverage is the light to
   // about an ulp, not exactly (ROUNDED).
   msaaDepthFromSurface: { multisampling: 4, switches: { 'blur.lightCarriesDepth': false }, rounded: true },
+  msaaMaskFromDiffuse: { multisampling: 4, switches: { 'compose.maskFromScattered': false } },
 };
 /** What a rounded variant may differ by, relative to the lit level (float32: a few ulps). */
 const ROUNDED = 1e-6;

@@ -26,7 +26,7 @@ describe('cost model', () => {
     const after = frameTraffic(AFTER, { subsurface: 0, box: 0, taps: 11 });
     expect(after.blurH).toEqual({ written: 0, read: 0, fetched: 0 });
     expect(after.scene.written).toBe(8 + 16 + 8 + 4); // the diffuse attachment RGBA32F (it carries the depth)
-    expect(after.compose.read).toBe(4 + 8 + 16); // depth, colour, the diffuse for the mask
+    expect(after.compose.read).toBe(4 + 8); // depth, colour; the mask from the scattered light, in the (empty) box
     expect(after.total.written).toBe(36 + 12);
   });
 
@@ -82,10 +82,22 @@ describe('cost model', () => {
     const carried = frameTraffic(AFTER, scene);
     const apart = frameTraffic({ ...AFTER, diffuseCarriesDepth: false }, scene);
     expect(carried.scene.written - apart.scene.written).toBeCloseTo(8 + 8 * s, 12);
-    expect(carried.compose.read - apart.compose.read).toBeCloseTo(8, 12);
+    const composeApart = (d) => frameTraffic({ ...AFTER, diffuseCarriesDepth: d, composeMaskFromScattered: false }, scene).compose.read;
+    expect(composeApart(true) - composeApart(false)).toBeCloseTo(8, 12); // the diffuse read for the mask
+    expect(carried.compose.read).toBeCloseTo(apart.compose.read, 12); // not read with the mask from the scattered light
     expect(carried.blurH.read - apart.blurH.read).toBeCloseTo(0.5 * 8, 12); // the centre's light
     expect(carried.blurH.fetched - apart.blurH.fetched).toBeCloseTo(0.5 * 8, 12); // per tap 16 B either way
     expect(carried.blurV).toEqual(apart.blurV);
+  });
+
+  it('the compose\'s mask from the scattered light: 8 B in the box instead of the diffuse everywhere and the scattered light on the mask', () => {
+    const s = 0.25;
+    const scene = { subsurface: s, box: 0.5, taps: 9 };
+    const fromScattered = frameTraffic(AFTER, scene).compose;
+    const fromDiffuse = frameTraffic({ ...AFTER, composeMaskFromScattered: false }, scene).compose;
+    expect(fromScattered.read).toBeCloseTo(4 + 8 + 0.5 * 8, 12);
+    expect(fromDiffuse.read).toBeCloseTo(4 + 8 + 16 + s * 8, 12);
+    expect(fromScattered.written).toBe(fromDiffuse.written);
   });
 
   it('taps on a texel centre fetch one texel with skipsEmptyTexels (after), two without (before); memory traffic unchanged', () => {
