@@ -82,8 +82,11 @@ export const NOT_BUILT = Object.freeze({
 
 const { rgba16f: RGBA16F, rg32f: RG32F, depth24: DEPTH } = TEXEL_BYTES;
 
-/** One stage's traffic per screen pixel: bytes written, read from memory, and fetched by the texture units. */
-const stage = (written, read, fetched = read) => ({ written, read, fetched });
+/**
+ * One stage's traffic per screen pixel: bytes written, read from memory, and fetched by the
+ * texture units, and `fetches`, the texel fetch instructions (the small tables' included).
+ */
+const stage = (written, read, fetched = read, fetches = 0) => ({ written, read, fetched, fetches });
 
 /**
  * A blur pass over `area` of the frame, `subsurface` of it on the mask, `taps` per direction,
@@ -97,7 +100,12 @@ function blurPass(area, subsurface, taps, surface, centred = 0, { input = RGBA16
   // depth, so a tap reads no surface.
   const centre = input + surface;
   const perMaskPixel = 2 * surface + (taps * 2 - centred) * (input + (carried ? 0 : surface));
-  return stage(area * output, area * centre, area * centre + subsurface * perMaskPixel);
+  // Fetch instructions: the centre's two, the slope's two, each tap texel's one or two, and the
+  // footprint loop's tables (the centre's energy: two profile texels; per footprint, (taps − 1) / 2
+  // a side: its table texel and two profile texels).
+  const tables = 2 + 3 * (taps - 1) / 2;
+  const fetches = area * 2 + subsurface * (2 + (taps * 2 - centred) * (carried ? 1 : 2) + tables);
+  return stage(area * output, area * centre, area * centre + subsurface * perMaskPixel, fetches);
 }
 
 /**
@@ -136,16 +144,17 @@ export function frameTraffic(switches, { subsurface, box, ordinary = 0, taps, ce
   const everywhere = switches.fetchesEverywhere ? 1 : 0;
   const composeRead = DEPTH + RGBA16F + (everywhere ? diffuse + RGBA16F + RG32F : switches.composeMaskFromScattered ? box * RGBA16F : diffuse + s * RGBA16F);
   let blurV = blurPass(area, s, taps, surface, skipped, { input: between, carried });
-  let compose = stage(RGBA16F + DEPTH, composeRead);
+  const composeFetches = 2 + (everywhere ? 3 : switches.composeMaskFromScattered ? box : 1 + s);
+  let compose = stage(RGBA16F + DEPTH, composeRead, composeRead, composeFetches);
   if (switches.composeInBlur) {
     // The vertical pass over the whole frame: its taps as before, plus colour and depth read and
     // the output (colour, depth) written at every pixel instead of the scattered light.
     const v = blurPass(1, s, taps, surface, skipped, { input: between, carried });
-    blurV = stage(RGBA16F + DEPTH, v.read + RGBA16F + DEPTH, v.fetched + RGBA16F + DEPTH); // (the mask from the light it reads)
+    blurV = stage(RGBA16F + DEPTH, v.read + RGBA16F + DEPTH, v.fetched + RGBA16F + DEPTH, v.fetches + 2); // (the mask from the light it reads)
     compose = stage(0, 0);
   }
   const stages = { scene, blurH, blurV, compose };
-  const total = stage(...['written', 'read', 'fetched'].map((k) => Object.values(stages).reduce((sum, x) => sum + x[k], 0)));
+  const total = stage(...['written', 'read', 'fetched', 'fetches'].map((k) => Object.values(stages).reduce((sum, x) => sum + x[k], 0)));
   // A plain frame: colour and depth cleared, then each covered pixel's fragment (depth, colour).
   const plain = stage(RGBA16F + DEPTH + covered * (DEPTH + RGBA16F), covered * DEPTH);
   return { ...stages, total, plain };

@@ -91,17 +91,17 @@ export function costModelSection(json) {
   const after = frameTraffic(AFTER, scene);
   const lines = ['## Cost model (bytes per pixel; bench/costModel.js)', '',
     `Per screen pixel of the head at 1920×1080, with what the side-by-side measured at ${coverage.resolution.replace('x', '×')}: ${(100 * scene.subsurface).toFixed(1)} % of the pixels subsurface, ${(100 * scene.box).toFixed(1)} % in their screen box, ${scene.taps.toFixed(1)} taps per pixel and direction (${hd ? "'auto' at 1920×1080, the main plan's row" : "'auto' there"}). `
-    + 'Memory: each texel a pass reads is counted once per pass (its neighbours\' taps find it in cache: a vertical pass\'s 30-row reach at 1920×1080 is about 0.9 MB of diffuse + surface, within an L2), every write once, clears as writes, the small tables (footprints, profile) free. Fetched: every texel fetch, no reuse (the texture units\' load). Material textures are left out (a plain frame reads the same). '
+    + 'Memory: each texel a pass reads is counted once per pass (its neighbours\' taps find it in cache: a vertical pass\'s 30-row reach at 1920×1080 is about 0.9 MB of diffuse + surface, within an L2), every write once, clears as writes, the small tables (footprints, profile) free. Fetched: every texel fetch, no reuse (the texture units\' load); texel fetches: their count, the small tables\' included (the instructions a GPU issues for them). Material textures are left out (a plain frame reads the same). '
     + `${scene.centred.toFixed(1)} of the taps per pixel and direction sit on a texel centre (footprints one pixel wide). `
     + 'Before: version 0.2 (the depth prepass, the blurs over the whole frame, two texels fetched per tap); after: this version (each object drawn once, the blurs scissored to the box, one texel for a tap on a texel centre, the depth carried in the light\'s alpha: the diffuse attachment and the horizontal blur\'s output in 32-bit float, so a tap texel is one fetch of 16 B instead of two of 8 B). '
     + 'The carried depth halves the fetch instructions per tap but not the bytes they move (a texture unit moves 16 B either way), and adds 8 B per pixel of clears and reads: on SwiftShader it pays (the optimizations table below: depthFromSurface, maskInDiffuse); on a GPU bound by the bytes its texture units move it may not, which the same switches in a `--gpu` run would measure.', '',
-    '| stage | written, before → after | read, before → after | fetched, before → after |', '|---|---|---|---|'];
+    '| stage | written, before → after | read, before → after | fetched, before → after | texel fetches (instructions), before → after |', '|---|---|---|---|---|'];
   for (const key of ['scene', 'blurH', 'blurV', 'compose', 'total']) {
     const [b, a] = [before[key], after[key]];
-    lines.push(`| ${key} | ${bytes(b.written)} → ${bytes(a.written)} | ${bytes(b.read)} → ${bytes(a.read)} | ${bytes(b.fetched)} → ${bytes(a.fetched)} |`);
+    lines.push(`| ${key} | ${bytes(b.written)} → ${bytes(a.written)} | ${bytes(b.read)} → ${bytes(a.read)} | ${bytes(b.fetched)} → ${bytes(a.fetched)} | ${b.fetches.toFixed(1)} → ${a.fetches.toFixed(1)} |`);
   }
   const traffic = (x) => x.written + x.read;
-  lines.push(`| a plain three.js frame | ${bytes(before.plain.written)} | ${bytes(before.plain.read)} | ${bytes(before.plain.fetched)} |`, '',
+  lines.push(`| a plain three.js frame | ${bytes(before.plain.written)} | ${bytes(before.plain.read)} | ${bytes(before.plain.fetched)} | ${before.plain.fetches.toFixed(1)} |`, '',
     `Memory traffic (written + read) per pixel: ${bytes(traffic(before.total))} B before, ${bytes(traffic(after.total))} B after (×${(traffic(after.total) / traffic(before.total)).toFixed(2)}; the goal: ×0.5, **${traffic(after.total) <= 0.5 * traffic(before.total) ? 'met' : 'not met'}**); a plain frame's: ${bytes(traffic(before.plain))} B.`);
   const modelled = Object.entries({
     surfaceFromDepth: 'no surface attachment (the depth texture, the width in a channel elsewhere)',
@@ -113,7 +113,7 @@ export function costModelSection(json) {
   });
   const isotropic = traffic(frameTraffic(ISOTROPIC, scene).total);
   lines.push('', `The isotropic blur (issue 20, \`kernelGroups: 'auto'\`, four groups carried between the passes in two RGBA32UI texels): ${bytes(isotropic)} B per pixel (×${(isotropic / traffic(before.total)).toFixed(2)} of before), ${bytes(isotropic - traffic(after.total))} B more than one kernel.`);
-  lines.push('', `Not built, modelled on top of after (what they would save; the blur shader is being reworked under issue 20, and the surface's coverage-weighted MSAA resolve has no depth-texture equivalent): ${modelled.join('; ')}.`);
+  lines.push('', `Not built, modelled on top of after (what they would save; the surface's coverage-weighted MSAA resolve has no depth-texture equivalent): ${modelled.join('; ')}.`);
   const memory = targetMemory(1920, 1080);
   const msaa = targetMemory(1920, 1080, { samples: 4 });
   const before0 = targetMemory(1920, 1080, { groups: false });

@@ -19,12 +19,12 @@ describe('cost model', () => {
 
   it('an empty frame: only the clears, the blur passes\' centres and the compose', () => {
     const t = frameTraffic(BEFORE, { subsurface: 0, box: 0, taps: 11 });
-    expect(t.scene).toEqual({ written: 28, read: 0, fetched: 0 });
-    expect(t.blurH).toEqual({ written: 8, read: 16, fetched: 16 });
-    expect(t.compose).toEqual({ written: 12, read: 20, fetched: 20 });
+    expect(t.scene).toEqual({ written: 28, read: 0, fetched: 0, fetches: 0 });
+    expect(t.blurH).toEqual({ written: 8, read: 16, fetched: 16, fetches: 2 }); // the centre's light and surface
+    expect(t.compose).toEqual({ written: 12, read: 20, fetched: 20, fetches: 3 }); // depth, colour, diffuse
     // Scissored to an empty box the blur passes cost nothing.
     const after = frameTraffic(AFTER, { subsurface: 0, box: 0, taps: 11 });
-    expect(after.blurH).toEqual({ written: 0, read: 0, fetched: 0 });
+    expect(after.blurH).toEqual({ written: 0, read: 0, fetched: 0, fetches: 0 });
     expect(after.scene.written).toBe(8 + 16 + 8 + 4); // the diffuse attachment RGBA32F (it carries the depth)
     expect(after.compose.read).toBe(4 + 8); // depth, colour; the mask from the scattered light, in the (empty) box
     expect(after.total.written).toBe(36 + 12);
@@ -74,6 +74,10 @@ describe('cost model', () => {
     expect(carried.blurH.fetched).toBeCloseTo(apart.blurH.fetched, 12);
     // Fetches, counted: 1 per vertical tap texel instead of 2 (light and surface).
     expect(apart.blurV.fetched - 0.5 * 16).toBeCloseTo(s * (16 + 18 * 16), 12);
+    // Instructions: centre 2 and slope 2, 18 tap texels × 2 (apart) or × 1 (carried), the tables
+    // 2 + 3 × 4 footprints.
+    expect(apart.blurV.fetches).toBeCloseTo(0.5 * 2 + s * (2 + 36 + 14), 12);
+    expect(carried.blurV.fetches).toBeCloseTo(0.5 * 2 + s * (2 + 18 + 14), 12);
   });
 
   it('the depth carried in the diffuse attachment: 8 B more cleared, written and read for the mask; the horizontal taps fetch the same bytes in one texel', () => {
@@ -116,9 +120,9 @@ describe('cost model', () => {
     expect(after.scene.written - frameTraffic(NOT_BUILT.surfaceFromDepth, scene).scene.written).toBe(8);
     expect(frameTraffic(NOT_BUILT.surfaceFromDepth, scene).blurH.read).toBeCloseTo(0.5 * (16 + 4), 12); // the carried light 16 B, depth 4 B
     const folded = frameTraffic(NOT_BUILT.composeInBlur, scene);
-    expect(folded.compose).toEqual({ written: 0, read: 0, fetched: 0 });
+    expect(folded.compose).toEqual({ written: 0, read: 0, fetched: 0, fetches: 0 });
     // The vertical pass over the whole frame: centre 24 (the carried light 16, surface 8) + colour 8 + depth 4 read, colour + depth out.
-    expect(folded.blurV).toEqual({ written: 12, read: 36, fetched: 36 });
+    expect(folded.blurV).toEqual({ written: 12, read: 36, fetched: 36, fetches: 4 });
   });
 });
 
