@@ -53,8 +53,8 @@ export function targetMemory(width, height, { samples = 0, groups = true, carrie
  * 16 B, instead of RGBA16F), so a vertical tap fetches one texel of 16 B instead of light and
  * surface (8 + 8; the same bytes read, half the fetches; one kernel only);
  * diffuseCarriesDepth: the diffuse attachment does so too (RGBA32F; without MSAA), so a
- * horizontal tap fetches one texel; the split writes and clears 8 B more per pixel, and the
- * compose reads 16 B of it for the mask (both modelled for the head's frame: one profile, the
+ * horizontal tap fetches one texel; the split writes and clears 8 B more per pixel, and a compose
+ * that reads the mask from it reads 16 B (both modelled for the head's frame: one profile, the
  * depth rule on; several profiles still fetch the surface per tap for the slot);
  * composeMaskFromScattered: the compose reads the mask from the scattered light (8 B) inside the
  * box only, instead of the diffuse attachment at every pixel and the scattered light on the mask;
@@ -98,13 +98,15 @@ function blurPass(area, subsurface, taps, surface, centred = 0, { input = RGBA16
   // (one for the `centred` taps on a texel centre). `input`, `output`: bytes per texel of the light
   // read and written (the isotropic groups between the passes: 32); `carried`: the light holds the
   // depth, so a tap reads no surface.
+  // `taps` counts the centre: (taps − 1) / 2 footprints a side, each one tap between two texels.
   const centre = input + surface;
-  const perMaskPixel = 2 * surface + (taps * 2 - centred) * (input + (carried ? 0 : surface));
+  const texels = 2 * (taps - 1) - centred;
+  const perMaskPixel = 2 * surface + texels * (input + (carried ? 0 : surface));
   // Fetch instructions: the centre's two, the slope's two, each tap texel's one or two, and the
-  // footprint loop's tables (the centre's energy: two profile texels; per footprint, (taps − 1) / 2
-  // a side: its table texel and two profile texels).
-  const tables = 2 + 3 * (taps - 1) / 2;
-  const fetches = area * 2 + subsurface * (2 + (taps * 2 - centred) * (carried ? 1 : 2) + tables);
+  // footprint loop's tables: the centre's energy (two profile texels), then per footprint its
+  // table texel and two profile texels, but the last (the tail takes the energy left): 3 (taps − 1) / 2.
+  const tables = 3 * (taps - 1) / 2;
+  const fetches = area * 2 + subsurface * (2 + texels * (carried ? 1 : 2) + tables);
   return stage(area * output, area * centre, area * centre + subsurface * perMaskPixel, fetches);
 }
 

@@ -410,7 +410,8 @@ export class SubsurfaceScattering extends Pass {
     // 5. Compose: colour + the scattered (without blur: the unblurred) diffuse light, and the
     //    scene's depth, into the target: every pixel (clear), or over what it holds (clear false).
     this.composePass.scatteredTexture = this.plan.blur ? this.blur.scatteredTarget.texture : this.scenePass.diffuseTexture;
-    this.composePass.setMaskBox(this.scenePass.subsurfaceBox); // (the diffuse's alpha marks the mask too, without the blur)
+    // The box bounds where the blur wrote; without the blur the diffuse is read everywhere, as before.
+    this.composePass.setMaskBox(this.plan.blur ? this.scenePass.subsurfaceBox : null);
     this.composePass.renderToScreen = this.renderToScreen;
     this.composePass.setClear(this.clear, this.clearDepth);
     const autoClear = renderer.autoClear;

@@ -16,7 +16,7 @@ uniform float farDepth;        // the depth buffer's cleared value: 1 (0 with a 
 uniform float splitX;          // pixels left of this column show the unblurred diffuse light
 uniform float debugDepthRange; // world units mapped to white in the depth view
 uniform float debugThicknessRangeMm; // millimetres mapped to white in the thickness view
-uniform ivec4 maskBox;         // MASK_FROM_SCATTERED: the subsurface pixels lie in [xy, zw) (device pixels)
+uniform highp ivec4 maskBox;   // MASK_FROM_SCATTERED: the subsurface pixels lie in [xy, zw) (device pixels)
 
 varying vec2 vUv;
 

@@ -36,16 +36,16 @@ describe('cost model', () => {
     // Scene: clears 28, prepass depth 4 (write) + 4 (test), split depth 4 + 4, colour, diffuse, surface 24.
     expect(t.scene.written).toBeCloseTo(28 + s * (4 + 4 + 24), 12);
     expect(t.scene.read).toBeCloseTo(s * (4 + 4), 12);
-    // Fetched per mask pixel: centre 16, slope 2 × 8, 9 taps × 2 texels × 16.
-    expect(t.blurV.fetched).toBeCloseTo(16 + s * (16 + 9 * 2 * 16), 12);
+    // Fetched per mask pixel: centre 16, slope 2 × 8, 9 taps (the centre and 8 others) → 8 × 2 texels × 16.
+    expect(t.blurV.fetched).toBeCloseTo(16 + s * (16 + 8 * 2 * 16), 12);
     const after = frameTraffic(AFTER, { subsurface: s, box: 0.5, taps: 9 });
     // After: clears 36 (the diffuse RGBA32F), no prepass; split depth 4 + 4, colour 8, diffuse 16, surface 8.
     expect(after.scene.written).toBeCloseTo(36 + s * (4 + 8 + 16 + 8), 12);
     expect(after.blurH.written).toBeCloseTo(0.5 * 16, 12); // the box only, RGBA32F (the depth carried)
-    // Centre 16 + 8, slope 2 × 8, 9 taps × 2 texels × 16 (light and depth in one texel).
-    expect(after.blurH.fetched).toBeCloseTo(0.5 * 24 + s * (16 + 9 * 2 * 16), 12);
+    // Centre 16 + 8, slope 2 × 8, 8 taps × 2 texels × 16 (light and depth in one texel).
+    expect(after.blurH.fetched).toBeCloseTo(0.5 * 24 + s * (16 + 8 * 2 * 16), 12);
     // The vertical taps fetch the carried light alone (16 B), the centre its light and surface.
-    expect(after.blurV.fetched).toBeCloseTo(0.5 * 24 + s * (16 + 9 * 2 * 16), 12);
+    expect(after.blurV.fetched).toBeCloseTo(0.5 * 24 + s * (16 + 8 * 2 * 16), 12);
     // Without the depth carried (the two float layouts' extra bytes), after moves less than before.
     const apart = frameTraffic({ ...AFTER, lightCarriesDepth: false, diffuseCarriesDepth: false }, { subsurface: s, box: 0.5, taps: 9 });
     expect(apart.total.written + apart.total.read).toBeLessThan(t.total.written + t.total.read);
@@ -58,8 +58,8 @@ describe('cost model', () => {
     const one = frameTraffic(AFTER, scene);
     expect(grouped.blurH.written).toBeCloseTo(0.5 * 32, 12);
     expect(grouped.blurH.fetched).toBeCloseTo(one.blurH.fetched, 12); // it reads the diffuse light as before
-    // Vertical: centre 32 + 8, slope 2 × 8, 9 taps × 2 texels × (32 + 8).
-    expect(grouped.blurV.fetched).toBeCloseTo(0.5 * 40 + s * (16 + 9 * 2 * 40), 12);
+    // Vertical: centre 32 + 8, slope 2 × 8, 8 taps × 2 texels × (32 + 8).
+    expect(grouped.blurV.fetched).toBeCloseTo(0.5 * 40 + s * (16 + 8 * 2 * 40), 12);
     expect(grouped.blurV.written).toBe(one.blurV.written);
   });
 
@@ -73,11 +73,11 @@ describe('cost model', () => {
     expect(carried.blurV.fetched - apart.blurV.fetched).toBeCloseTo(0.5 * 8, 12); // per tap 16 B either way
     expect(carried.blurH.fetched).toBeCloseTo(apart.blurH.fetched, 12);
     // Fetches, counted: 1 per vertical tap texel instead of 2 (light and surface).
-    expect(apart.blurV.fetched - 0.5 * 16).toBeCloseTo(s * (16 + 18 * 16), 12);
-    // Instructions: centre 2 and slope 2, 18 tap texels × 2 (apart) or × 1 (carried), the tables
-    // 2 + 3 × 4 footprints.
-    expect(apart.blurV.fetches).toBeCloseTo(0.5 * 2 + s * (2 + 36 + 14), 12);
-    expect(carried.blurV.fetches).toBeCloseTo(0.5 * 2 + s * (2 + 18 + 14), 12);
+    expect(apart.blurV.fetched - 0.5 * 16).toBeCloseTo(s * (16 + 16 * 16), 12);
+    // Instructions: centre 2 and slope 2, 16 tap texels × 2 (apart) or × 1 (carried), the tables
+    // 3 × 4 footprints (the centre's two profile texels, none for the tail).
+    expect(apart.blurV.fetches).toBeCloseTo(0.5 * 2 + s * (2 + 32 + 12), 12);
+    expect(carried.blurV.fetches).toBeCloseTo(0.5 * 2 + s * (2 + 16 + 12), 12);
   });
 
   it('the depth carried in the diffuse attachment: 8 B more cleared, written and read for the mask; the horizontal taps fetch the same bytes in one texel', () => {
@@ -109,8 +109,8 @@ describe('cost model', () => {
     const scene = { subsurface: s, box: 0.5, taps: 9, centred: 4 };
     const before = frameTraffic(BEFORE, scene);
     const after = frameTraffic(AFTER, scene);
-    expect(before.blurH.fetched).toBeCloseTo(16 + s * (16 + 9 * 2 * 16), 12); // the box is not confined before
-    expect(after.blurH.fetched).toBeCloseTo(0.5 * 24 + s * (16 + (9 * 2 - 4) * 16), 12);
+    expect(before.blurH.fetched).toBeCloseTo(16 + s * (16 + 8 * 2 * 16), 12); // the box is not confined before
+    expect(after.blurH.fetched).toBeCloseTo(0.5 * 24 + s * (16 + (8 * 2 - 4) * 16), 12);
     expect(after.blurV.read).toBeCloseTo(frameTraffic(AFTER, { ...scene, centred: 0 }).blurV.read, 12);
   });
 
