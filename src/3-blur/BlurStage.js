@@ -99,8 +99,6 @@ export class BlurStage {
      */
     this.confineToSubsurface = true;
     this._skipsEmptyTexels = true;
-    this._diffuseCarriesDepth = false;
-    this._lightCarriesDepth = false;
     this.lightCarriesDepth = true;
     this._scissorKey = null; // the box the targets were last scissored to ('full' or x,y,w,h)
     /** The kernel the separable passes hold (computeKernel's layout). */
@@ -148,12 +146,11 @@ export class BlurStage {
    * keeps 32 bits instead of 16. Several profiles still fetch the surface per tap (the slot).
    * @type {boolean}
    */
-  get lightCarriesDepth() { return this._lightCarriesDepth; }
+  get lightCarriesDepth() { return this.horizontalPass.writesDepth; }
 
   set lightCarriesDepth(enabled) {
     checkBoolean('BlurStage.lightCarriesDepth', enabled);
-    if (enabled === this._lightCarriesDepth) return;
-    this._lightCarriesDepth = enabled;
+    if (enabled === this.lightCarriesDepth) return;
     this.horizontalPass.setWritesDepth(enabled);
     this._applyCoverage();
     if (setTextureType(this._blurTarget, this._blurTarget.texture, enabled ? FloatType : this._type)) this._scissorKey = null; // cleared again
@@ -165,19 +162,18 @@ export class BlurStage {
    * read light and depth in one fetch per tap.
    * @type {boolean}
    */
-  get diffuseCarriesDepth() { return this._diffuseCarriesDepth; }
+  get diffuseCarriesDepth() { return this.horizontalPass.lightCarriesDepth; }
 
   set diffuseCarriesDepth(enabled) {
     checkBoolean('BlurStage.diffuseCarriesDepth', enabled);
-    if (enabled === this._diffuseCarriesDepth) return;
-    this._diffuseCarriesDepth = enabled;
+    if (enabled === this.diffuseCarriesDepth) return;
     this.horizontalPass.setLightCarriesDepth(enabled);
     this._densePass?.setLightCarriesDepth(enabled);
   }
 
   /** The vertical pass reads a carried depth (lightCarriesDepth), with MSAA the coverage from the multi-target's diffuse. */
   _applyCoverage() {
-    const carried = this._lightCarriesDepth;
+    const carried = this.lightCarriesDepth;
     this.verticalPass.setLightCarriesDepth(carried, carried && this._multisampled ? this._surface.diffuseTexture : null);
   }
 
@@ -215,7 +211,7 @@ export class BlurStage {
       this._densePass = new DenseSubsurfacePass({ ...this._surface, profile: this._settings.profile, maxRadiusPx: DENSE_MAX_RADIUS_PX });
       this._densePass.setSize(this._size.width, this._size.height);
       this._densePass.setMultisampled(this._multisampled);
-      this._densePass.setLightCarriesDepth(this._diffuseCarriesDepth);
+      this._densePass.setLightCarriesDepth(this.diffuseCarriesDepth);
     }
     return this._densePass;
   }
