@@ -313,6 +313,9 @@ async function main() {
       if (!info.timerQuery) throw new Error('EXT_disjoint_timer_query_webgl2 is missing: the SSS times cannot be measured');
       if (gpu && /swiftshader/i.test(info.renderer)) log('WARNING: --gpu asked, but Chromium fell back to SwiftShader');
       out = await measure(page, quick ? QUICK_PLAN : FULL_PLAN, { name, info, peersPlan: quick ? QUICK_PEERS : FULL_PEERS, imagePaths });
+      // Version 0.2's side-by-side (the issue 19 table's "before" column) outlives every run.
+      const baseline = JSON.parse(await readFile(jsonPath, 'utf8').catch(() => 'null'))?.peersVersion02;
+      if (baseline) out = { ...out, peersVersion02: baseline };
       await writeFile(jsonPath, `${JSON.stringify(out, null, 2)}\n`);
     }
     const png = await page.evaluate((o) => window.bench.drawChart(o), chartData(out.results.filter((r) => r.chart), out.webgl));
