@@ -234,26 +234,61 @@ async function run(options) {
 }
 
 /**
+ * The renderer, pipeline and composer of the last `flat` call, kept while the next one asks for the
+ * same pipeline options (resized when its size differs): a new pipeline compiles all its programs
+ * again (SwiftShader: 1-3 s a call, most of the accuracy suite's time), while a kept one only swaps
+ * its scene and camera, as a user's app does between views. Measured: the same float read-backs to
+ * the bit either way.
+ */
+let flatRig = null;
+
+function flatRigFor(width, height, sss) {
+  const key = JSON.stringify(sss);
+  if (flatRig?.key !== key) {
+    disposeFlatRig();
+    const renderer = createRenderer(width, height);
+    // The scene and camera are each call's (assigned there); these only satisfy the constructor.
+    const pipeline = new SSS.SubsurfaceScattering({ scene: new THREE.Scene(), camera: new THREE.OrthographicCamera(), worldUnitInMm: 1, type: THREE.FloatType, ...sss });
+    const composer = createComposer(renderer, { type: THREE.FloatType });
+    composer.addPass(pipeline);
+    flatRig = { key, renderer, pipeline, composer };
+  }
+  const { renderer, composer } = flatRig;
+  const size = renderer.getDrawingBufferSize(new THREE.Vector2());
+  if (size.x !== width || size.y !== height) {
+    renderer.setSize(width, height, false);
+    composer.setSize(width, height);
+  }
+  return flatRig;
+}
+
+function disposeFlatRig() {
+  if (!flatRig) return;
+  const { pipeline, composer, renderer } = flatRig;
+  pipeline.dispose();
+  composer.dispose();
+  renderer.dispose();
+  renderer.forceContextLoss();
+  flatRig = null;
+}
+
+/**
  * The analytic accuracy scene (flatScene.js) through the pipeline: returns the diffuse light before
  * the blur and the scattered light after it, float.
  */
 async function flat({ width = 256, height = 256, sss = {}, ...scene }) {
-  const renderer = createRenderer(width, height);
-  const { scene: world, camera, material, map } = flatScene({ width, height, ...scene });
-  const pipeline = new SSS.SubsurfaceScattering({ scene: world, camera, worldUnitInMm: 1, type: THREE.FloatType, ...sss });
+  const { renderer, pipeline, composer } = flatRigFor(width, height, sss);
+  const { scene: world, camera, material, map, plane } = flatScene({ width, height, ...scene });
+  Object.assign(pipeline, { scene: world, camera });
   pipeline.makeSubsurface(material, { widthMm: 1 });
-  const composer = createComposer(renderer, { type: THREE.FloatType });
-  composer.addPass(pipeline);
   composer.render();
   const before = await read(renderer, pipeline.scenePass.renderTarget, ATTACHMENTS.DIFFUSE);
   const after = await read(renderer, pipeline.scatteredTarget);
   const result = { width, height, before, after, blur: pipeline.plan.blur, glError: renderer.getContext().getError() };
-  pipeline.dispose();
-  composer.dispose();
+  pipeline.removeSubsurface(material);
   material.dispose();
   map.dispose();
-  renderer.dispose();
-  renderer.forceContextLoss();
+  plane.geometry.dispose();
   return result;
 }
 
@@ -320,7 +355,7 @@ function buildScene(name, options = {}) {
 }
 
 window.lab = {
-  THREE, SSS, EffectComposer, RenderPass, ShaderPass, OutputPass, createRenderer, createComposer, read, dataTexture, run, buildScene, flat, flatScene, DEFAULTS,
+  THREE, SSS, EffectComposer, RenderPass, ShaderPass, OutputPass, createRenderer, createComposer, read, dataTexture, run, buildScene, flat, disposeFlatRig, flatScene, DEFAULTS,
   lightDepthCards, cardDepths,
 };
 window.testReady = true;

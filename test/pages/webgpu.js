@@ -60,23 +60,50 @@ function subsurfacePipeline(renderer, scene, camera, { type = THREE.HalfFloatTyp
   return { scenePass, node, pipeline };
 }
 
+/**
+ * The scene pass, node and RenderPipeline of the last `flat` call on each backend, kept while the
+ * next call there asks for the same node options (as lab.js's flat rig: a new node builds and
+ * compiles its blur programs again; a kept one reads the call's scene and camera from the pass, as
+ * the node does every frame).
+ */
+const flatRigs = new Map();
+
+function flatRigFor(renderer, backend, sss) {
+  const key = JSON.stringify(sss);
+  const kept = flatRigs.get(backend);
+  if (kept?.key === key) return kept;
+  disposeFlatRig(backend);
+  // The scene and camera are each call's (assigned there); these only make the pass.
+  const rig = { key, ...subsurfacePipeline(renderer, new THREE.Scene(), new THREE.OrthographicCamera(), { type: THREE.FloatType, sss: { worldUnitInMm: 1, ...sss } }) };
+  flatRigs.set(backend, rig);
+  return rig;
+}
+
+function disposeFlatRig(backend) {
+  const rig = flatRigs.get(backend);
+  if (!rig) return;
+  rig.node.dispose();
+  rig.pipeline.dispose();
+  rig.scenePass.dispose();
+  flatRigs.delete(backend);
+}
+
 /** The analytic accuracy scene (flatScene.js) through the node: the diffuse light before the blur and after it. */
 async function flat({ width = 256, height = 256, backend = 'webgpu', sss = {}, ...options }) {
   const renderer = await sharedRenderer(backend, width, height);
-  const { scene, camera, material, map } = flatScene({ width, height, ...options });
+  const { scene, camera, material, map, plane } = flatScene({ width, height, ...options });
   const skin = NODE.subsurfaceMaterial(material, { widthMm: 1 });
   scene.traverse((object) => { if (object.material === material) object.material = skin; });
-  const { scenePass, node, pipeline } = subsurfacePipeline(renderer, scene, camera, { type: THREE.FloatType, sss: { worldUnitInMm: 1, ...sss } });
+  const { scenePass, node, pipeline } = flatRigFor(renderer, backend, sss);
+  Object.assign(scenePass, { scene, camera });
   pipeline.render();
   const before = await readFloats(renderer, scenePass.renderTarget, 'diffuse');
   const after = await readFloats(renderer, node._scatteredTarget);
   const result = { width, height, before, after, blur: node.plan.blur, plan: node.plan };
-  node.dispose();
-  pipeline.dispose();
-  scenePass.dispose();
   skin.dispose();
   material.dispose();
   map.dispose();
+  plane.geometry.dispose();
   return result;
 }
 
@@ -325,5 +352,5 @@ async function labScenePlain({ backend = 'webgpu', width = 96, height = 54, scen
   return image;
 }
 
-window.wgpu = { THREE, NODE, pass, createRenderer, readFloats, subsurfacePipeline, flat, head, disposal, plainDraw, debugViews, labScene, labScenePlain, lightDepthCards };
+window.wgpu = { THREE, NODE, pass, createRenderer, readFloats, subsurfacePipeline, flat, disposeFlatRig, head, disposal, plainDraw, debugViews, labScene, labScenePlain, lightDepthCards };
 window.testReady = true;

@@ -7,6 +7,7 @@ import { openPage, evaluateFloats } from '../../harness/page.js';
 let page;
 beforeAll(async () => { page = await openPage('/test/pages/lab.html'); });
 afterAll(async () => {
+  await page.evaluate(() => window.lab.disposeFlatRig());
   expect(page.problems).toEqual([]);
   await page.close();
 });

@@ -9,6 +9,7 @@ import { accuracyMeasures, footprintCases } from '../3-blur/accuracyCases.js';
 let page;
 beforeAll(async () => { page = await openWebgpuPage('/test/pages/webgpu.html'); });
 afterAll(async () => {
+  await page.evaluate((backends) => { for (const backend of backends) window.wgpu.disposeFlatRig(backend); }, BACKENDS);
   expect(page.problems).toEqual([]);
   await page.close();
 });
