@@ -61,12 +61,14 @@ export function targetMemory(width, height, { samples = 0, groups = true, carrie
  * kernelGroups: the isotropic blur's groups (issue 20; 1: one kernel): with more, the horizontal
  * pass writes two RGBA32UI texels (32 B) instead of one RGBA16F (8 B), the vertical pass reads
  * them (and fetches both per tap, an upper bound: past groups 1 and 2's reach it fetches one), and
- * both passes fetch the group fractions per footprint (a small table: free in memory traffic).
+ * both passes fetch the group fractions per footprint (a small table: free in memory traffic);
+ * groupsCarryDepth: the groups' alphas carry the depth (without MSAA), so a vertical tap of the
+ * groups reads no surface.
  */
 export const BEFORE = Object.freeze({ depthPrepass: true, confineToSubsurface: false, fetchesEverywhere: false, skipsEmptyTexels: false, lightCarriesDepth: false, diffuseCarriesDepth: false, composeMaskFromScattered: false, kernelGroups: 1 });
 export const AFTER = Object.freeze({ depthPrepass: false, confineToSubsurface: true, fetchesEverywhere: false, skipsEmptyTexels: true, lightCarriesDepth: true, diffuseCarriesDepth: true, composeMaskFromScattered: true, kernelGroups: 1 });
 /** This version with the isotropic blur (`kernelGroups: 'auto'`, four groups near): what the groups add, modelled. */
-export const ISOTROPIC = Object.freeze({ ...AFTER, kernelGroups: 4 });
+export const ISOTROPIC = Object.freeze({ ...AFTER, kernelGroups: 4, groupsCarryDepth: true });
 
 /**
  * Directions the issue names that are not built, modelled on top of AFTER (what they would save,
@@ -92,21 +94,22 @@ const stage = (written, read, fetched = read, fetches = 0) => ({ written, read, 
  * A blur pass over `area` of the frame, `subsurface` of it on the mask, `taps` per direction,
  * reading `surface` bytes per texel for the surface (the attachment, or the depth texture).
  */
-function blurPass(area, subsurface, taps, surface, centred = 0, { input = RGBA16F, output = RGBA16F, carried = false } = {}) {
+function blurPass(area, subsurface, taps, surface, centred = 0, { input = RGBA16F, output = RGBA16F, carried = false, lightFetches = 1 } = {}) {
   // Every pixel reads its centre (the light, surface) and writes its result; a mask pixel also
   // reads its two neighbours' surface (the slope) and, per tap, two texels of light and surface
   // (one for the `centred` taps on a texel centre). `input`, `output`: bytes per texel of the light
   // read and written (the isotropic groups between the passes: 32); `carried`: the light holds the
-  // depth, so a tap reads no surface.
+  // depth, so a tap reads no surface; `lightFetches`: fetch instructions per light texel (the
+  // isotropic groups' two attachments: 2).
   // `taps` counts the centre: (taps − 1) / 2 footprints a side, each one tap between two texels.
   const centre = input + surface;
   const texels = 2 * (taps - 1) - centred;
   const perMaskPixel = 2 * surface + texels * (input + (carried ? 0 : surface));
-  // Fetch instructions: the centre's two, the slope's two, each tap texel's one or two, and the
+  // Fetch instructions: the centre's two, the slope's two, each tap texel's light and surface, and the
   // footprint loop's tables: the centre's energy (two profile texels), then per footprint its
   // table texel and two profile texels, but the last (the tail takes the energy left): 3 (taps − 1) / 2.
   const tables = 3 * (taps - 1) / 2;
-  const fetches = area * 2 + subsurface * (2 + texels * (carried ? 1 : 2) + tables);
+  const fetches = area * 2 + subsurface * (2 + texels * (lightFetches + (carried ? 0 : 1)) + tables);
   return stage(area * output, area * centre, area * centre + subsurface * perMaskPixel, fetches);
 }
 
@@ -137,7 +140,8 @@ export function frameTraffic(switches, { subsurface, box, ordinary = 0, taps, ce
   const surface = switches.surfaceFromDepth ? DEPTH : RG32F;
   const skipped = switches.skipsEmptyTexels ? centred : 0;
   const grouped = (switches.kernelGroups ?? 1) > 1;
-  const carried = !grouped && switches.lightCarriesDepth === true;
+  // The depth between the passes: in the light (one kernel), in the groups' alphas (groupsCarryDepth).
+  const carried = grouped ? switches.groupsCarryDepth === true : switches.lightCarriesDepth === true;
   const between = grouped ? 2 * TEXEL_BYTES.rgba32ui : carried ? TEXEL_BYTES.rgba32f : RGBA16F; // the light between the passes
   const blurH = blurPass(area, s, taps, surface, skipped, { input: diffuse, output: between, carried: switches.diffuseCarriesDepth === true });
   // Compose: depth and colour at every pixel; the scattered light (its alpha the mask) in the box
@@ -145,7 +149,7 @@ export function frameTraffic(switches, { subsurface, box, ordinary = 0, taps, ce
   // the mask, or everything everywhere with the surface (as before issue 10); out: colour and depth.
   const everywhere = switches.fetchesEverywhere ? 1 : 0;
   const composeRead = DEPTH + RGBA16F + (everywhere ? diffuse + RGBA16F + RG32F : switches.composeMaskFromScattered ? box * RGBA16F : diffuse + s * RGBA16F);
-  let blurV = blurPass(area, s, taps, surface, skipped, { input: between, carried });
+  let blurV = blurPass(area, s, taps, surface, skipped, { input: between, carried, lightFetches: grouped ? 2 : 1 });
   const composeFetches = 2 + (everywhere ? 3 : switches.composeMaskFromScattered ? box : 1 + s);
   let compose = stage(RGBA16F + DEPTH, composeRead, composeRead, composeFetches);
   if (switches.composeInBlur) {

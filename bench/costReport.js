@@ -112,7 +112,7 @@ export function costModelSection(json) {
     return `${name}: ${bytes(t)} B (×${(t / traffic(before.total)).toFixed(2)} of before)`;
   });
   const isotropic = traffic(frameTraffic(ISOTROPIC, scene).total);
-  lines.push('', `The isotropic blur (issue 20, \`kernelGroups: 'auto'\`, four groups carried between the passes in two RGBA32UI texels): ${bytes(isotropic)} B per pixel (×${(isotropic / traffic(before.total)).toFixed(2)} of before), ${bytes(isotropic - traffic(after.total))} B more than one kernel.`);
+  lines.push('', `The isotropic blur (issue 20, \`kernelGroups: 'auto'\`, four groups carried between the passes in two RGBA32UI texels, the depth in their alphas): ${bytes(isotropic)} B per pixel (×${(isotropic / traffic(before.total)).toFixed(2)} of before), ${bytes(isotropic - traffic(after.total))} B more than one kernel.`);
   lines.push('', `Not built, modelled on top of after (what they would save; the surface's coverage-weighted MSAA resolve has no depth-texture equivalent): ${modelled.join('; ')}.`);
   const memory = targetMemory(1920, 1080);
   const msaa = targetMemory(1920, 1080, { samples: 4 });

@@ -32,7 +32,7 @@ export const MEASURED_BY_ABSENCE = Object.freeze(['noDepthWrite']);
  * Features whose switch recompiles a shader (the blur's group capacity): warmed up in the timed
  * call itself, so the compile falls in the warm-up frame (their CPU time per frame is then not taken).
  */
-export const RECOMPILING_FEATURES = Object.freeze(['isotropic']);
+export const RECOMPILING_FEATURES = Object.freeze(['isotropic', 'isotropicDepthFromSurface']);
 
 /**
  * Issue 10's and issue 19's optimizations, each undone for the measure by a switch of the passes
@@ -52,9 +52,14 @@ export const RECOMPILING_FEATURES = Object.freeze(['isotropic']);
  * maskFromDiffuse has the compose read the mask from the diffuse attachment at every pixel, as
  * before it read it from the scattered light's alpha inside the subsurface pixels' box;
  * msaaDepthResolvedTwice (with MSAA 4, against msaa4) lets three resolve the scene split's depth
- * after its first call too, as before.
+ * after its first call too, as before; isotropicDepthFromSurface (the isotropic blur, against
+ * isotropic) has its vertical taps read the surface for each texel's depth, as before the group
+ * target carried it.
  */
-export const UNDONE_OPTIMIZATIONS = Object.freeze(['lightDepthEveryFrame', 'composeAsBefore', 'depthPrepass', 'fullFrameBlur', 'bothTexelsFetched', 'depthFromSurface', 'maskInDiffuse', 'maskFromDiffuse', 'msaaDepthResolvedTwice']);
+export const UNDONE_OPTIMIZATIONS = Object.freeze(['lightDepthEveryFrame', 'composeAsBefore', 'depthPrepass', 'fullFrameBlur', 'bothTexelsFetched', 'depthFromSurface', 'maskInDiffuse', 'maskFromDiffuse', 'msaaDepthResolvedTwice', 'isotropicDepthFromSurface']);
+
+/** The measure an undone optimization is held against: the MSAA frame, the isotropic one, or ours as it is ('none'). */
+export const undoneAgainst = (feature) => (feature.startsWith('msaa') ? 'msaa4' : feature.startsWith('isotropic') ? 'isotropic' : 'none');
 
 /** Everything the features block switches, one at a time. */
 export const FEATURES = Object.freeze([...ADDITIONS, ...UNDONE_OPTIMIZATIONS]);

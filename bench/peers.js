@@ -90,6 +90,7 @@ const UNDO_SWITCHES = Object.freeze({
   maskInDiffuse: (sss) => [sss.scenePass, 'diffuseCarriesDepth', false],
   maskFromDiffuse: (sss) => [sss.composePass, 'maskFromScattered', false],
   msaaDepthResolvedTwice: (sss) => [sss.scenePass, 'resolvesDepthOnce', false],
+  isotropicDepthFromSurface: (sss) => [sss.blur, 'groupsCarryDepth', false], // with isotropic's switch too (applyFeature)
 });
 
 /** The additions switched on or off by a field (bench/peerPlan.js's ADDITIONS), as UNDO_SWITCHES. */
@@ -109,7 +110,7 @@ const MSAA_FEATURES = Object.freeze(['msaa4', 'msaaDepthResolvedTwice']);
  * blur in groups (`kernelGroups: 'auto'`; the default is one kernel);
  * threeProfiles: a marble and a milk ball beside the head, each with its own profile (three in
  * the frame), threeObjects: the same balls in the head's profile; the optimizations undone flip
- * their switch (UNDO_SWITCHES).
+ * their switch (UNDO_SWITCHES), the isotropic blur's with the isotropic blur on.
  */
 function applyFeature(peers, session, feature) {
   const { sss, built } = session;
@@ -137,10 +138,15 @@ function applyFeature(peers, session, feature) {
       off();
     };
   }
-  const [object, field, value] = (ADDITION_SWITCHES[feature] ?? UNDO_SWITCHES[feature])(sss);
-  const before = object[field];
-  object[field] = value;
-  return () => { object[field] = before; msaaOff(); };
+  // An isotropic optimization undone: the isotropic blur on as well (it is measured against it).
+  const switches = [ADDITION_SWITCHES[feature] ?? UNDO_SWITCHES[feature], ...(feature.startsWith('isotropic') && feature !== 'isotropic' ? [ADDITION_SWITCHES.isotropic] : [])];
+  const undo = switches.map((of) => {
+    const [object, field, value] = of(sss);
+    const before = object[field];
+    object[field] = value;
+    return () => { object[field] = before; };
+  });
+  return () => { undo.forEach((restore) => restore()); msaaOff(); };
 }
 
 /** Renders `variant` once with one timer query around the whole frame. */

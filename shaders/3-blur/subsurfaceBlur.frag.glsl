@@ -128,16 +128,27 @@ void addTap( const in float offsetPx, const in vec3 weight, const in ivec2 pixel
 }
 
 #if SSS_GROUPS > 1 && AXIS == 1
+	// The tap rule's weight of a group texel: with the depth it carries (SSS_GROUP_DEPTH, one
+	// profile) no surface fetch, else the rule as for any texel.
+	float sssGroupTexelRule( const in ivec2 texel, const in float coverage, const in float depth, const in float expectedDepth, out float farness ) {
+		#if SSS_GROUP_DEPTH == 1 && PROFILE_COUNT == 1
+			return sssDepthRule( depth, expectedDepth, farness );
+		#else
+			return sssTexelRule( texel, coverage, expectedDepth, farness );
+		#endif
+	}
+
 	// Adds a texel's groups at `share` of the tap (its linear weight) to the tap's light by the tap
 	// rule ('lerp': each group moved towards the centre's by the farness); returns the weight kept.
 	float sssAddGroupTexel( const in ivec2 texel, const in float share, const in float expectedDepth,
 		const in vec3 centre0, const in vec3 centre1, const in vec3 centre2, const in vec3 centre3,
 		inout vec3 light0, inout vec3 light1, inout vec3 light2, inout vec3 light3 ) {
 		vec3 a, b, c, d;
-		float coverage = sssGroupsAt( texel, a, b, c, d );
+		float depth;
+		float coverage = sssGroupsAt( texel, a, b, c, d, depth );
 		if ( ! ( coverage > 0.0 ) ) return 0.0;
 		float farness;
-		float weight = share * sssTexelRule( texel, coverage, expectedDepth, farness );
+		float weight = share * sssGroupTexelRule( texel, coverage, depth, expectedDepth, farness );
 		#if FOLLOW_SURFACE == FOLLOW_SURFACE_LERP
 			a = mix( a, centre0, farness );
 			b = mix( b, centre1, farness );
@@ -155,10 +166,11 @@ void addTap( const in float offsetPx, const in vec3 weight, const in ivec2 pixel
 		// one fetch, the group target's second attachment).
 		float sssAddFarTexel( const in ivec2 texel, const in float share, const in float expectedDepth, const in vec3 centre2, const in vec3 centre3, inout vec3 light2, inout vec3 light3 ) {
 			vec3 c, d;
-			float coverage = sssFarGroupsAt( texel, c, d );
+			float depth;
+			float coverage = sssFarGroupsAt( texel, c, d, depth );
 			if ( ! ( coverage > 0.0 ) ) return 0.0;
 			float farness;
-			float weight = share * sssTexelRule( texel, coverage, expectedDepth, farness );
+			float weight = share * sssGroupTexelRule( texel, coverage, depth, expectedDepth, farness );
 			#if FOLLOW_SURFACE == FOLLOW_SURFACE_LERP
 				c = mix( c, centre2, farness );
 				d = mix( d, centre3, farness );
@@ -318,7 +330,7 @@ vec3 sssNormalised( const in vec3 sum, const in vec3 weightSum, const in vec3 fa
 #if AXIS == 0
 	// A pixel that does no work (its kernel under half a pixel): its light split by the groups'
 	// shares of the profile's energy.
-	void sssWriteUnblurred( const in vec3 centre, const in float coverage ) {
+	void sssWriteUnblurred( const in vec3 centre, const in float coverage, const in float depth ) {
 		int first = SSS_GROUP_SLOT * SSS_MAX_GROUPS;
 		#if SSS_GROUPS > 2
 			vec3 energy2 = groupEnergies[ first + 2 ];
@@ -330,7 +342,7 @@ vec3 sssNormalised( const in vec3 sum, const in vec3 weightSum, const in vec3 fa
 		#else
 			vec3 energy2 = vec3( 0.0 ), energy3 = vec3( 0.0 );
 		#endif
-		sssWriteGroups( centre * groupEnergies[ first ], centre * groupEnergies[ first + 1 ], centre * energy2, centre * energy3, coverage );
+		sssWriteGroups( centre * groupEnergies[ first ], centre * groupEnergies[ first + 1 ], centre * energy2, centre * energy3, coverage, depth );
 	}
 #endif
 
@@ -347,12 +359,13 @@ void main() {
 		vec3 centre = pixelCentre.colour;
 		// Not a subsurface pixel: nothing (the diffuse attachment is 0 there), the mask kept.
 		if ( ! ( coverage > 0.0 ) ) {
-			sssWriteGroups( vec3( 0.0 ), vec3( 0.0 ), vec3( 0.0 ), vec3( 0.0 ), 0.0 );
+			sssWriteGroups( vec3( 0.0 ), vec3( 0.0 ), vec3( 0.0 ), vec3( 0.0 ), 0.0, 0.0 );
 			return;
 		}
 	#else
 		vec3 centre0, centre1, centre2, centre3;
-		float coverage = sssGroupsAt( pixel, centre0, centre1, centre2, centre3 );
+		float carriedDepth; // the surface is read below: the centre needs its width too
+		float coverage = sssGroupsAt( pixel, centre0, centre1, centre2, centre3, carriedDepth );
 		vec2 surface = sssUncovered( texelFetch( tSurface, pixel, 0 ).rg, coverage );
 		vec3 unblurred = centre0 + centre1 + centre2 + centre3;
 		if ( ! ( coverage > 0.0 ) ) {
@@ -369,7 +382,7 @@ void main() {
 	// Below half a pixel the kernel cannot move light to another pixel: no work.
 	if ( ! ( stepPx * kernelRadiusMm >= SSS_MIN_KERNEL_PIXELS ) ) {
 		#if AXIS == 0
-			sssWriteUnblurred( centre, coverage );
+			sssWriteUnblurred( centre, coverage, surface.r );
 		#else
 			gl_FragColor = sssCovered( unblurred, coverage );
 		#endif
@@ -472,7 +485,7 @@ void main() {
 	#if AXIS == 0
 		vec3 planned = planned0 + planned1 + planned2 + planned3;
 		if ( ! all( greaterThan( planned, vec3( 0.0 ) ) ) ) { // the centre's own weight is 0 only past float range
-			sssWriteUnblurred( centre, coverage );
+			sssWriteUnblurred( centre, coverage, surface.r );
 			return;
 		}
 		// Group g: its light normalised over its own kept weight (the one-kernel blur's rule, per
@@ -489,8 +502,8 @@ void main() {
 			light2 = planned2 * inverse * mix( centre, sssNormalised( sum2, weightSum2, centre ), strength );
 			light3 = planned3 * inverse * mix( centre, sssNormalised( sum3, weightSum3, centre ), strength );
 		#endif
-		if ( sssFinite( light0 + light1 + light2 + light3 ) ) sssWriteGroups( light0, light1, light2, light3, coverage );
-		else sssWriteUnblurred( centre, coverage );
+		if ( sssFinite( light0 + light1 + light2 + light3 ) ) sssWriteGroups( light0, light1, light2, light3, coverage, surface.r );
+		else sssWriteUnblurred( centre, coverage, surface.r );
 	#else
 		vec3 blurred = sssNormalised( sum0, weightSum0, centre0 ) + sssNormalised( sum1, weightSum1, centre1 );
 		#if SSS_GROUPS > 2

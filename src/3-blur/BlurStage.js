@@ -100,6 +100,7 @@ export class BlurStage {
     this.confineToSubsurface = true;
     this._skipsEmptyTexels = true;
     this.lightCarriesDepth = true;
+    this.groupsCarryDepth = true;
     this._scissorKey = null; // the box the targets were last scissored to ('full' or x,y,w,h)
     /** The kernel the separable passes hold (computeKernel's layout). */
     this.kernel = firstKernel;
@@ -154,6 +155,21 @@ export class BlurStage {
     this.horizontalPass.setWritesDepth(enabled);
     this._applyCoverage();
     if (setTextureType(this._blurTarget, this._blurTarget.texture, enabled ? FloatType : this._type)) this._scissorKey = null; // cleared again
+  }
+
+  /**
+   * Documented-internal switch (issue 20's cost; the bench undoes it for one measure): true
+   * (default) has the isotropic blur's groups carry the depth between the passes without MSAA (the
+   * group target's alphas hold it instead of the coverage, which is 1 on the mask there), so a
+   * vertical tap reads the groups' texels and no surface texel; false reads the surface, as before.
+   * With MSAA the coverage is needed and the surface is read either way. The same image.
+   * @type {boolean}
+   */
+  get groupsCarryDepth() { return this.horizontalPass.groupsCarryDepth; }
+
+  set groupsCarryDepth(enabled) {
+    checkBoolean('BlurStage.groupsCarryDepth', enabled);
+    for (const pass of [this.horizontalPass, this.verticalPass]) pass.setGroupsCarryDepth(enabled);
   }
 
   /**

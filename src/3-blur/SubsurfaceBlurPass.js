@@ -92,7 +92,7 @@ export class SubsurfaceBlurPass extends SurfacePass {
       name: `SubsurfaceBlurPass(${direction})`,
       fragmentShader: blurGlsl,
       chunks: CHUNKS,
-      defines: { AXIS: DIRECTIONS.indexOf(direction), SAMPLES: 1, SSS_SKIP_EMPTY_TEXELS: 1, SSS_WRITES_DEPTH: 0, SSS_GROUPS: 1, SSS_MAX_GROUPS: MAX_KERNEL_GROUPS, ...FOOTPRINT_DEFINES, ...enumDefines('KERNEL_MODE', KERNEL_MODES, mode) },
+      defines: { AXIS: DIRECTIONS.indexOf(direction), SAMPLES: 1, SSS_SKIP_EMPTY_TEXELS: 1, SSS_WRITES_DEPTH: 0, SSS_GROUPS_CARRY_DEPTH: 0, SSS_GROUPS: 1, SSS_MAX_GROUPS: MAX_KERNEL_GROUPS, ...FOOTPRINT_DEFINES, ...enumDefines('KERNEL_MODE', KERNEL_MODES, mode) },
       uniforms: {
         kernel: { value: new Float32Array(4) },
         tapCount: { value: 1 },
@@ -168,6 +168,20 @@ export class SubsurfaceBlurPass extends SurfacePass {
     setDefines(this.material, { SSS_WRITES_DEPTH: enabled ? 1 : 0 });
     this.writesDepth = enabled;
   }
+
+  /**
+   * The isotropic blur's groups (SSS_GROUPS > 1) without MSAA: whether the group target's alphas
+   * carry the centre's depth instead of the coverage (shaders/3-blur/kernelGroups.glsl), so the
+   * vertical pass's taps read no surface texel. Both passes must agree (BlurStage sets them).
+   * @param {boolean} enabled
+   */
+  setGroupsCarryDepth(enabled) {
+    checkBoolean('SubsurfaceBlurPass.setGroupsCarryDepth enabled', enabled);
+    setDefines(this.material, { SSS_GROUPS_CARRY_DEPTH: enabled ? 1 : 0 });
+  }
+
+  /** Whether the groups carry the depth (setGroupsCarryDepth). */
+  get groupsCarryDepth() { return this.material.defines.SSS_GROUPS_CARRY_DEPTH === 1; }
 
   /** The material of this frame's groups: `material`, or its variant for the count (defines synced, uniforms shared). */
   _groupMaterial() {

@@ -80,6 +80,7 @@ function renderVariants(variants) {
       diffuse: await read(renderer, sss.scenePass.renderTarget, 1),
       box: sss.scenePass.subsurfaceBox,
       blur: sss.plan.blur,
+      groups: sss.plan.groups,
     };
     sss.dispose();
     composer.dispose();
@@ -125,11 +126,16 @@ const VARIANTS = {
   // about an ulp, not exactly (ROUNDED).
   msaaDepthFromSurface: { multisampling: 4, switches: { 'blur.lightCarriesDepth': false }, rounded: true },
   msaaMaskFromDiffuse: { multisampling: 4, switches: { 'compose.maskFromScattered': false } },
+  // The isotropic blur (four groups), against its own frame: the groups' depth from the surface.
+  isotropic: { switches: { 'pipeline.kernelGroups': 4 }, base: true },
+  isotropicDepthFromSurface: { switches: { 'pipeline.kernelGroups': 4, 'blur.groupsCarryDepth': false }, against: 'isotropic' },
+  msaaIsotropic: { multisampling: 4, switches: { 'pipeline.kernelGroups': 4 }, base: true },
+  msaaIsotropicDepthFromSurface: { multisampling: 4, switches: { 'pipeline.kernelGroups': 4, 'blur.groupsCarryDepth': false }, against: 'msaaIsotropic' },
 };
 /** What a rounded variant may differ by, relative to the lit level (float32: a few ulps). */
 const ROUNDED = 1e-6;
 /** The frame a variant is held against: the MSAA one with every saving for MSAA variants. */
-const baseOf = (name) => (VARIANTS[name].multisampling > 0 ? 'msaa' : 'saving');
+const baseOf = (name) => VARIANTS[name].against ?? (VARIANTS[name].multisampling > 0 ? 'msaa' : 'saving');
 
 const maxDifference = (a, b) => {
   let worst = 0;
@@ -163,6 +169,12 @@ describe('issue 19: each saving leaves the image as it is', () => {
     expect(maxDifference(r[name].output, base.output)).toBeLessThanOrEqual(tolerance);
     expect(maxDifference(r[name].scattered, base.scattered)).toBeLessThanOrEqual(tolerance);
     if (VARIANTS[name].rounded) expect(Math.max(...base.scattered)).toBeGreaterThan(0.05); // lit: the tolerance is not 0 by accident
+  });
+
+  it('the isotropic variants blur in four groups (what groupsCarryDepth is about), and differ from one kernel', () => {
+    for (const name of ['isotropic', 'isotropicDepthFromSurface', 'msaaIsotropic', 'msaaIsotropicDepthFromSurface']) expect(r[name].groups, name).toBe(4);
+    expect(r.saving.groups).toBe(1);
+    expect(maxDifference(r.isotropic.scattered, r.saving.scattered)).toBeGreaterThan(1e-3);
   });
 
   it('with MSAA, the transparent pane is hidden behind the front sphere and seen over the floor (the depth resolved once is the scene\'s)', () => {

@@ -51,16 +51,22 @@ describe('cost model', () => {
     expect(apart.total.written + apart.total.read).toBeLessThan(t.total.written + t.total.read);
   });
 
-  it('the isotropic groups: the horizontal pass writes 32 B (two RGBA32UI), the vertical one reads 32 B of light per texel', () => {
+  it('the isotropic groups: the horizontal pass writes 32 B (two RGBA32UI), the vertical one reads 32 B of light per texel and, with the depth in their alphas, no surface', () => {
     const s = 0.25;
     const scene = { subsurface: s, box: 0.5, taps: 9 };
     const grouped = frameTraffic(ISOTROPIC, scene);
     const one = frameTraffic(AFTER, scene);
     expect(grouped.blurH.written).toBeCloseTo(0.5 * 32, 12);
     expect(grouped.blurH.fetched).toBeCloseTo(one.blurH.fetched, 12); // it reads the diffuse light as before
-    // Vertical: centre 32 + 8, slope 2 × 8, 8 taps × 2 texels × (32 + 8).
-    expect(grouped.blurV.fetched).toBeCloseTo(0.5 * 40 + s * (16 + 8 * 2 * 40), 12);
+    // Vertical: centre 32 + 8, slope 2 × 8, 8 taps × 2 texels × 32 (the groups carry the depth:
+    // no surface per tap); fetch instructions: centre 2, slope 2, 16 texels × 2 attachments, tables 12.
+    expect(grouped.blurV.fetched).toBeCloseTo(0.5 * 40 + s * (16 + 8 * 2 * 32), 12);
+    expect(grouped.blurV.fetches).toBeCloseTo(0.5 * 2 + s * (2 + 16 * 2 + 12), 12);
     expect(grouped.blurV.written).toBe(one.blurV.written);
+    // Without it (as before): a surface texel more per tap texel.
+    const surfaceRead = frameTraffic({ ...ISOTROPIC, groupsCarryDepth: false }, scene);
+    expect(surfaceRead.blurV.fetched).toBeCloseTo(0.5 * 40 + s * (16 + 8 * 2 * 40), 12);
+    expect(surfaceRead.blurV.fetches - grouped.blurV.fetches).toBeCloseTo(s * 16, 12);
   });
 
   it('the depth carried in the light: the same bytes a vertical tap reads, in one fetch instead of two; 8 B more written and read per box pixel', () => {

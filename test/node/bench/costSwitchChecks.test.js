@@ -12,6 +12,9 @@ describe('issue 19 switches', () => {
     [sss.blur, 'confineToSubsurface', true],
     [sss.composePass, 'writesDepth', true],
     [sss.composePass, 'fetchesEverywhere', false],
+    [sss.blur, 'skipsEmptyTexels', true],
+    [sss.blur, 'lightCarriesDepth', true],
+    [sss.blur, 'groupsCarryDepth', true],
   ];
 
   it.each(switches.map(([owner, field, value]) => [field, owner, value]))('%s: defaults to the saving, takes booleans only', (field, owner, value) => {
@@ -21,6 +24,13 @@ describe('issue 19 switches', () => {
     owner[field] = !value;
     expect(owner[field]).toBe(!value);
     owner[field] = value;
+  });
+
+  it('the groups\' carried depth reaches both blur passes', () => {
+    sss.blur.groupsCarryDepth = false;
+    expect([sss.blur.horizontalPass, sss.blur.verticalPass].map((p) => p.material.defines.SSS_GROUPS_CARRY_DEPTH)).toEqual([0, 0]);
+    sss.blur.groupsCarryDepth = true;
+    expect([sss.blur.horizontalPass, sss.blur.verticalPass].map((p) => p.material.defines.SSS_GROUPS_CARRY_DEPTH)).toEqual([1, 1]);
   });
 
   it('the compose\'s switches reach its material', () => {
