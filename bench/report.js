@@ -5,7 +5,7 @@ import { surfaceTruthSummary } from './surfaceTruth/report.js';
 import {
   autoAgainstFixed, deviceName, dominates, isDefaultSetting, median, paretoFront, percent as pct, ratio, rowsOf, SAME_ERROR, SATURATION, settingName, spread, table,
 } from './analysis.js';
-import { MEASURED_BY_ABSENCE } from './peerPlan.js';
+import { MEASURED_BY_ABSENCE, undoneAgainst } from './peerPlan.js';
 const MAIN = { scene: 'head', resolution: '1280x720' };
 
 /** The series a row belongs to on the chart. */
@@ -244,7 +244,7 @@ function optimizationsSection(json) {
   const rounds = block.features;
   const plain = median(rounds.map((r) => r.none.threePlain.timerMs));
   // An optimization of the MSAA path is held against the MSAA frame with it (msaa4).
-  const baseOf = (feature) => (feature.startsWith('msaa') ? 'msaa4' : 'none');
+  const baseOf = undoneAgainst;
   const saved = (feature, f) => spread(rounds.map((r) => f(r[feature].stages) - f(r[baseOf(feature)].stages)));
   const range = (x, digits = 1) => `${x.median.toFixed(digits)} ms (${x.min.toFixed(digits)} to ${x.max.toFixed(digits)})`;
   const plainCpu = median(rounds.map((r) => r.none.threePlain.cpuMs));
@@ -261,6 +261,7 @@ function optimizationsSection(json) {
     ['depthFromSurface', ['blurV'], 'the horizontal blur hands the depth on in its light\'s alpha (a float target), so a vertical tap fetches one texel, not two (light and surface; `blur.lightCarriesDepth`)'],
     ['maskInDiffuse', ['scene', 'blurH', 'compose'], 'the diffuse attachment carries the depth in its alpha (float, without MSAA), so a horizontal tap fetches one texel, not two (`scenePass.diffuseCarriesDepth`)'],
     ['maskFromDiffuse', ['compose'], 'the compose reads the mask from the scattered light\'s alpha inside the subsurface pixels\' box, and nothing outside it (`composePass.maskFromScattered`)'],
+    ['isotropicDepthFromSurface', ['blurV'], 'the isotropic blur\'s groups carry the depth between the passes (the group target\'s alphas, without MSAA), so a vertical tap reads no surface texel (`blur.groupsCarryDepth`; against the isotropic frame)'],
     ['msaaDepthResolvedTwice', ['scene'], 'with MSAA 4, the scene split\'s depth resolved once, after its second call (three resolved it after each call, once per attachment; `scenePass.resolvesDepthOnce`)'],
   ].filter(([feature]) => rounds.every((r) => r[feature] && r[baseOf(feature)]));
   const cpuSaved = (feature) => (rounds.every((r) => Number.isFinite(r[feature].cpuMs) && Number.isFinite(r[baseOf(feature)].cpuMs))
@@ -280,7 +281,7 @@ function optimizationsSection(json) {
   }
   lines.push('', 'Also in the first one\'s commit: the materials read the light depth map and the profile only where the wrap weight is above 0 (nowhere on the front-lit head); the bench cannot undo it, so it is not measured apart.', '',
     'Not tried yet: the thickness from the shadow map instead of a second render from the light (on the head the pass is skipped anyway), the compose fused into the last blur, fewer and smaller attachments (the surface from the depth texture and a half-float width), the colour attachments resolved once with MSAA (three resolves every attachment after each of the split\'s two calls; only the depth could be held back through its API; an A/B that hid the diffuse and surface attachments from three during the first call, a hack not kept, saved 10 % of the MSAA scene split: 597 → 538 ms, a flat plane at 1280×720, 6 rounds), and bilinear taps away from edges.', '',
-    'Tried on the blur\'s fetches and not kept (2026-12-02; a scratch harness, not the bench: both blurs re-run over the head\'s scene split at 1280×720, variants interleaved, 5 rounds of 5 re-runs each unless said, stage-timer medians). '
+    'Tried on the blur\'s fetches and not kept (2026-12-02; a scratch harness, not the bench: both blurs re-run over the scene split of the bench\'s head scene at 1280×720, which for these runs held the stand-in bust, the scan\'s files not being in public/assets; variants interleaved, 5 rounds of 5 re-runs each unless said, stage-timer medians). '
     + 'The machine\'s speed moved by up to ±25 % between runs within the hour (the same horizontal pass took 90 to 149 ms), so only differences inside one run are read, and those under about 10 % are not resolved. '
     + 'Where the time goes, by hacks that change the image: G(x) read from one nearest texel instead of two interpolated ones saves 21 % and 22 % of the horizontal pass in two runs (174 → 137 ms, 166 → 129 ms) and 20 % of the vertical (207 → 165, 208 → 157 ms); skipping every tap\'s second texel saves 38 % and 33 % (174 → 107 ms, 207 → 139 ms). '
     + 'Exact ways to fewer fetches, none faster here: both ends of G(x)\'s interval packed in one RGBA32UI texel (21-bit fixed point, within 1.2e-7 of the float table), slower in each of three runs (4-10 % per pass: the unpacking costs more than the fetch it saves); the footprint table two footprints to an RGBA texel (horizontal 105 → 112 ms, vertical 128 → 129 ms); the float table filtered by the sampler (`texture()`, OES_texture_float_linear: an optional extension, and GPUs interpolate with 8-bit weights), 3 % and 6 %, not resolved; G(x) in closed form for the Gaussian-sum profiles (six erf), 84 % and 60 % slower; the light between the passes stored transposed so that the vertical taps step along texture rows, 34 % and 30 % slower (142 → 190 ms, 159 → 207 ms): the vertical pass is not slower for its memory layout. '
