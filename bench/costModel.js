@@ -94,22 +94,23 @@ const stage = (written, read, fetched = read, fetches = 0) => ({ written, read, 
  * A blur pass over `area` of the frame, `subsurface` of it on the mask, `taps` per direction,
  * reading `surface` bytes per texel for the surface (the attachment, or the depth texture).
  */
-function blurPass(area, subsurface, taps, surface, centred = 0, { input = RGBA16F, output = RGBA16F, carried = false, lightFetches = 1 } = {}) {
+function blurPass(area, subsurface, taps, surface, centred = 0, { input = RGBA16F, output = RGBA16F, carried = false, lightFetches = 1, grouped = false } = {}) {
   // Every pixel reads its centre (the light, surface) and writes its result; a mask pixel also
   // reads its two neighbours' surface (the slope) and, per tap, two texels of light and surface
   // (one for the `centred` taps on a texel centre). `input`, `output`: bytes per texel of the light
   // read and written (the isotropic groups between the passes: 32); `carried`: the light holds the
   // depth, so a tap reads no surface; `lightFetches`: fetch instructions per light texel (the
-  // isotropic groups' two attachments: 2).
+  // isotropic groups' two attachments: 2); `grouped`: the isotropic blur's passes also fetch the
+  // group fractions, for the centre, the near count and each footprint (a small table: no bytes).
   // `taps` counts the centre: (taps − 1) / 2 footprints a side, each one tap between two texels.
   const centre = input + surface;
   const texels = 2 * (taps - 1) - centred;
   const perMaskPixel = 2 * surface + texels * (input + (carried ? 0 : surface));
-  // Fetch instructions: the centre's two, the slope's two, each tap texel's light and surface, and the
+  // Fetch instructions: the centre's light and surface, the slope's two, each tap texel's light and surface, and the
   // footprint loop's tables: the centre's energy (two profile texels), then per footprint its
   // table texel and two profile texels, but the last (the tail takes the energy left): 3 (taps − 1) / 2.
-  const tables = 3 * (taps - 1) / 2;
-  const fetches = area * 2 + subsurface * (2 + texels * (lightFetches + (carried ? 0 : 1)) + tables);
+  const tables = 3 * (taps - 1) / 2 + (grouped ? 2 + (taps - 1) / 2 : 0);
+  const fetches = area * (lightFetches + 1) + subsurface * (2 + texels * (lightFetches + (carried ? 0 : 1)) + tables);
   return stage(area * output, area * centre, area * centre + subsurface * perMaskPixel, fetches);
 }
 
@@ -143,13 +144,13 @@ export function frameTraffic(switches, { subsurface, box, ordinary = 0, taps, ce
   // The depth between the passes: in the light (one kernel), in the groups' alphas (groupsCarryDepth).
   const carried = grouped ? switches.groupsCarryDepth === true : switches.lightCarriesDepth === true;
   const between = grouped ? 2 * TEXEL_BYTES.rgba32ui : carried ? TEXEL_BYTES.rgba32f : RGBA16F; // the light between the passes
-  const blurH = blurPass(area, s, taps, surface, skipped, { input: diffuse, output: between, carried: switches.diffuseCarriesDepth === true });
+  const blurH = blurPass(area, s, taps, surface, skipped, { input: diffuse, output: between, carried: switches.diffuseCarriesDepth === true, grouped });
   // Compose: depth and colour at every pixel; the scattered light (its alpha the mask) in the box
   // (composeMaskFromScattered), or the diffuse (its mask) at every pixel and the scattered light on
   // the mask, or everything everywhere with the surface (as before issue 10); out: colour and depth.
   const everywhere = switches.fetchesEverywhere ? 1 : 0;
   const composeRead = DEPTH + RGBA16F + (everywhere ? diffuse + RGBA16F + RG32F : switches.composeMaskFromScattered ? box * RGBA16F : diffuse + s * RGBA16F);
-  let blurV = blurPass(area, s, taps, surface, skipped, { input: between, carried, lightFetches: grouped ? 2 : 1 });
+  let blurV = blurPass(area, s, taps, surface, skipped, { input: between, carried, lightFetches: grouped ? 2 : 1, grouped });
   const composeFetches = 2 + (everywhere ? 3 : switches.composeMaskFromScattered ? box : 1 + s);
   let compose = stage(RGBA16F + DEPTH, composeRead, composeRead, composeFetches);
   if (switches.composeInBlur) {

@@ -261,7 +261,7 @@ function optimizationsSection(json) {
     ['depthFromSurface', ['blurV'], 'the horizontal blur hands the depth on in its light\'s alpha (a float target), so a vertical tap fetches one texel, not two (light and surface; `blur.lightCarriesDepth`)'],
     ['maskInDiffuse', ['scene', 'blurH', 'compose'], 'the diffuse attachment carries the depth in its alpha (float, without MSAA), so a horizontal tap fetches one texel, not two (`scenePass.diffuseCarriesDepth`)'],
     ['maskFromDiffuse', ['compose'], 'the compose reads the mask from the scattered light\'s alpha inside the subsurface pixels\' box, and nothing outside it (`composePass.maskFromScattered`)'],
-    ['isotropicDepthFromSurface', ['blurV'], 'the isotropic blur\'s groups carry the depth between the passes (the group target\'s alphas, without MSAA), so a vertical tap reads no surface texel (`blur.groupsCarryDepth`; against the isotropic frame)'],
+    ['isotropicDepthFromSurface', ['blurV'], 'the isotropic blur\'s groups carry the depth between the passes (the group target\'s alphas, without MSAA), so a vertical tap reads no surface texel with one profile (`blur.groupsCarryDepth`; against the isotropic frame)'],
     ['msaaDepthResolvedTwice', ['scene'], 'with MSAA 4, the scene split\'s depth resolved once, after its second call (three resolved it after each call, once per attachment; `scenePass.resolvesDepthOnce`)'],
   ].filter(([feature]) => rounds.every((r) => r[feature] && r[baseOf(feature)]));
   const cpuSaved = (feature) => (rounds.every((r) => Number.isFinite(r[feature].cpuMs) && Number.isFinite(r[baseOf(feature)].cpuMs))

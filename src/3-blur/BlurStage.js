@@ -161,7 +161,8 @@ export class BlurStage {
    * Documented-internal switch (issue 20's cost; the bench undoes it for one measure): true
    * (default) has the isotropic blur's groups carry the depth between the passes without MSAA (the
    * group target's alphas hold it instead of the coverage, which is 1 on the mask there), so a
-   * vertical tap reads the groups' texels and no surface texel; false reads the surface, as before.
+   * vertical tap reads the groups' texels and, with one profile, no surface texel (several still
+   * read it for the slot); false reads the surface, as before.
    * With MSAA the coverage is needed and the surface is read either way. The same image.
    * @type {boolean}
    */

@@ -81,6 +81,8 @@ function renderVariants(variants) {
       box: sss.scenePass.subsurfaceBox,
       blur: sss.plan.blur,
       groups: sss.plan.groups,
+      // The groups' programs (both passes) as compiled: whether they carry the depth.
+      groupsCarry: [sss.blur.horizontalPass, sss.blur.verticalPass].flatMap((pass) => [...pass._groupMaterials.values()].map((m) => m.defines.SSS_GROUPS_CARRY_DEPTH)),
     };
     sss.dispose();
     composer.dispose();
@@ -173,6 +175,11 @@ describe('issue 19: each saving leaves the image as it is', () => {
 
   it('the isotropic variants blur in four groups (what groupsCarryDepth is about), and differ from one kernel', () => {
     for (const name of ['isotropic', 'isotropicDepthFromSurface', 'msaaIsotropic', 'msaaIsotropicDepthFromSurface']) expect(r[name].groups, name).toBe(4);
+    // The switch reaches the groups' own programs, which are what the comparison is about (with
+    // MSAA the shader ignores it: the coverage is needed there, and the variant checks that).
+    expect(r.isotropic.groupsCarry.length).toBeGreaterThanOrEqual(2);
+    expect(r.isotropic.groupsCarry.every((v) => v === 1)).toBe(true);
+    expect(r.isotropicDepthFromSurface.groupsCarry.every((v) => v === 0)).toBe(true);
     expect(r.saving.groups).toBe(1);
     expect(maxDifference(r.isotropic.scattered, r.saving.scattered)).toBeGreaterThan(1e-3);
   });

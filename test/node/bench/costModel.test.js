@@ -59,9 +59,12 @@ describe('cost model', () => {
     expect(grouped.blurH.written).toBeCloseTo(0.5 * 32, 12);
     expect(grouped.blurH.fetched).toBeCloseTo(one.blurH.fetched, 12); // it reads the diffuse light as before
     // Vertical: centre 32 + 8, slope 2 × 8, 8 taps × 2 texels × 32 (the groups carry the depth:
-    // no surface per tap); fetch instructions: centre 2, slope 2, 16 texels × 2 attachments, tables 12.
+    // no surface per tap); fetch instructions: centre 3 (two attachments, the surface), slope 2,
+    // 16 texels × 2 attachments, tables 12 (profile, footprints) + 6 (fractions: centre, near
+    // count, 4 footprints).
     expect(grouped.blurV.fetched).toBeCloseTo(0.5 * 40 + s * (16 + 8 * 2 * 32), 12);
-    expect(grouped.blurV.fetches).toBeCloseTo(0.5 * 2 + s * (2 + 16 * 2 + 12), 12);
+    expect(grouped.blurV.fetches).toBeCloseTo(0.5 * 3 + s * (2 + 16 * 2 + 12 + 6), 12);
+    expect(grouped.blurH.fetches - one.blurH.fetches).toBeCloseTo(s * 6, 12); // the fractions
     expect(grouped.blurV.written).toBe(one.blurV.written);
     // Without it (as before): a surface texel more per tap texel.
     const surfaceRead = frameTraffic({ ...ISOTROPIC, groupsCarryDepth: false }, scene);
