@@ -1,5 +1,11 @@
-// Stage 1 (light pass): writes the linear light depth (world units) into a single-channel float
-// target. The target is cleared to 0, which the transmittance lookup reads as "no surface".
+// Stage 1 (light pass): writes the linear light depth (world units) and the entry cosine into a
+// two-channel float target. The target is cleared to 0, which the transmittance lookup reads as
+// "no surface".
+// The entry cosine, |N·L| at the surface the light meets first, is the share of the light's
+// irradiance that enters there (Dachsbacher and Stamminger 2003's translucent shadow maps store
+// the irradiance for the same reason): where the light grazes the surface, near the terminator as
+// the light sees it, little enters, and the transmittance behind it is that much weaker. |N·L|:
+// the pass draws both sides, and an open shell's back face lets in as much as its front.
 // A cut-out material's alpha test and clipping planes apply as in its own pass (three defines
 // USE_MAP, USE_ALPHAMAP and USE_ALPHATEST from the fields LightDepthTarget copies).
 #include <common>
@@ -14,6 +20,8 @@
 #endif
 
 varying float vLightDepth;
+varying vec3 vLightViewNormal;   // light view space, not normalised
+varying vec3 vLightViewPosition; // light view space
 
 void main() {
 	#include <clipping_planes_fragment>
@@ -23,5 +31,10 @@ void main() {
 		#include <alphamap_fragment>
 		#include <alphatest_fragment>
 	#endif
-	gl_FragColor = vec4( vLightDepth, 0.0, 0.0, 1.0 );
+	// Towards the light: the view axis for a directional light (orthographic), the eye for a spot.
+	vec3 toLight = isOrthographic ? vec3( 0.0, 0.0, 1.0 ) : normalize( - vLightViewPosition );
+	float normalLength = length( vLightViewNormal );
+	// A mesh without normals lets the whole light in, as before the entry cosine.
+	float entry = normalLength > 0.0 ? abs( dot( vLightViewNormal / normalLength, toLight ) ) : 1.0;
+	gl_FragColor = vec4( vLightDepth, entry, 0.0, 1.0 );
 }

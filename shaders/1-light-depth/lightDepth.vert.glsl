@@ -1,4 +1,5 @@
-// Stage 1 (light pass): linear depth seen from the light.
+// Stage 1 (light pass): linear depth seen from the light, and the surface's vertex normal and
+// position in the light's view space for the fragment's entry cosine (lightDepth.frag.glsl).
 // Three's chunks keep skinned, morphed, instanced and batched meshes in step with the main pass.
 #include <common>
 #include <uv_pars_vertex>
@@ -8,11 +9,17 @@
 #include <clipping_planes_pars_vertex>
 
 varying float vLightDepth;
+varying vec3 vLightViewNormal;
+varying vec3 vLightViewPosition;
 
 void main() {
 	#include <uv_vertex>
 	#include <batching_vertex>
+	#include <beginnormal_vertex>
+	#include <morphnormal_vertex>
 	#include <skinbase_vertex>
+	#include <skinnormal_vertex>
+	#include <defaultnormal_vertex>
 	#include <begin_vertex>
 	#include <morphtarget_vertex>
 	#include <skinning_vertex>
@@ -21,4 +28,6 @@ void main() {
 	// Distance along the light's view axis (world units), for perspective and orthographic lights
 	// alike: linear, unlike the depth buffer, so thickness is a plain difference (Jimenez et al. 2010).
 	vLightDepth = -mvPosition.z;
+	vLightViewNormal = transformedNormal;
+	vLightViewPosition = mvPosition.xyz;
 }

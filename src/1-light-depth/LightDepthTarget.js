@@ -1,8 +1,9 @@
 // Stage 1: linear depth seen from the light, for transmittance (Jimenez et al. 2010). Unlike a
 // shadow map it stores distance along the light's view axis in world units, so the thickness of
-// an object is a plain difference of two depths.
+// an object is a plain difference of two depths, and beside it the entry cosine |N·L| of the
+// surface the light meets first (shaders/1-light-depth/lightDepth.frag.glsl).
 import {
-  DoubleSide, FloatType, Matrix3, NearestFilter, RedFormat, ShaderMaterial, WebGLRenderTarget,
+  DoubleSide, FloatType, Matrix3, NearestFilter, RGFormat, ShaderMaterial, WebGLRenderTarget,
 } from 'three';
 import vertexShader from '../../shaders/1-light-depth/lightDepth.vert.glsl?raw';
 import fragmentShader from '../../shaders/1-light-depth/lightDepth.frag.glsl?raw';
@@ -21,7 +22,8 @@ function uvTransform(texture, into) {
 
 /**
  * Renders the scene from a SpotLight (perspective) or DirectionalLight (orthographic) into a
- * single-channel float target of linear depth in world units. 0 means "no surface".
+ * two-channel float target: r the linear depth in world units (0 means "no surface"), g the entry
+ * cosine |N·L| there (0..1).
  * The camera follows the light (position, target, angle) on every `render` (LightDepthView).
  */
 export class LightDepthTarget extends LightDepthView {
@@ -43,8 +45,8 @@ export class LightDepthTarget extends LightDepthView {
     });
     this.renderTarget = new WebGLRenderTarget(1, 1, {
       type: FloatType,
-      format: RedFormat,
-      minFilter: NearestFilter, // R32F is not filterable everywhere
+      format: RGFormat,
+      minFilter: NearestFilter, // RG32F is not filterable everywhere
       magFilter: NearestFilter,
       depthBuffer: true,
     });

@@ -156,7 +156,9 @@ const SCENES = {
     // With `spot`, a spot light off the axis (decay 2, its intensity scaled to give the directional
     // light's irradiance at the slab's middle) whose cone edge crosses the view.
     const light = o.spot ? new THREE.SpotLight(0xffffff, o.intensity * 113, 0, Math.PI / 12, 0.5, 2) : new THREE.DirectionalLight(0xffffff, o.intensity);
-    light.position.set(o.spot ? 3 : 0, o.spot ? 2 : 0, -10);
+    // `lightAzimuthDeg`: the directional light turned about y from straight behind (an oblique entry).
+    const azimuth = ((o.lightAzimuthDeg ?? 0) * Math.PI) / 180;
+    light.position.set(o.spot ? 3 : 10 * Math.sin(azimuth), o.spot ? 2 : 0, -10 * Math.cos(azimuth));
     light.shadow.camera.left = light.shadow.camera.bottom = -o.slabSize;
     light.shadow.camera.right = light.shadow.camera.top = o.slabSize;
     light.shadow.camera.near = 1;

@@ -326,12 +326,13 @@ async function lightDepthCards({ backend = 'webgpu' }) {
   target.render(renderer, scene);
   const data = await renderer.readRenderTargetPixelsAsync(target.renderTarget, 0, 0, 64, 64);
   // Rows bottom-up, as the WebGL lab reads them (the WebGPU backend's are top-down).
-  const rows = renderer.backend.isWebGPUBackend ? Float32Array.from({ length: 64 * 64 }, (_, i) => data[(63 - Math.floor(i / 64)) * 64 + (i % 64)]) : data;
+  // Two channels per texel: depth, entry cosine.
+  const rows = renderer.backend.isWebGPUBackend ? Float32Array.from({ length: 64 * 64 * 2 }, (_, i) => data[((63 - Math.floor(i / 128)) * 64 + (Math.floor(i / 2) % 64)) * 2 + (i % 2)]) : data;
   const variants = target._shaped.size;
   mapped.material.dispose();
   const afterOneDisposed = target._shaped.size;
   target.dispose();
-  return { samples: window.lab.cardDepths(rows, 1), variants, afterOneDisposed, left: target._shaped.size };
+  return { samples: window.lab.cardDepths(rows, 2), variants, afterOneDisposed, left: target._shaped.size };
 }
 
 /** One of the WebGL lab's scenes drawn plainly by WebGPURenderer on `backend` (a scene pass, MSAA with `samples`), linear float RGBA. */

@@ -15,7 +15,9 @@
 			sssAttenuation = getSpotAttenuation( sssSpotConeCos, sssSpotPenumbraCos, dot( sssToLight, sssLightDirectionView ) )
 				* getDistanceAttenuation( sssLightDistance, sssLightCutoffDistance, sssLightDecay );
 		}
-		// Wrap lighting on the back side: saturate(0.3 + dot(-N, L)) (REFERENCE §5), for light that
+		// Wrap lighting on the back side, where the light leaves: saturate(0.3 + dot(-N, L)) (REFERENCE
+		// §5; the light's share that entered, the entry cosine, comes with the thickness from the
+		// map: transmittance.glsl), for light that
 		// comes from behind the point as the camera sees it (view space: +z points to the camera).
 		// The constants are src/2-scene-split/transmittanceModel.js's TRANSMITTED_LIGHT, as defines.
 		// Light from the camera's side reaches what the camera sees through its lit, visible

@@ -1,18 +1,25 @@
 // Stage 1 for WebGPURenderer: linear depth seen from the light, for transmittance, as the WebGL
 // path's LightDepthTarget (src/1-light-depth/LightDepthTarget.js) stores it: distance along the
-// light's view axis in world units, single-channel float, 0 = no surface. The camera and what the
+// light's view axis in world units, 0 = no surface, and the entry cosine |N·L| beside it, in a
+// two-channel float target. The camera and what the
 // light sees (and which materials keep their cut-out and clipping) are LightDepthView's, shared
 // with it; the depth materials are node materials, drawn in place of each object's through a
 // render object function (as three's shadow maps do).
 import { MeshBasicNodeMaterial, NodeMaterial, RenderTarget, RendererUtils } from 'three/webgpu';
-import { DoubleSide, FloatType, NearestFilter, RedFormat } from 'three';
-import { positionView, vec4 } from 'three/tsl';
+import { DoubleSide, FloatType, NearestFilter, RGFormat } from 'three';
+import { abs, dot, normalView, positionView, vec3, vec4 } from 'three/tsl';
 import { LightDepthView, boundsNoVolume } from '../../1-light-depth/LightDepthView.js';
 
 let _state;
 
-/** Distance along the light's view axis: linear, unlike the depth buffer (Jimenez et al. 2010). */
-const LIGHT_DEPTH = /*@__PURE__*/ vec4(positionView.z.negate(), 0, 0, 1);
+/**
+ * Distance along the light's view axis: linear, unlike the depth buffer (Jimenez et al. 2010); and
+ * the entry cosine |N·L| (shaders/1-light-depth/lightDepth.frag.glsl), towards the light along the
+ * view axis (directional: orthographic) or to the eye (spot). A texture channel for each.
+ */
+const lightDepthOutput = (toLight) => vec4(positionView.z.negate(), abs(dot(normalView, toLight)), 0, 1);
+/** The output for a light's camera: [perspective (spot), orthographic (directional)]. */
+const LIGHT_DEPTH = /*@__PURE__*/ [lightDepthOutput(positionView.negate().normalize()), lightDepthOutput(vec3(0, 0, 1))];
 
 /** A depth material's settings: both sides (thin open shells still record their nearest surface), no fog (it would blend the depths). */
 const asDepthMaterial = (material, name) => Object.assign(material, { name, side: DoubleSide, fog: false });
@@ -26,9 +33,9 @@ export class LightDepthNodeTarget extends LightDepthView {
   constructor(light, options = {}) {
     super('LightDepthNodeTarget', light, options);
     this.material = asDepthMaterial(new NodeMaterial(), 'LightDepthNodeMaterial');
-    this.material.fragmentNode = LIGHT_DEPTH;
+    this.material.fragmentNode = LIGHT_DEPTH[this.camera.isOrthographicCamera ? 1 : 0];
     this.renderTarget = new RenderTarget(1, 1, {
-      type: FloatType, format: RedFormat, minFilter: NearestFilter, magFilter: NearestFilter, depthBuffer: true,
+      type: FloatType, format: RGFormat, minFilter: NearestFilter, magFilter: NearestFilter, depthBuffer: true,
     });
     this.renderTarget.texture.name = 'LightDepthNodeTarget.texture';
     this.setSize(this.size);
@@ -64,7 +71,7 @@ export class LightDepthNodeTarget extends LightDepthView {
    */
   createShapedMaterial(material) {
     const shaped = asDepthMaterial(new MeshBasicNodeMaterial(), `LightDepthNodeMaterial(${material.name || material.type})`);
-    shaped.outputNode = LIGHT_DEPTH;
+    shaped.outputNode = LIGHT_DEPTH[this.camera.isOrthographicCamera ? 1 : 0];
     return shaped;
   }
 

@@ -59,7 +59,7 @@ function transmittanceFunctions(u) {
     return { inside, texel: uv.mul(vec2(size)) };
   };
   const lightDepthOf = (viewPosition) => u.sssViewToLightView.mul(vec4(viewPosition, 1)).z.negate();
-  /** sssTransmittance: T through the point, averaged over the four map texels around it with their bilinear weights. */
+  /** sssTransmittance: T through the point times the entry cosine, averaged over the four map texels around it with their bilinear weights. */
   const transmittance = (viewPosition, viewVertexNormal) => {
     const size = ivec2(textureSize(u.sssLightDepthMap, 0)).toVar();
     const { inside, texel } = mapPosition(viewPosition, viewVertexNormal, size);
@@ -70,9 +70,9 @@ function transmittanceFunctions(u) {
     const light = vec3(0).toVar();
     for (const [dx, dy] of [[0, 0], [1, 0], [0, 1], [1, 1]]) {
       const weight = (dx === 1 ? f.x : f.x.oneMinus()).mul(dy === 1 ? f.y : f.y.oneMinus());
-      const nearest = textureLoad(u.sssLightDepthMap, clamp(base.add(ivec2(dx, dy)), ivec2(0), size.sub(1))).r.toVar();
-      const thickness = depth.sub(nearest).toVar();
-      light.addAssign(select(nearest.greaterThan(0).and(thickness.greaterThan(0)), transmittanceProfile(thickness).mul(weight), vec3(0)));
+      const recorded = textureLoad(u.sssLightDepthMap, clamp(base.add(ivec2(dx, dy)), ivec2(0), size.sub(1))).rg.toVar(); // depth, entry cosine
+      const thickness = depth.sub(recorded.x).toVar();
+      light.addAssign(select(recorded.x.greaterThan(0).and(thickness.greaterThan(0)), transmittanceProfile(thickness).mul(weight.mul(recorded.y)), vec3(0)));
     }
     return select(inside, light, vec3(0));
   };
@@ -112,7 +112,7 @@ export function transmittedLight(u, { position, normal, albedo }) {
         attenuation.assign(smoothstep(u.sssSpotConeCos, u.sssSpotPenumbraCos, dot(toLight, u.sssLightDirectionView))
           .mul(getDistanceAttenuation({ lightDistance, cutoffDistance: u.sssLightCutoffDistance, decayExponent: u.sssLightDecay })));
       });
-      // Wrap lighting on the back side, for light from behind the point as the camera sees it.
+      // Wrap lighting on the back side, where the light leaves (the entry cosine comes from the map), for light from behind the point as the camera sees it.
       const wrap = saturate(dot(normal.negate(), toLight).add(TRANSMITTED_LIGHT.WRAP_OFFSET))
         .mul(smoothstep(0, TRANSMITTED_LIGHT.FROM_BEHIND_RANGE, toLight.z.negate()));
       const weight = attenuation.mul(wrap).toVar();

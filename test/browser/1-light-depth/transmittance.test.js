@@ -35,11 +35,37 @@ function expected(thicknessMm) {
   return transmittedFractionOracle({ thicknessMm: thicknessWorld * WORLD_UNIT_IN_MM, profile: 'skin', shrinkMm: SHRINK_MM, towardLightViewZ: -1 });
 }
 
-async function backlit(thicknessMm) {
+async function backlit(thicknessMm, lightAzimuthDeg = 0) {
   return runLab(page, {
     scene: 'backlit', thicknessMm, worldUnitInMm: WORLD_UNIT_IN_MM, transmittance: true, type: 'float',
-    material: { shrinkMm: SHRINK_MM }, reads: ['diffuse', 'output'],
+    material: { shrinkMm: SHRINK_MM }, reads: ['diffuse', 'output'], lightAzimuthDeg,
   });
+}
+
+/**
+ * The oracle for the slab lit from behind at `azimuthDeg` about y: the light crosses the chord
+ * d / cos a to the point; of its irradiance cos a enters at the back face (the entry cosine), and
+ * the reference's wrap at the exit is saturate(0.3 + cos a) (REFERENCE §5).
+ */
+function expectedOblique(thicknessMm, azimuthDeg) {
+  const a = (azimuthDeg * Math.PI) / 180;
+  const half = thicknessMm / WORLD_UNIT_IN_MM / 2;
+  if (SHRINK_MM >= thicknessMm) throw new RangeError('expectedOblique: the shrink must stay inside the slab');
+  const toLight = [Math.sin(a), 0, -Math.cos(a)];
+  const lightView = mat4.lookAt(new Float64Array(16), [10 * toLight[0], 0, 10 * toLight[2]], [0, 0, 0], [0, 1, 0]);
+  const point = [0.3, -0.2, half];
+  const shrink = SHRINK_MM / WORLD_UNIT_IN_MM;
+  const thicknessWorld = thicknessFromLightDepth({
+    lightViewMatrix: lightView, pointWorld: point, normalWorld: [0, 0, 1], shrinkWorld: shrink,
+    // The back face (z = −half) where the ray from the shrunk point to the light leaves the slab.
+    mapDepth: () => {
+      const t = (-half - (half - shrink)) / toLight[2];
+      const back = [point[0] + t * toLight[0], point[1], -half];
+      return -(lightView[2] * back[0] + lightView[6] * back[1] + lightView[10] * back[2] + lightView[14]);
+    },
+  });
+  const through = transmittedFractionOracle({ thicknessMm: thicknessWorld * WORLD_UNIT_IN_MM, profile: 'skin', shrinkMm: SHRINK_MM, towardLightViewZ: toLight[2] });
+  return through.map((t) => t * Math.cos(a) * Math.min(1, 0.3 + Math.cos(a)));
 }
 
 describe('transmittance', () => {
@@ -68,6 +94,24 @@ describe('transmittance', () => {
     }
     // Red through, blue stopped: the colour of back-lit skin.
     expect(sums[0]).toBeGreaterThan(5 * sums[2]);
+  });
+
+  it('lit at 60° from behind, a 1 mm slab lets in the entry cosine\'s share: T(chord) · cos 60° · wrap, within 2 %', async () => {
+    const r = await backlit(1, 60);
+    const t = expectedOblique(1, 60);
+    // Without the entry cosine it would be twice this.
+    expect(t[0]).toBeGreaterThan(0.1);
+    const sums = [0, 0, 0];
+    let n = 0;
+    for (let y = 20; y < r.height - 20; y++) for (let x = 30; x < r.width - 30; x++) {
+      for (let c = 0; c < 3; c++) sums[c] += r.diffuse[at(r.width, x, y) + c];
+      n++;
+    }
+    // Red within 2 %. Green and blue fall steeply with the thickness there (T(1.1 mm) about 0.01),
+    // and the map's texels, at depths that step across the inclined back face, are averaged in T,
+    // which is convex: within 0.005 of the light.
+    expect(Math.abs(sums[0] / n / t[0] - 1), `red: GPU ${sums[0] / n}, oracle ${t[0]}`).toBeLessThan(0.02);
+    for (const c of [1, 2]) expect(Math.abs(sums[c] / n - t[c]), `channel ${c}: GPU ${sums[c] / n}, oracle ${t[c]}`).toBeLessThan(5e-3);
   });
 
   it('turned off and on again, transmittance comes back the same', async () => {
@@ -111,7 +155,9 @@ describe('transmittance', () => {
       target.render(renderer, scene);
       const second = await read(renderer, target.renderTarget);
       const centre = (d) => d[(16 * 32 + 16) * 4];
-      const out = { first: centre(first), second: centre(second), cameraZ: target.camera.position.z, fov: target.camera.fov };
+      // The entry cosine beside the depth: at the centre texel and at texel (3, 28).
+      const entry = (d, i, j) => d[(j * 32 + i) * 4 + 1];
+      const out = { first: centre(first), second: centre(second), cameraZ: target.camera.position.z, fov: target.camera.fov, entryCentre: entry(second, 16, 16), entryCorner: entry(second, 3, 28) };
       target.dispose();
       renderer.dispose();
       return out;
@@ -121,6 +167,15 @@ describe('transmittance', () => {
     expect(result.second).toBeCloseTo(12, 4);
     expect(result.cameraZ).toBe(12);
     expect(result.fov).toBeCloseTo(60, 6);
+    // |N·L| of the plane facing the spot: 1 / sqrt(1 + (x tan 30°)² + (y tan 30°)²) at the texel's NDC (x, y).
+    const cosine = (i, j) => {
+      const t = Math.tan(Math.PI / 6);
+      const [x, y] = [i, j].map((k) => ((k + 0.5) / 32) * 2 - 1);
+      return 1 / Math.sqrt(1 + (x * t) ** 2 + (y * t) ** 2);
+    };
+    expect(result.entryCentre).toBeCloseTo(cosine(16, 16), 3);
+    expect(result.entryCorner).toBeCloseTo(cosine(3, 28), 3);
+    expect(result.entryCorner).toBeLessThan(0.9);
   });
 });
 
