@@ -22,7 +22,7 @@ export const FIGURES = [
     title: 'Nose without and with transmittance',
     caption: 'Lit from the other side and below, the thin parts of the nose (wing, tip) let red light through.',
     camera: [-3.5, 0.8, 7.5, -0.1, 1.0, 2.3],
-    settings: { lightAzimuth: 80, lightElevation: -15, lightIntensity: 6, translucency: 0.5 },
+    settings: { lightAzimuth: 80, lightElevation: -15, lightIntensity: 6, translucency: 0.7 },
     toggle: 'transmittance', before: false, after: true,
   },
   {

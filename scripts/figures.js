@@ -131,9 +131,10 @@ function calibrationMarkdown() {
   return [
     '## Calibrating figure 2',
     '',
-    'Light that crossed the ear is shaded T(d) × albedo × light, with d = thickness × worldUnitInMm ×',
-    '(1 − translucency) / widthMm in profile millimetres and T the skin profile\'s transmittance',
-    '(`profiles.skin.transmittance`). Measured in the page at figure 2: the light crosses a median of',
+    'Light that crossed the ear is shaded T(d) × the entry cosine × albedo × light, with d = thickness ×',
+    'worldUnitInMm × (1 − translucency) / widthMm in profile millimetres and T the skin profile\'s',
+    'transmittance (`profiles.skin.transmittance`); the entry cosine, the same in every channel, leaves',
+    'the colour as it is. Measured in the page at figure 2: the light crosses a median of',
     'about 8 mm of ear (it goes through obliquely; the thickness view), and the ear\'s albedo has',
     'green/red ≈ 0.5 (transmitted light divided by T(d), per pixel). What that light looks like after',
     'three\'s ACES Filmic tone mapping and sRGB, at the ear\'s brightness (linear red 0.45):',

@@ -58,11 +58,12 @@ for (const backend of BACKENDS) {
 
     it("lit from behind, the head's transmittance view (the light through the ears) is the EffectComposer path's", async () => {
       // Light at azimuth 120°, elevation 10°: the ears' rims glow (the rest of the view is black).
-      // Measured 2026-12-01: 20 pixels above 20/255 in red on both; |difference| max 4/255 on
+      // Measured 2026-12-02, with the entry cosine (the light grazes the rims: 20 pixels above
+      // 20/255 before it, 6 now): 15 pixels above 5/255 in red on both; |difference| max 1/255 on
       // WebGPU, 0 on the WebGL 2 backend (in the final view a missing glow would hide within the
       // head bounds above: p99 0-1).
       const r = await run('head', { backend, width: 320, height: 180, light: [120, 10], view: 'transmittance' });
-      const glowing = (rgba) => rgba.filter((v, i) => i % 4 === 0 && v > 20).length;
+      const glowing = (rgba) => rgba.filter((v, i) => i % 4 === 0 && v > 5).length;
       expect(glowing(r.webgl)).toBeGreaterThanOrEqual(10);
       expect(Math.abs(glowing(r.node) - glowing(r.webgl))).toBeLessThanOrEqual(2);
       expect(difference(r.node, r.webgl).max).toBeLessThanOrEqual(8);
