@@ -13,7 +13,8 @@ import { nearestViewDepth } from '../framePlan.js';
 import { MATERIAL_DEFAULTS, MATERIAL_SCHEMA, PIPELINE_SCHEMA, checkOption } from '../options.js';
 
 /**
- * The transmitted light's shading (transmittedLight.glsl): wrap lighting on the back side,
+ * The transmitted light's shading (transmittedLight.glsl): beside T and the entry cosine from the
+ * light depth map (transmittance.glsl), wrap lighting on the back side,
  * saturate(WRAP_OFFSET + dot(−N, L)) (REFERENCE §5's 0.3), times smoothstep(0, FROM_BEHIND_RANGE,
  * −L.z): only light from behind the point as the camera sees it (view space, +z to the camera),
  * fading in over the first quarter of the half-space.

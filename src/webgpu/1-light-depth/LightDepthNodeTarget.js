@@ -19,7 +19,7 @@ let _state;
  */
 const lightDepthOutput = (toLight) => vec4(positionView.z.negate(), abs(dot(normalView, toLight)), 0, 1);
 /** The output for a light's camera: [perspective (spot), orthographic (directional)]. */
-const LIGHT_DEPTH = /*@__PURE__*/ [lightDepthOutput(positionView.negate().normalize()), lightDepthOutput(vec3(0, 0, 1))];
+const LIGHT_DEPTH = [/*@__PURE__*/ lightDepthOutput(positionView.negate().normalize()), /*@__PURE__*/ lightDepthOutput(vec3(0, 0, 1))];
 
 /** A depth material's settings: both sides (thin open shells still record their nearest surface), no fog (it would blend the depths). */
 const asDepthMaterial = (material, name) => Object.assign(material, { name, side: DoubleSide, fog: false });

@@ -43,9 +43,11 @@ async function backlit(thicknessMm, lightAzimuthDeg = 0) {
 }
 
 /**
- * The oracle for the slab lit from behind at `azimuthDeg` about y: the light crosses the chord
- * d / cos a to the point; of its irradiance cos a enters at the back face (the entry cosine), and
- * the reference's wrap at the exit is saturate(0.3 + cos a) (REFERENCE §5).
+ * The oracle for the slab lit from behind at `azimuthDeg` about y: the thickness the light depth
+ * map gives, read at the shrunk point (the back face where the ray through it leaves the slab:
+ * (d − shrink) / cos a + shrink · cos a, 1.1 mm of the 2 mm chord at 1 mm and 60°); of the light's
+ * irradiance cos a enters at the back face (the entry cosine), and the reference's wrap at the exit
+ * is saturate(0.3 + cos a) (REFERENCE §5).
  */
 function expectedOblique(thicknessMm, azimuthDeg) {
   const a = (azimuthDeg * Math.PI) / 180;
