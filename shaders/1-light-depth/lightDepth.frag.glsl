@@ -19,7 +19,6 @@
 	uniform float opacity;
 #endif
 
-varying float vLightDepth;
 varying vec3 vLightViewNormal;   // light view space, not normalised
 varying vec3 vLightViewPosition; // light view space
 
@@ -36,5 +35,7 @@ void main() {
 	float normalLength = length( vLightViewNormal );
 	// A mesh without normals lets the whole light in, as before the entry cosine.
 	float entry = normalLength > 0.0 ? abs( dot( vLightViewNormal / normalLength, toLight ) ) : 1.0;
-	gl_FragColor = vec4( vLightDepth, entry, 0.0, 1.0 );
+	// Distance along the light's view axis (world units), for perspective and orthographic lights
+	// alike: linear, unlike the depth buffer, so thickness is a plain difference (Jimenez et al. 2010).
+	gl_FragColor = vec4( - vLightViewPosition.z, entry, 0.0, 1.0 );
 }

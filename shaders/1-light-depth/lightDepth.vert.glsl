@@ -8,9 +8,8 @@
 #include <skinning_pars_vertex>
 #include <clipping_planes_pars_vertex>
 
-varying float vLightDepth;
 varying vec3 vLightViewNormal;
-varying vec3 vLightViewPosition;
+varying vec3 vLightViewPosition; // its -z is the linear light depth (lightDepth.frag.glsl)
 
 void main() {
 	#include <uv_vertex>
@@ -25,9 +24,6 @@ void main() {
 	#include <skinning_vertex>
 	#include <project_vertex>
 	#include <clipping_planes_vertex>
-	// Distance along the light's view axis (world units), for perspective and orthographic lights
-	// alike: linear, unlike the depth buffer, so thickness is a plain difference (Jimenez et al. 2010).
-	vLightDepth = -mvPosition.z;
 	vLightViewNormal = transformedNormal;
 	vLightViewPosition = mvPosition.xyz;
 }

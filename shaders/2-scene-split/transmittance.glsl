@@ -30,9 +30,9 @@ vec3 sssTransmittanceProfile( const in float thicknessWorld ) {
 // Without the entry cosine the back-lit head gained light away from its thin parts that the
 // surface truth does not have (bench:truth, the head back-lit: "rest" 1.67 of the effect with
 // transmittance, 0.43 without it; 0.50 with the entry cosine, the whole head 0.74 -> 0.51).
-// Averaging T, not depth, keeps silhouettes in the light's view
-// from mixing a near surface's depth with a far one's, and turns their aliasing (lines of single
-// lit pixels where the map's texels step along a rim) into a smooth edge.
+// Averaging T, not depth, keeps silhouettes in the light's view from mixing a near surface's depth
+// with a far one's, and turns their aliasing (lines of single lit pixels where the map's texels
+// step along a rim) into a smooth edge.
 // The map is read a little inward along the (vertex, not bump-mapped) normal, so that a lit surface
 // finds itself and not a texel of whatever lies beside it (REFERENCE §5's shrink, about 0.6 mm);
 // the thickness is measured from the point itself, so the shrink does not shorten it.

@@ -1,8 +1,8 @@
 // Stage 1, renderer-free: the light's camera and what it sees, shared by the WebGL path's
 // LightDepthTarget and the WebGPU node's LightDepthNodeTarget (src/webgpu/1-light-depth/). Each
 // renderer's subclass brings the target (two-channel float: linear depth in world units, 0 = no
-// surface, and the entry cosine), the depth material and the render; this class places the camera on the light,
-// checks its frustum and says which materials the light sees.
+// surface, and the entry cosine), the depth material and the render; this class places the camera
+// on the light, checks its frustum and says which materials the light sees.
 import { OrthographicCamera, PerspectiveCamera, Vector3 } from 'three';
 import { checkInteger, checkNumber, checkOptions } from '../support/parameterChecks.js';
 import { describe } from '../support/rendererSupport.js';

@@ -1,9 +1,8 @@
 // Stage 1 for WebGPURenderer: linear depth seen from the light, for transmittance, as the WebGL
 // path's LightDepthTarget (src/1-light-depth/LightDepthTarget.js) stores it: distance along the
 // light's view axis in world units, 0 = no surface, and the entry cosine |N·L| beside it, in a
-// two-channel float target. The camera and what the
-// light sees (and which materials keep their cut-out and clipping) are LightDepthView's, shared
-// with it; the depth materials are node materials, drawn in place of each object's through a
+// two-channel float target. The camera and what the light sees (and which materials keep their
+// cut-out and clipping) are LightDepthView's, shared with it; the depth materials are node materials, drawn in place of each object's through a
 // render object function (as three's shadow maps do).
 import { MeshBasicNodeMaterial, NodeMaterial, RenderTarget, RendererUtils } from 'three/webgpu';
 import { DoubleSide, FloatType, NearestFilter, RGFormat } from 'three';
@@ -18,8 +17,10 @@ let _state;
  * view axis (directional: orthographic) or to the eye (spot). A texture channel for each.
  */
 const lightDepthOutput = (toLight) => vec4(positionView.z.negate(), abs(dot(normalView, toLight)), 0, 1);
-/** The output for a light's camera: [perspective (spot), orthographic (directional)]. */
-const LIGHT_DEPTH = [/*@__PURE__*/ lightDepthOutput(positionView.negate().normalize()), /*@__PURE__*/ lightDepthOutput(vec3(0, 0, 1))];
+const LIGHT_DEPTH_PERSPECTIVE = /*@__PURE__*/ lightDepthOutput(positionView.negate().normalize()); // a spot light's camera
+const LIGHT_DEPTH_ORTHOGRAPHIC = /*@__PURE__*/ lightDepthOutput(vec3(0, 0, 1)); // a directional light's
+/** The output for the light's camera. */
+const lightDepthOf = (camera) => (camera.isOrthographicCamera ? LIGHT_DEPTH_ORTHOGRAPHIC : LIGHT_DEPTH_PERSPECTIVE);
 
 /** A depth material's settings: both sides (thin open shells still record their nearest surface), no fog (it would blend the depths). */
 const asDepthMaterial = (material, name) => Object.assign(material, { name, side: DoubleSide, fog: false });
@@ -33,7 +34,7 @@ export class LightDepthNodeTarget extends LightDepthView {
   constructor(light, options = {}) {
     super('LightDepthNodeTarget', light, options);
     this.material = asDepthMaterial(new NodeMaterial(), 'LightDepthNodeMaterial');
-    this.material.fragmentNode = LIGHT_DEPTH[this.camera.isOrthographicCamera ? 1 : 0];
+    this.material.fragmentNode = lightDepthOf(this.camera);
     this.renderTarget = new RenderTarget(1, 1, {
       type: FloatType, format: RGFormat, minFilter: NearestFilter, magFilter: NearestFilter, depthBuffer: true,
     });
@@ -71,7 +72,7 @@ export class LightDepthNodeTarget extends LightDepthView {
    */
   createShapedMaterial(material) {
     const shaped = asDepthMaterial(new MeshBasicNodeMaterial(), `LightDepthNodeMaterial(${material.name || material.type})`);
-    shaped.outputNode = LIGHT_DEPTH[this.camera.isOrthographicCamera ? 1 : 0];
+    shaped.outputNode = lightDepthOf(this.camera);
     return shaped;
   }
 
