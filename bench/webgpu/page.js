@@ -1,10 +1,11 @@
-// The WebGPURenderer bench's browser side (bench/webgpu/run.js): the demo's head through five
+// The WebGPURenderer bench's browser side (bench/webgpu/run.js): the demo's head through eight
 // set-ups, each with its own renderer, timed frame by frame in interleaved rounds:
 //   composer     WebGLRenderer, EffectComposer with SubsurfaceScattering and OutputPass
 //   webgpuPlain  WebGPURenderer (WebGPU), RenderPipeline over pass(scene, camera)
 //   webgpuNode   the same with subsurfaceMRT() and the node
 //   webglPlain   WebGPURenderer's WebGL 2 backend (forceWebGL), plain
 //   webglNode    the same with the node
+//   …Isotropic   composer, webgpuNode and webglNode with kernelGroups 'auto' (the isotropic blur)
 // A frame's time is the wall time of render() and a 1-pixel read-back of its output (which waits
 // for the GPU), so every row pays the same read-back. SwiftShader's times are CPU times: compare
 // rows of one run, not runs.
@@ -17,14 +18,14 @@ import { SubsurfaceScattering } from 'three-separable-sss';
 import { subsurfaceMaterial, subsurfaceMRT, subsurfaceScattering } from 'three-separable-sss/webgpu';
 import { buildScene } from '../scenes.js';
 
-async function composerRow(width, height) {
+async function composerRow(width, height, { kernelGroups = 1 } = {}) {
   const built = await buildScene('head', { aspect: width / height });
   const renderer = new WebGLRenderer({ antialias: false });
   renderer.setSize(width, height, false);
   renderer.toneMapping = THREE.ACESFilmicToneMapping;
   const composer = new EffectComposer(renderer, new THREE.WebGLRenderTarget(width, height, { type: THREE.HalfFloatType }));
   composer.renderToScreen = false;
-  const sss = new SubsurfaceScattering({ scene: built.scene, camera: built.camera, worldUnitInMm: built.worldUnitInMm, light: null });
+  const sss = new SubsurfaceScattering({ scene: built.scene, camera: built.camera, worldUnitInMm: built.worldUnitInMm, light: null, kernelGroups });
   for (const m of built.subsurface) sss.makeSubsurface(m, { widthMm: built.widthMm });
   composer.addPass(sss);
   composer.addPass(new OutputPass());
@@ -38,7 +39,7 @@ async function composerRow(width, height) {
   };
 }
 
-async function webgpuRow(width, height, { backend, node }) {
+async function webgpuRow(width, height, { backend, node, kernelGroups = 1 }) {
   const built = await buildScene('head', { aspect: width / height });
   const renderer = new THREE.WebGPURenderer({ antialias: false, forceWebGL: backend === 'webgl' });
   renderer.setSize(width, height, false);
@@ -50,7 +51,7 @@ async function webgpuRow(width, height, { backend, node }) {
   if (node) {
     built.scene.traverse((o) => { if (o.isMesh && built.subsurface.includes(o.material)) o.material = subsurfaceMaterial(o.material, { widthMm: built.widthMm }); });
     scenePass.setMRT(subsurfaceMRT());
-    sss = subsurfaceScattering(scenePass, { worldUnitInMm: built.worldUnitInMm });
+    sss = subsurfaceScattering(scenePass, { worldUnitInMm: built.worldUnitInMm, kernelGroups });
     pipeline.outputNode = sss;
   } else {
     pipeline.outputNode = scenePass;
@@ -73,6 +74,9 @@ const ROWS = {
   webgpuNode: (w, h) => webgpuRow(w, h, { backend: 'webgpu', node: true }),
   webglPlain: (w, h) => webgpuRow(w, h, { backend: 'webgl', node: false }),
   webglNode: (w, h) => webgpuRow(w, h, { backend: 'webgl', node: true }),
+  composerIsotropic: (w, h) => composerRow(w, h, { kernelGroups: 'auto' }),
+  webgpuNodeIsotropic: (w, h) => webgpuRow(w, h, { backend: 'webgpu', node: true, kernelGroups: 'auto' }),
+  webglNodeIsotropic: (w, h) => webgpuRow(w, h, { backend: 'webgl', node: true, kernelGroups: 'auto' }),
 };
 
 const median = (values) => {

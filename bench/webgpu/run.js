@@ -23,11 +23,17 @@ try {
     flags: session.flags,
     nodeOverPlain: { webgpu: m.webgpuNode / m.webgpuPlain, webgl: m.webglNode / m.webglPlain },
     nodeOverComposer: { webgpu: m.webgpuNode / m.composer, webgl: m.webglNode / m.composer },
+    // The frame with the isotropic blur over the same path's frame with one kernel.
+    isotropicOverOneKernel: {
+      composer: m.composerIsotropic / m.composer,
+      webgpu: m.webgpuNodeIsotropic / m.webgpuNode,
+      webgl: m.webglNodeIsotropic / m.webglNode,
+    },
   };
   const file = join(root, quick ? 'bench/results/tmp/webgpu.json' : 'bench/results/webgpu.json');
   await mkdir(dirname(file), { recursive: true });
   await writeFile(file, `${JSON.stringify(summary, null, 1)}\n`);
-  console.log(JSON.stringify({ medianMs: m, nodeOverPlain: summary.nodeOverPlain, nodeOverComposer: summary.nodeOverComposer }, null, 1));
+  console.log(JSON.stringify({ medianMs: m, nodeOverPlain: summary.nodeOverPlain, nodeOverComposer: summary.nodeOverComposer, isotropicOverOneKernel: summary.isotropicOverOneKernel }, null, 1));
   console.log(`wrote ${file}`);
 } finally {
   await session.close();

@@ -63,6 +63,40 @@ function packedFractions(grouping, table) {
   return byTable.get(table);
 }
 
+/**
+ * The split the shader makes of each footprint's energy (kernelGroups.glsl's sssSplit and its far
+ * loop) from the packed texels, as fractions in footprintGroupFractions' layout: groups 1..3 the
+ * unorms, the grouping's last group the rest; past groups 1 and 2's reach (the row's near count)
+ * they take nothing, group 3 its unorm and group 4 the rest (three groups: group 3 all). The WebGPU
+ * node's blur reads these (src/webgpu/3-blur/GroupFractionTexture.js), so both renderers split alike.
+ * @param {ReturnType<typeof import('./kernelGroups.js').kernelGroups>} grouping
+ * @param {{ data: Float32Array, columns: number }} table
+ * @returns {Float32Array}
+ */
+export function splitFractions(grouping, table) {
+  const packed = packedFractions(grouping, table);
+  const count = grouping.members[0].length;
+  const columns = table.columns + 1;
+  const out = new Float32Array((packed.length / 4) * MAX_KERNEL_GROUPS * 3);
+  for (let t = 0; t < packed.length / 4; t++) {
+    const column = t % columns;
+    const far = count > 2 && column > 0 && column - 1 >= packed[(t - column) * 4 + 3];
+    for (let c = 0; c < 3; c++) {
+      const unorm = (g) => ((packed[t * 4 + g] >>> (10 * c)) & 1023) / UNORM_ONE;
+      const parts = new Array(MAX_KERNEL_GROUPS).fill(0);
+      if (far) {
+        parts[2] = count === 3 ? 1 : unorm(2);
+        if (count === 4) parts[3] = Math.max(1 - parts[2], 0);
+      } else {
+        for (let g = 0; g < count - 1; g++) parts[g] = unorm(g);
+        parts[count - 1] = Math.max(1 - parts.slice(0, count - 1).reduce((a, b) => a + b, 0), 0);
+      }
+      parts.forEach((part, g) => { out[(t * MAX_KERNEL_GROUPS + g) * 3 + c] = part; });
+    }
+  }
+  return out;
+}
+
 export class KernelGroupTable {
   constructor() {
     /** @type {DataTexture|null} RGBA32UI, (columns + 1) × FOOTPRINT_ROWS per slot */

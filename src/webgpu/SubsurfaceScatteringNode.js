@@ -1,8 +1,9 @@
 // The WebGPURenderer version of the pipeline: a node for three's RenderPipeline, used as three's
 // display nodes are. Its input is a scene pass whose MRT is subsurfaceMRT() (stage 2: the
 // subsurface node materials write the diffuse light and the surface there); the node runs stage 3,
-// the two separable blur passes, before the frame (updateBefore), and is itself stage 4, the
-// compose. With a `light` it runs stage 1 too (./1-light-depth/LightStageNode.js): the light
+// the two separable blur passes (with kernelGroups, the isotropic blur's groups: a horizontal
+// pass per group, one vertical pass summing them), before the frame (updateBefore), and is itself
+// stage 4, the compose. With a `light` it runs stage 1 too (./1-light-depth/LightStageNode.js): the light
 // depth pass for transmittance, and the subsurface materials' transmittance uniforms, before the
 // scene pass draws them. What the WebGL path's orchestrator does per frame
 // (src/SubsurfaceScattering.js, steps 0 to 5) happens here in the same order, with the same CPU
@@ -15,6 +16,7 @@
 import { Node, NodeMaterial, NodeUpdateType, QuadMesh, RenderTarget, RendererUtils } from 'three/webgpu';
 import { FloatType, HalfFloatType, Vector2, Vector3 } from 'three';
 import { passTexture, texture, uniform } from 'three/tsl';
+import { MAX_KERNEL_GROUPS, groupEnergies } from '../3-blur/kernelGroups.js';
 import { ProfileLookup } from '../profiles/ProfileLookup.js';
 import { FootprintTable } from '../profiles/FootprintTable.js';
 import { AUTO_MAX_SAMPLES } from '../profiles/footprints.js';
@@ -32,6 +34,7 @@ import { PIPELINE_SCHEMA, checkOption } from '../options.js';
 import { NODE_DEFAULTS, checkMethod } from './nodeOptions.js';
 import { ATTACHMENT_NAMES } from './2-scene-split/attachments.js';
 import { subsurfaceBlurNode } from './3-blur/subsurfaceBlurTsl.js';
+import { GroupFractionTexture } from './3-blur/GroupFractionTexture.js';
 import { checkWebgpuThree } from './threeVersion.js';
 import { LIGHT_VIEWS, composeNode, debugViewUniform } from './4-compose/composeTsl.js';
 import { DEBUG_VIEWS } from '../4-compose/debugViews.js';
@@ -71,10 +74,10 @@ export class SubsurfaceScatteringNode extends Node {
     // Every option through its setter: the WebGL pipeline's schema checks it (src/options.js).
     Object.assign(this, {
       scattering: true, worldUnitInMm: o.worldUnitInMm, depthThresholdMm: o.depthThresholdMm, samples: o.samples,
-      strength: o.strength, followSurface: o.followSurface, foreshortening: o.foreshortening,
+      strength: o.strength, followSurface: o.followSurface, foreshortening: o.foreshortening, kernelGroups: o.kernelGroups,
     });
-    /** What the last frame ran: { samples, kernelPixels, blur, passes } (see src/3-blur/blurPlan.js). */
-    this.plan = { samples: 0, kernelPixels: 0, blur: false, passes: 'separable' };
+    /** What the last frame ran: { samples, kernelPixels, blur, passes, groups, groupings } (see src/3-blur/blurPlan.js). */
+    this.plan = { samples: 0, kernelPixels: 0, blur: false, passes: 'separable', groups: 1, groupings: null };
 
     // The surface needs the 32-bit mantissa (mm differences at metres); the light is half float.
     scenePass.getTexture(ATTACHMENT_NAMES.SURFACE).type = FloatType;
@@ -85,8 +88,15 @@ export class SubsurfaceScatteringNode extends Node {
     this._scatteredTarget.texture.name = 'subsurface.scattered';
     /** @type {import('three/webgpu').TextureNode} what the compose adds: the scattered light (or the unblurred light when the plan skips the blur) */
     this._scatteredNode = /** @type {any} */ (passTexture(this, this._scatteredTarget.texture));
-    this._materials = null; // the two blur passes' materials, built for _blurKey
-    this._blurKey = '';
+    /** @type {Map<string, NodeMaterial[]>} the blur passes' materials by their compile-time switches (the horizontal ones, then the vertical) */
+    this._materials = new Map();
+    // The isotropic blur, built when a frame first blurs in groups: a target per group between
+    // the passes, the fractions' texture and each group's energy share.
+    /** @type {RenderTarget[]} */
+    this._groupTargets = [];
+    this._groupFractions = new GroupFractionTexture();
+    this._groupFractionNode = null;
+    this._groupEnergies = Array.from({ length: MAX_KERNEL_GROUPS }, () => uniform(new Vector3()));
     this._profileNode = texture(this.profileLookup.texture);
     this._footprintNode = texture(this.footprintTable.update(this.samples === 'auto' ? 'auto' : this.samples));
     this.updateBeforeType = NodeUpdateType.FRAME;
@@ -174,6 +184,18 @@ export class SubsurfaceScatteringNode extends Node {
     this._updateDepthFalloff();
   }
 
+  /**
+   * The isotropic blur's groups, as the WebGL pipeline's `kernelGroups`: 1 (default) one separable
+   * kernel, exact along the screen axes only; 'auto' or 2..4 the profile's Gaussians blurred in
+   * groups, the same in every direction ('auto': one group where one is within the isotropy budget
+   * at the frame's scale, a far head). Each count builds its own passes on the first frame that
+   * uses it. @type {'auto'|number}
+   */
+  get kernelGroups() { return this._settings.kernelGroups; }
+
+  /** @param {'auto'|number} groups */
+  set kernelGroups(groups) { this._settings.kernelGroups = checkOption(PIPELINE_SCHEMA, 'kernelGroups', groups); }
+
   /** The grazing-angle correction (shrink the step by cos(tilt), compare depths with the local plane). @type {boolean} */
   get foreshortening() { return this._settings.foreshortening; }
 
@@ -235,27 +257,61 @@ export class SubsurfaceScatteringNode extends Node {
     return planBlur({
       method: this.method, samples: this.samples, scattering: this.scattering,
       marginalRadiusMm: this.profileLookup.marginalRadiusMm, denseRadiusMm: 0, kernelReachMm: {},
+      kernelGroups: this.kernelGroups, profiles: [this.profile],
     }, pixelsPerMm);
   }
 
-  /** The two blur materials, rebuilt when a compile-time switch changes (taps, depth rule, MSAA). */
-  _blurMaterials(samples, coverage) {
-    const key = JSON.stringify([samples, this.followSurface, this.foreshortening, coverage]);
-    if (this._materials && key === this._blurKey) return this._materials;
-    this._materials ??= [new NodeMaterial(), new NodeMaterial()];
+  /**
+   * The blur materials for a frame of `groups` groups (1: one kernel): [horizontal, vertical], or
+   * with groups a horizontal pass per group, then the vertical one; built once per set of
+   * compile-time switches (taps, depth rule, MSAA, groups) and kept, so 'auto' switching between
+   * one kernel and groups as a head zooms compiles nothing twice.
+   */
+  _blurMaterials(samples, coverage, groups) {
+    const key = JSON.stringify([samples, this.followSurface, this.foreshortening, coverage, groups]);
+    if (this._materials.has(key)) return this._materials.get(key);
     const common = {
       samples, followSurface: this.followSurface, foreshorten: this.foreshortening, coverage, uniforms: this._uniforms,
       surface: this.scenePass.getTextureNode(ATTACHMENT_NAMES.SURFACE), profile: this._profileNode,
       profileSize: this.profileLookup.texture.image.width, footprints: this._footprintNode,
     };
-    const inputs = [this.scenePass.getTextureNode(ATTACHMENT_NAMES.DIFFUSE), texture(this._horizontalTarget.texture)];
-    this._materials.forEach((material, axis) => {
-      material.fragmentNode = subsurfaceBlurNode({ ...common, axis, diffuse: inputs[axis] });
-      material.name = `SubsurfaceBlur(${axis === 0 ? 'horizontal' : 'vertical'})`;
-      material.needsUpdate = true;
-    });
-    this._blurKey = key;
-    return this._materials;
+    const diffuse = this.scenePass.getTextureNode(ATTACHMENT_NAMES.DIFFUSE);
+    const material = (fragmentNode, name) => Object.assign(new NodeMaterial(), { fragmentNode, name });
+    let materials;
+    if (groups === 1) {
+      materials = [
+        material(subsurfaceBlurNode({ ...common, axis: 0, diffuse }), 'SubsurfaceBlur(horizontal)'),
+        material(subsurfaceBlurNode({ ...common, axis: 1, diffuse: texture(this._horizontalTarget.texture) }), 'SubsurfaceBlur(vertical)'),
+      ];
+    } else {
+      this._groupFractionNode ??= texture(this._groupFractions.texture);
+      const lights = this._groupTargets.slice(0, groups).map((target) => texture(target.texture));
+      materials = [
+        ...lights.map((_, index) => material(subsurfaceBlurNode({
+          ...common, axis: 0, diffuse, groups: { fractions: this._groupFractionNode, index, energy: this._groupEnergies[index] },
+        }), `SubsurfaceBlur(horizontal, group ${index + 1} of ${groups})`)),
+        material(subsurfaceBlurNode({ ...common, axis: 1, diffuse: lights[0], groups: { fractions: this._groupFractionNode, lights } }), `SubsurfaceBlur(vertical, ${groups} groups)`),
+      ];
+    }
+    this._materials.set(key, materials);
+    return materials;
+  }
+
+  /**
+   * The group targets, fractions and energy shares of a frame in groups (plan.groupings: the
+   * node's one profile, slot 0).
+   * @param {ReturnType<typeof import('../3-blur/kernelGroups.js').kernelGroups>} grouping
+   */
+  _groupFrame(grouping, width, height) {
+    while (this._groupTargets.length < grouping.count) {
+      const target = new RenderTarget(1, 1, { type: HalfFloatType, depthBuffer: false });
+      target.texture.name = `subsurface.horizontalGroup${this._groupTargets.length + 1}`;
+      this._groupTargets.push(target);
+    }
+    for (const target of this._groupTargets) target.setSize(width, height);
+    const fractions = this._groupFractions.update(grouping, this.footprintTable.table);
+    if (this._groupFractionNode) this._groupFractionNode.value = fractions;
+    groupEnergies(grouping).forEach((rgb, g) => this._groupEnergies[g].value.fromArray(rgb));
   }
 
   /**
@@ -294,16 +350,22 @@ export class SubsurfaceScatteringNode extends Node {
     u.marginalRangeMm.value = this.profileLookup.marginalRangeMm;
     this._footprintNode.value = this.footprintTable.update(this.samples === 'auto' ? 'auto' : this.samples);
     const coverage = scenePass.renderTarget.samples > 0;
-    const [horizontal, vertical] = this._blurMaterials(this.plan.samples, coverage);
-    this._horizontalTarget.setSize(width, height);
+    const { groups } = this.plan;
+    if (groups > 1) this._groupFrame(this.plan.groupings[0], width, height);
+    else this._horizontalTarget.setSize(width, height);
     this._scatteredTarget.setSize(width, height);
+    const materials = this._blurMaterials(this.plan.samples, coverage, groups);
+    const horizontalTargets = groups > 1 ? this._groupTargets : [this._horizontalTarget];
 
     _rendererState = RendererUtils.resetRendererState(renderer, _rendererState);
-    _quadMesh.material = horizontal;
-    _quadMesh.name = 'Subsurface blur [ horizontal ]';
-    renderer.setRenderTarget(this._horizontalTarget);
-    _quadMesh.render(renderer); // renders the scene pass first (its texture is this material's input)
-    _quadMesh.material = vertical;
+    // The horizontal pass (once per group): the first renders the scene pass first (its texture is the input).
+    materials.slice(0, -1).forEach((material, g) => {
+      _quadMesh.material = material;
+      _quadMesh.name = groups > 1 ? `Subsurface blur [ horizontal, group ${g + 1} ]` : 'Subsurface blur [ horizontal ]';
+      renderer.setRenderTarget(horizontalTargets[g]);
+      _quadMesh.render(renderer);
+    });
+    _quadMesh.material = materials[materials.length - 1];
     _quadMesh.name = 'Subsurface blur [ vertical ]';
     renderer.setRenderTarget(this._scatteredTarget);
     _quadMesh.render(renderer);
@@ -339,10 +401,13 @@ export class SubsurfaceScatteringNode extends Node {
     this._lightStage?.dispose();
     this._horizontalTarget.dispose();
     this._scatteredTarget.dispose();
+    for (const target of this._groupTargets) target.dispose();
+    this._groupTargets = [];
+    this._groupFractions.dispose();
     this.footprintTable.dispose();
     this.profileLookup.dispose();
-    for (const material of this._materials ?? []) material.dispose();
-    this._materials = null;
+    for (const materials of this._materials.values()) for (const material of materials) material.dispose();
+    this._materials.clear();
     super.dispose();
   }
 }

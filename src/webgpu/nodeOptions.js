@@ -13,6 +13,7 @@ export const NODE_DEFAULTS = Object.freeze({
   profile: PIPELINE_DEFAULTS.profile,
   method: PIPELINE_DEFAULTS.method,
   samples: PIPELINE_DEFAULTS.samples,
+  kernelGroups: /** @type {'auto'|number} */ (PIPELINE_DEFAULTS.kernelGroups),
   strength: /** @type {number[]} */ ([1, 1, 1]),
   followSurface: PIPELINE_DEFAULTS.followSurface,
   depthThresholdMm: PIPELINE_DEFAULTS.depthThresholdMm,

@@ -4,6 +4,11 @@
 // the sampling model, which this follows step by step: addTap ↔ addTap, main ↔ subsurfaceBlur).
 // The footprint table and the profile lookup are the WebGL path's own textures (FootprintTable,
 // ProfileLookup), filled by the same JS.
+// With `groups` it is one pass of the isotropic blur (kernelGroups.js; the GLSL's SSS_GROUPS > 1
+// branch and shaders/3-blur/kernelGroups.glsl): each footprint's energy is split between the groups
+// by GroupFractionTexture, the horizontal pass runs once per group (its own target: halves, where
+// the GLSL packs four groups in two integer texels), and the vertical pass reads every group's
+// texel at each tap and sums the groups, each normalised by its own weight.
 import {
   Break, Fn, If, Loop, all, clamp, float, floor, greaterThan, int, inverseSqrt, ivec2, log2, max, min, mix, screenCoordinate,
   select, textureLoad, vec3, vec4,
@@ -13,6 +18,16 @@ import { ENERGY_LEFT, MIN_KERNEL_PIXELS } from '../../3-blur/samplingModel.js';
 import {
   along, finite3, finite1, readProfile, screenScale, surfaceSample, surfaceSlope, surfaceTap, withAlong,
 } from './surfaceTsl.js';
+
+/**
+ * Each channel of `sum` over its weight, `fallback` where nothing was kept (kernelGroups.glsl's
+ * sssNormalised; scalar selects: GLSL has no ternary over a bvec3).
+ */
+const normalised = (sum, weightSum, fallback) => vec3(
+  select(weightSum.x.greaterThan(0), sum.x.div(weightSum.x), fallback.x),
+  select(weightSum.y.greaterThan(0), sum.y.div(weightSum.y), fallback.y),
+  select(weightSum.z.greaterThan(0), sum.z.div(weightSum.z), fallback.z),
+);
 
 /**
  * The blur's fragment node.
@@ -28,20 +43,32 @@ import {
  * @param {number} o.profileSize its texels per row
  * @param {object} o.footprints texture node of FootprintTable.texture
  * @param {object} o.uniforms { kernelRadiusMm, strength, projectionScale, resolution, depthFalloff, perspective, mmToWorld, marginalRangeMm }
+ * @param {object} [o.groups] the isotropic blur (absent: one kernel): { fractions: texture node of
+ *   GroupFractionTexture; horizontal: index (the group this pass writes, its light times the
+ *   group's planned share) and energy (uniform vec3: its share of the profile's energy, for pixels
+ *   that do no work); vertical: lights (each group's horizontal output; `diffuse` is the first) }
  */
 export function subsurfaceBlurNode(o) {
-  const { axis, samples, uniforms: u } = o;
+  const { axis, samples, uniforms: u, groups } = o;
   const blocks = (samples - 1) / 2 - 1; // footprints per side before the tail
   const scale = screenScale(u);
   const sample = surfaceSample(o);
   const slopeAt = surfaceSlope(sample, u, axis);
-  const tapWeight = surfaceTap(sample, u, o);
+  // The lights the taps read and the group each sum is of: one kernel one light and no group; a
+  // horizontal group pass the diffuse light, its own group; the vertical group pass every group.
+  const lights = axis === 1 && groups ? groups.lights : [o.diffuse];
+  const sumGroups = !groups ? [null] : axis === 0 ? [groups.index] : lights.map((_, g) => g);
+  const tapWeight = surfaceTap(sample, u, { ...o, lights });
   const profileAt = readProfile(o.profile, o.profileSize);
   const resolutionAlong = along(u.resolution, axis);
+  // Each sum's part of `weight`, the energy of table column `column` (0: the centre, j + 1: footprint j).
+  const partsOf = (weight, column, row) => sumGroups.map((g) => (g === null ? weight
+    : weight.mul(textureLoad(groups.fractions, ivec2(column, row.add(g * FOOTPRINT_ROWS))).rgb)));
 
-  // Adds one tap at `offsetPx` along the axis with kernel weight `weight` to the sums; texels are
-  // compared with the depth the centre's plane predicts there: centreDepth + slope * (texel offset).
-  const addTap = (offsetPx, weight, pixel, centreDepth, slope, centre, sum, weightSum) => {
+  // Adds one tap at `offsetPx` along the axis, each sum with its part (`parts`) of the kernel
+  // weight; texels are compared with the depth the centre's plane predicts there: centreDepth +
+  // slope * (texel offset).
+  const addTap = (offsetPx, parts, pixel, centreDepth, slope, centres, sums, weightSums) => {
     const position = float(along(pixel, axis)).add(0.5).add(offsetPx).toVar();
     If(position.greaterThanEqual(0).and(position.lessThan(resolutionAlong)), () => {
       const u0 = position.sub(0.5);
@@ -52,21 +79,21 @@ export function subsurfaceBlurNode(o) {
       const at1 = clamp(int(below).add(1), 0, last).toVar();
       const offset0 = float(at0.sub(along(pixel, axis)));
       const offset1 = float(at1.sub(along(pixel, axis)));
-      const tap0 = tapWeight(withAlong(pixel, axis, at0), centreDepth.add(slope.mul(offset0)), centre);
+      const tap0 = tapWeight(withAlong(pixel, axis, at0), centreDepth.add(slope.mul(offset0)), centres);
       const weight0 = fraction.oneMinus().mul(tap0.weight).toVar();
       // A tap on a texel centre weighs its second texel 0: not fetched (subsurfaceBlur.frag.glsl's
       // SSS_SKIP_EMPTY_TEXELS; the same sums).
       const weight1 = float(0).toVar();
-      const colour1 = vec3(0).toVar();
+      const colours1 = lights.map(() => vec3(0).toVar());
       If(fraction.greaterThan(0), () => {
-        const tap1 = tapWeight(withAlong(pixel, axis, at1), centreDepth.add(slope.mul(offset1)), centre);
+        const tap1 = tapWeight(withAlong(pixel, axis, at1), centreDepth.add(slope.mul(offset1)), centres);
         weight1.assign(fraction.mul(tap1.weight));
-        colour1.assign(tap1.colour);
+        colours1.forEach((colour, k) => colour.assign(tap1.colours[k]));
       });
       const kept = weight0.add(weight1);
       If(kept.greaterThan(0), () => {
-        sum.addAssign(weight.mul(tap0.colour.mul(weight0).add(colour1.mul(weight1))));
-        weightSum.addAssign(weight.mul(kept));
+        sums.forEach((sum, k) => sum.addAssign(parts[k].mul(tap0.colours[k].mul(weight0).add(colours1[k].mul(weight1)))));
+        weightSums.forEach((weightSum, k) => weightSum.addAssign(parts[k].mul(kept)));
       });
     });
   };
@@ -75,8 +102,13 @@ export function subsurfaceBlurNode(o) {
     const pixel = ivec2(screenCoordinate.xy).toVar();
     const centre = sample.centreAt(pixel);
     const colour = centre.colour;
+    // Each light's centre colour (the groups' texels share the coverage), and what a pixel that
+    // does no work writes: its light as it is, or (a horizontal group pass) the group's share of it.
+    const centres = [colour, ...lights.slice(1).map((light) => sample.colourOf(textureLoad(light, pixel).rgb, centre.coverage))];
+    const unblurred = centres.slice(1).reduce((sum, c) => sum.add(c), colour).toVar();
+    const unsplit = axis === 0 && groups ? colour.mul(groups.energy).toVar() : unblurred;
     // Not a subsurface pixel: pass through so the next pass sees the same mask.
-    const result = vec4(colour, 0).toVar();
+    const result = vec4(unsplit, 0).toVar();
     If(centre.coverage.greaterThan(0), () => {
       const surface = centre.surface;
       const stepPx = along(scale.pixelsPerMm(surface), axis).toVar();
@@ -87,15 +119,20 @@ export function subsurfaceBlurNode(o) {
         const tilt = slope.div(pixelWorld);
         stepPx.mulAssign(inverseSqrt(tilt.mul(tilt).add(1))); // cos(theta)
       }
-      result.assign(sample.covered(colour, centre.coverage));
+      result.assign(sample.covered(unsplit, centre.coverage));
       // Below half a pixel the kernel cannot move light to another pixel: no work.
       If(stepPx.mul(u.kernelRadiusMm).greaterThanEqual(MIN_KERNEL_PIXELS), () => {
         // The table row nearest this pixel's scale (src/profiles/footprints.js's footprintRowOf).
         const row = clamp(int(floor(log2(stepPx.div(FOOTPRINT_SCALES.min)).mul(FOOTPRINT_SCALES.perOctave).add(0.5))), 0, FOOTPRINT_ROWS - 1).toVar();
         // The centre pixel is its own footprint: |x| < 0.5 px.
         const energyBelow = profileAt(1, float(0.5).div(stepPx), u.marginalRangeMm).toVar();
-        const weightSum = energyBelow.mul(2).toVar();
-        const sum = colour.mul(weightSum).toVar();
+        const centreParts = partsOf(energyBelow.mul(2), 0, row);
+        const weightSums = centreParts.map((part) => vec3(part).toVar());
+        const sums = centreParts.map((part, k) => centres[k].mul(part).toVar());
+        // A horizontal group pass: the group's weight and the whole kernel's as planned, dropped
+        // taps and all (the group's planned share, below).
+        const plannedGroup = vec3(centreParts[0]).toVar();
+        const planned = energyBelow.mul(2).toVar();
         const lastEdge = int(0).toVar(); // pixels; footprint j covers lastEdge + 1 .. edge on each side
         Loop({ start: int(0), end: int(blocks), type: 'int', condition: '<=' }, ({ i: j }) => {
           If(all(greaterThan(energyBelow, vec3(0.5 - ENERGY_LEFT))), () => { Break(); }); // nothing left
@@ -106,17 +143,30 @@ export function subsurfaceBlurNode(o) {
           const edge = select(last, lastEdge.add(1), snapped).toVar();
           const energy = select(last, vec3(0.5), profileAt(1, float(edge).add(0.5).div(stepPx), u.marginalRangeMm)).toVar();
           const weight = energy.sub(energyBelow).toVar();
+          const parts = partsOf(weight, j.add(1), row).map((part) => vec3(part).toVar());
           // Sampled where the table says, kept inside the footprint as snapped at this pixel's scale.
           const inside = max(footprint.y.mul(stepPx), float(lastEdge.add(1)));
           const offsetPx = select(last, inside, min(inside, float(edge))).toVar();
-          addTap(offsetPx, weight, pixel, surface.x, slope, colour, sum, weightSum);
-          addTap(offsetPx.negate(), weight, pixel, surface.x, slope, colour, sum, weightSum);
+          addTap(offsetPx, parts, pixel, surface.x, slope, centres, sums, weightSums);
+          addTap(offsetPx.negate(), parts, pixel, surface.x, slope, centres, sums, weightSums);
+          if (axis === 0 && groups) {
+            plannedGroup.addAssign(parts[0].mul(2));
+            planned.addAssign(weight.mul(2));
+          }
           If(last, () => { Break(); });
           energyBelow.assign(energy);
           lastEdge.assign(edge);
         });
-        const blurred = mix(colour, sum.div(weightSum), u.strength).toVar();
-        result.assign(sample.covered(select(finite3(blurred), blurred, colour), centre.coverage));
+        let blurred;
+        if (!groups) blurred = mix(colour, sums[0].div(weightSums[0]), u.strength);
+        // Group g: its light over its own kept weight (the one-kernel rule, per group), times its
+        // planned share, so the groups sum to the one-kernel blur with nothing dropped and keep
+        // their shares at depth edges (the GLSL's horizontal pass, kernelGroups.glsl).
+        else if (axis === 0) blurred = plannedGroup.div(planned).mul(mix(colour, normalised(sums[0], weightSums[0], colour), u.strength));
+        // The groups' sum, each normalised by its own weight.
+        else blurred = mix(unblurred, sums.map((sum, k) => normalised(sum, weightSums[k], centres[k])).reduce((a, b) => a.add(b)), u.strength);
+        blurred = vec3(blurred).toVar();
+        result.assign(sample.covered(select(finite3(blurred), blurred, unsplit), centre.coverage));
       });
     });
     return result;

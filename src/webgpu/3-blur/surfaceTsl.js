@@ -55,17 +55,20 @@ export function surfaceSample({ diffuse, surface, coverage }) {
     const s = textureLoad(surface, texel).xy;
     return coverage ? uncovered(s, textureLoad(diffuse, texel).a) : s;
   };
+  /** A light texel's colour (`rgb`) at a pixel of coverage `cover`: 0 where not finite, the coverage divided out. */
+  const colourOf = (rgb, cover) => {
+    const colour = select(finite3(rgb), rgb, vec3(0));
+    return (coverage ? select(cover.greaterThan(0), colour.div(cover), colour) : colour).toVar();
+  };
   /** The pixel a surface pass shades: { colour, coverage, surface } (see SssCentre). */
   const centreAt = (pixel) => {
     const light = textureLoad(diffuse, pixel).toVar();
     const cover = select(light.a.greaterThan(0), light.a, float(0)).toVar();
-    let colour = select(finite3(light.rgb), light.rgb, vec3(0));
-    if (coverage) colour = select(cover.greaterThan(0), colour.div(cover), colour);
-    return { colour: colour.toVar(), coverage: cover, surface: uncovered(textureLoad(surface, pixel).xy, cover).toVar() };
+    return { colour: colourOf(light.rgb, cover), coverage: cover, surface: uncovered(textureLoad(surface, pixel).xy, cover).toVar() };
   };
   /** A surface pass's output: premultiplied by the centre's coverage, as its input was. */
   const covered = (colour, c) => vec4(vec3(colour).mul(c), c);
-  return { uncovered, surfaceAt, centreAt, covered };
+  return { uncovered, surfaceAt, colourOf, centreAt, covered };
 }
 
 /**
@@ -97,26 +100,35 @@ export function surfaceSlope(sample, u, axis) {
 }
 
 /**
- * surfaceTap.glsl: the rule every tap follows. Returns { weight, colour } for a texel whose depth
- * the centre's plane predicts to be `expectedDepth`.
+ * surfaceTap.glsl: the rule every tap follows. Returns { weight, colours } for a texel whose depth
+ * the centre's plane predicts to be `expectedDepth`: the rule's weight, and the colour of each of
+ * `lights` there ('lerp': each moved towards its own centre, `centres[k]`). One light is the
+ * one-kernel blur; several are the isotropic blur's groups (kernelGroups.js), whose texels share
+ * the coverage in their alphas, so the rule is taken once for all of them.
  * @param {ReturnType<typeof surfaceSample>} sample
  * @param {{ depthFalloff }} u
- * @param {{ diffuse, surface, followSurface: 'off'|'drop'|'lerp', coverage: boolean }} inputs
+ * @param {{ lights: object[], surface, followSurface: 'off'|'drop'|'lerp', coverage: boolean }} inputs
+ *   lights: texture nodes of the light to blur (a: the mask, the same in each)
  */
-export function surfaceTap(sample, u, { diffuse, surface, followSurface, coverage }) {
-  return (texel, expectedDepth, centre) => {
-    const light = textureLoad(diffuse, texel).toVar();
-    const kept = light.a.greaterThan(0).and(finite3(light.rgb));
-    let colour = coverage ? light.rgb.div(light.a) : light.rgb;
-    let weight = coverage ? light.a : float(1);
+export function surfaceTap(sample, u, { lights, surface, followSurface, coverage }) {
+  return (texel, expectedDepth, centres) => {
+    const texels = lights.map((light) => textureLoad(light, texel).toVar());
+    const alpha = texels[0].a;
+    const kept = alpha.greaterThan(0).and(finite3(texels.slice(1).reduce((sum, t) => sum.add(t.rgb), texels[0].rgb)));
+    let weight = coverage ? alpha : float(1);
+    let farness = null;
     if (followSurface !== 'off') {
-      const depth = sample.uncovered(textureLoad(surface, texel).xy, light.a).x;
-      const farness = clamp(abs(depth.sub(expectedDepth)).mul(u.depthFalloff), 0, 1);
+      const depth = sample.uncovered(textureLoad(surface, texel).xy, alpha).x;
+      farness = clamp(abs(depth.sub(expectedDepth)).mul(u.depthFalloff), 0, 1);
       if (followSurface === 'drop') weight = weight.mul(farness.oneMinus());
-      else colour = mix(colour, centre, farness);
     }
     // Off the mask or not finite: weight 0 and colour 0 (0 × NaN would still be NaN).
-    return { weight: select(kept, weight, float(0)), colour: select(kept, colour, vec3(0)) };
+    const colours = texels.map((t, k) => {
+      let colour = coverage ? t.rgb.div(alpha) : t.rgb;
+      if (followSurface === 'lerp') colour = mix(colour, centres[k], farness);
+      return select(kept, colour, vec3(0));
+    });
+    return { weight: select(kept, weight, float(0)), colours };
   };
 }
 

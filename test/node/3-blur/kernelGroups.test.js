@@ -7,7 +7,8 @@ import { DEON, GAUSSIANS, transferOf, erfc } from '../../oracle/closedForms.js';
 import { profiles } from '../../../src/profiles/presets.js';
 import { gaussianSumOf, nonNegativeLeastSquares } from '../../../src/profiles/gaussianFit.js';
 import { ISOTROPY_ERROR, MAX_KERNEL_GROUPS, autoKernelGroups, checkKernelGroups, footprintGroupFractions, groupEnergies, kernelGroups } from '../../../src/3-blur/kernelGroups.js';
-import { KernelGroupTable } from '../../../src/3-blur/KernelGroupTable.js';
+import { KernelGroupTable, splitFractions } from '../../../src/3-blur/KernelGroupTable.js';
+import { GroupFractionTexture } from '../../../src/webgpu/3-blur/GroupFractionTexture.js';
 import { FOOTPRINT_ROWS, footprintRowOf, footprintRowScale, footprintTable } from '../../../src/profiles/footprints.js';
 
 const ANGLES_DEG = [0, 11.25, 22.5, 33.75, 45];
@@ -222,6 +223,43 @@ describe("what the blur reads of a grouping (KernelGroupTable, shaders/3-blur/ke
         const sum = [0, 1, 2, 3].reduce((s2, g) => s2 + at(row, column, g, 0), 0);
         if (sum > 0) expect(sum).toBeCloseTo(1, 6); // past the last footprint: unused zeros
       }
+    }
+  });
+
+  it("the WebGPU node's float texture (GroupFractionTexture) holds the WebGL shader's split (splitFractions: within a unorm step of the fractions, summing to 1; past groups 1 and 2's reach theirs 0), group g's rows after groups 0..g − 1's", () => {
+    const width = table.columns + 1;
+    for (const count of [2, 3, 4]) {
+      const g4 = kernelGroups(profiles.skin, count, 4);
+      const exact = footprintGroupFractions(g4, table);
+      const split = splitFractions(g4, table);
+      const t = new GroupFractionTexture();
+      const texture = t.update(g4, table);
+      expect([texture.image.width, texture.image.height]).toEqual([width, MAX_KERNEL_GROUPS * FOOTPRINT_ROWS]);
+      expect(t.update(g4, table)).toBe(texture); // unchanged: not refilled
+      let far = 0;
+      for (const row of [0, footprintRowOf(1), footprintRowOf(4), footprintRowOf(10), FOOTPRINT_ROWS - 1]) {
+        for (let column = 0; column < width; column++) {
+          for (let c = 0; c < 3; c++) {
+            const at = (fractions, g) => fractions[((row * width + column) * MAX_KERNEL_GROUPS + g) * 3 + c];
+            const parts = [0, 1, 2, 3].map((g) => at(split, g));
+            for (let g = 0; g < MAX_KERNEL_GROUPS; g++) expect(texture.image.data[((g * FOOTPRINT_ROWS + row) * width + column) * 4 + c]).toBe(parts[g]);
+            const sum = parts.reduce((a, b) => a + b, 0);
+            if (exact.slice(((row * width + column) * MAX_KERNEL_GROUPS) * 3, ((row * width + column + 1) * MAX_KERNEL_GROUPS) * 3).every((x) => x === 0)) continue; // past the last footprint
+            expect(sum).toBeCloseTo(1, 6);
+            const isFar = count > 2 && parts[0] === 0 && parts[1] === 0 && at(exact, 0) + at(exact, 1) > 0;
+            if (isFar) {
+              far++;
+              expect(at(exact, 0) + at(exact, 1)).toBeLessThanOrEqual(2 / 1023 + 1e-7); // groups 1 and 2's share there is the table's NEAR_SHARE at most
+            } else {
+              for (let g = 0; g < count; g++) expect(Math.abs(parts[g] - at(exact, g))).toBeLessThan(count / 1023); // the last takes the others' rounding
+            }
+            for (let g = count; g < MAX_KERNEL_GROUPS; g++) expect(parts[g]).toBe(0);
+          }
+        }
+      }
+      if (count === 4) expect(far).toBeGreaterThan(0); // the far footprints are among the rows checked
+      t.dispose();
+      expect(t.texture).toBe(null);
     }
   });
 
