@@ -377,10 +377,19 @@ function webgpuSection(webgpu) {
     ['`WebGPURenderer` on its WebGL 2 backend (`forceWebGL`), plain', m.webglPlain, null],
     ['`WebGPURenderer` on its WebGL 2 backend, the node', m.webglNode, m.webglNode / m.webglPlain],
   ];
+  // The isotropic blur (kernelGroups 'auto') on each path, against the same path with one kernel.
+  const isotropic = m.composerIsotropic === undefined ? [] : [
+    ['the pipeline with `kernelGroups: \'auto\'`', m.composerIsotropic, m.composerIsotropic / m.composer],
+    ['the node on WebGPU with `kernelGroups: \'auto\'`', m.webgpuNodeIsotropic, m.webgpuNodeIsotropic / m.webgpuNode],
+    ['the node on the WebGL 2 backend with `kernelGroups: \'auto\'`', m.webglNodeIsotropic, m.webglNodeIsotropic / m.webglNode],
+  ];
   return [`## The WebGPURenderer node (\`npm run bench:webgpu\`, ${webgpu.date.slice(0, 10)})`, '',
     `The head at ${webgpu.width}×${webgpu.height} with the module's defaults, each frame closed by a read-back, in ${webgpu.rounds} interleaved rounds of ${webgpu.frames} frames (bench/webgpu/page.js), on SwiftShader (WebGPU on its Vulkan, WebGL 2 on ANGLE): wall times of software rendering, to compare as ratios within the run only.`, '',
     '| frame | median ms | the node over its backend\'s plain frame |', '|---|---|---|',
-    ...rows.map(([name, t, r]) => `| ${name} | ${t.toFixed(0)} | ${r === null ? '—' : `×${r.toFixed(2)}`} |`)].join('\n');
+    ...rows.map(([name, t, r]) => `| ${name} | ${t.toFixed(0)} | ${r === null ? '—' : `×${r.toFixed(2)}`} |`),
+    ...(isotropic.length === 0 ? [] : ['', 'The isotropic blur (issue 20) in the same rounds, each path against itself with one kernel (the default):', '',
+      '| frame | median ms | over the same path with one kernel |', '|---|---|---|',
+      ...isotropic.map(([name, t, r]) => `| ${name} | ${t.toFixed(0)} | ×${r.toFixed(2)} |`)])].join('\n');
 }
 
 /**
