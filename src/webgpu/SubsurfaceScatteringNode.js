@@ -1,9 +1,9 @@
 // The WebGPURenderer version of the pipeline: a node for three's RenderPipeline, used as three's
 // display nodes are. Its input is a scene pass whose MRT is subsurfaceMRT() (stage 2: the
 // subsurface node materials write the diffuse light and the surface there); the node runs stage 3,
-// the two separable blur passes (with kernelGroups, the isotropic blur's groups: a horizontal
-// pass per group, one vertical pass summing them), before the frame (updateBefore), and is itself
-// stage 4, the compose. With a `light` it runs stage 1 too (./1-light-depth/LightStageNode.js): the light
+// the two separable blur passes (with kernelGroups, the isotropic blur's groups: the horizontal
+// pass writes each to an attachment of its own, the vertical one sums them), before the frame
+// (updateBefore), and is itself stage 4, the compose. With a `light` it runs stage 1 too (./1-light-depth/LightStageNode.js): the light
 // depth pass for transmittance, and the subsurface materials' transmittance uniforms, before the
 // scene pass draws them. What the WebGL path's orchestrator does per frame
 // (src/SubsurfaceScattering.js, steps 0 to 5) happens here in the same order, with the same CPU
@@ -90,10 +90,10 @@ export class SubsurfaceScatteringNode extends Node {
     this._scatteredNode = /** @type {any} */ (passTexture(this, this._scatteredTarget.texture));
     /** @type {Map<string, NodeMaterial[]>} the blur passes' materials by their compile-time switches (the horizontal ones, then the vertical) */
     this._materials = new Map();
-    // The isotropic blur, built when a frame first blurs in groups: a target per group between
-    // the passes, the fractions' texture and each group's energy share.
-    /** @type {RenderTarget[]} */
-    this._groupTargets = [];
+    // The isotropic blur, built when a frame first blurs in groups: the multi-target between the
+    // passes (an attachment per group) for each count, the fractions' texture and each group's energy share.
+    /** @type {Map<number, RenderTarget>} */
+    this._groupTargets = new Map();
     this._groupFractions = new GroupFractionTexture();
     this._groupFractionNode = null;
     this._groupEnergies = Array.from({ length: MAX_KERNEL_GROUPS }, () => uniform(new Vector3()));
@@ -262,10 +262,9 @@ export class SubsurfaceScatteringNode extends Node {
   }
 
   /**
-   * The blur materials for a frame of `groups` groups (1: one kernel): [horizontal, vertical], or
-   * with groups a horizontal pass per group, then the vertical one; built once per set of
-   * compile-time switches (taps, depth rule, MSAA, groups) and kept, so 'auto' switching between
-   * one kernel and groups as a head zooms compiles nothing twice.
+   * The blur materials for a frame of `groups` groups (1: one kernel): [horizontal, vertical],
+   * built once per set of compile-time switches (taps, depth rule, MSAA, groups) and kept, so
+   * 'auto' switching between one kernel and groups as a head zooms compiles nothing twice.
    */
   _blurMaterials(samples, coverage, groups) {
     const key = JSON.stringify([samples, this.followSurface, this.foreshortening, coverage, groups]);
@@ -285,12 +284,12 @@ export class SubsurfaceScatteringNode extends Node {
       ];
     } else {
       this._groupFractionNode ??= texture(this._groupFractions.texture);
-      const lights = this._groupTargets.slice(0, groups).map((target) => texture(target.texture));
+      const { textures } = this._groupTargets.get(groups);
+      const lights = textures.map((t) => texture(t));
+      const split = { count: groups, fractions: this._groupFractionNode };
       materials = [
-        ...lights.map((_, index) => material(subsurfaceBlurNode({
-          ...common, axis: 0, diffuse, groups: { fractions: this._groupFractionNode, index, energy: this._groupEnergies[index] },
-        }), `SubsurfaceBlur(horizontal, group ${index + 1} of ${groups})`)),
-        material(subsurfaceBlurNode({ ...common, axis: 1, diffuse: lights[0], groups: { fractions: this._groupFractionNode, lights } }), `SubsurfaceBlur(vertical, ${groups} groups)`),
+        material(subsurfaceBlurNode({ ...common, axis: 0, diffuse, groups: { ...split, names: textures.map((t) => t.name), energies: this._groupEnergies } }), `SubsurfaceBlur(horizontal, ${groups} groups)`),
+        material(subsurfaceBlurNode({ ...common, axis: 1, diffuse: lights[0], groups: { ...split, lights } }), `SubsurfaceBlur(vertical, ${groups} groups)`),
       ];
     }
     this._materials.set(key, materials);
@@ -303,12 +302,13 @@ export class SubsurfaceScatteringNode extends Node {
    * @param {ReturnType<typeof import('../3-blur/kernelGroups.js').kernelGroups>} grouping
    */
   _groupFrame(grouping, width, height) {
-    while (this._groupTargets.length < grouping.count) {
-      const target = new RenderTarget(1, 1, { type: HalfFloatType, depthBuffer: false });
-      target.texture.name = `subsurface.horizontalGroup${this._groupTargets.length + 1}`;
-      this._groupTargets.push(target);
+    let target = this._groupTargets.get(grouping.count);
+    if (!target) {
+      target = new RenderTarget(1, 1, { type: HalfFloatType, depthBuffer: false, count: grouping.count });
+      target.textures.forEach((t, g) => { t.name = `subsurfaceGroup${g + 1}`; }); // the horizontal pass's mrt() names
+      this._groupTargets.set(grouping.count, target);
     }
-    for (const target of this._groupTargets) target.setSize(width, height);
+    target.setSize(width, height);
     const fractions = this._groupFractions.update(grouping, this.footprintTable.table);
     if (this._groupFractionNode) this._groupFractionNode.value = fractions;
     groupEnergies(grouping).forEach((rgb, g) => this._groupEnergies[g].value.fromArray(rgb));
@@ -354,18 +354,14 @@ export class SubsurfaceScatteringNode extends Node {
     if (groups > 1) this._groupFrame(this.plan.groupings[0], width, height);
     else this._horizontalTarget.setSize(width, height);
     this._scatteredTarget.setSize(width, height);
-    const materials = this._blurMaterials(this.plan.samples, coverage, groups);
-    const horizontalTargets = groups > 1 ? this._groupTargets : [this._horizontalTarget];
+    const [horizontal, vertical] = this._blurMaterials(this.plan.samples, coverage, groups);
 
     _rendererState = RendererUtils.resetRendererState(renderer, _rendererState);
-    // The horizontal pass (once per group): the first renders the scene pass first (its texture is the input).
-    materials.slice(0, -1).forEach((material, g) => {
-      _quadMesh.material = material;
-      _quadMesh.name = groups > 1 ? `Subsurface blur [ horizontal, group ${g + 1} ]` : 'Subsurface blur [ horizontal ]';
-      renderer.setRenderTarget(horizontalTargets[g]);
-      _quadMesh.render(renderer);
-    });
-    _quadMesh.material = materials[materials.length - 1];
+    _quadMesh.material = horizontal;
+    _quadMesh.name = 'Subsurface blur [ horizontal ]';
+    renderer.setRenderTarget(groups > 1 ? this._groupTargets.get(groups) : this._horizontalTarget);
+    _quadMesh.render(renderer); // renders the scene pass first (its texture is this material's input)
+    _quadMesh.material = vertical;
     _quadMesh.name = 'Subsurface blur [ vertical ]';
     renderer.setRenderTarget(this._scatteredTarget);
     _quadMesh.render(renderer);
@@ -401,8 +397,8 @@ export class SubsurfaceScatteringNode extends Node {
     this._lightStage?.dispose();
     this._horizontalTarget.dispose();
     this._scatteredTarget.dispose();
-    for (const target of this._groupTargets) target.dispose();
-    this._groupTargets = [];
+    for (const target of this._groupTargets.values()) target.dispose();
+    this._groupTargets.clear();
     this._groupFractions.dispose();
     this.footprintTable.dispose();
     this.profileLookup.dispose();

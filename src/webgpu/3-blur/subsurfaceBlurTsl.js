@@ -6,11 +6,11 @@
 // ProfileLookup), filled by the same JS.
 // With `groups` it is one pass of the isotropic blur (kernelGroups.js; the GLSL's SSS_GROUPS > 1
 // branch and shaders/3-blur/kernelGroups.glsl): each footprint's energy is split between the groups
-// by GroupFractionTexture, the horizontal pass runs once per group (its own target: halves, where
-// the GLSL packs four groups in two integer texels), and the vertical pass reads every group's
-// texel at each tap and sums the groups, each normalised by its own weight.
+// by GroupFractionTexture; the horizontal pass writes each group to its own attachment of one
+// multi-target (halves, where the GLSL packs four groups in two integer texels), and the vertical
+// pass reads every group's texel at each tap and sums the groups, each normalised by its own weight.
 import {
-  Break, Fn, If, Loop, all, clamp, float, floor, greaterThan, int, inverseSqrt, ivec2, log2, max, min, mix, screenCoordinate,
+  Break, Fn, If, Loop, all, clamp, float, floor, greaterThan, int, inverseSqrt, ivec2, log2, mat4, max, min, mix, mrt, screenCoordinate,
   select, textureLoad, vec3, vec4,
 } from 'three/tsl';
 import { FOOTPRINT_ROWS, FOOTPRINT_SCALES } from '../../profiles/footprints.js';
@@ -43,10 +43,12 @@ const normalised = (sum, weightSum, fallback) => vec3(
  * @param {number} o.profileSize its texels per row
  * @param {object} o.footprints texture node of FootprintTable.texture
  * @param {object} o.uniforms { kernelRadiusMm, strength, projectionScale, resolution, depthFalloff, perspective, mmToWorld, marginalRangeMm }
- * @param {object} [o.groups] the isotropic blur (absent: one kernel): { fractions: texture node of
- *   GroupFractionTexture; horizontal: index (the group this pass writes, its light times the
- *   group's planned share) and energy (uniform vec3: its share of the profile's energy, for pixels
- *   that do no work); vertical: lights (each group's horizontal output; `diffuse` is the first) }
+ * @param {object} [o.groups] the isotropic blur (absent: one kernel): { count, fractions: texture
+ *   node of GroupFractionTexture; horizontal: names (the multi-target's attachment of each group,
+ *   its light times the group's planned share) and energies (uniform vec3s: each group's share of
+ *   the profile's energy, for pixels that do no work); vertical: lights (each group's attachment;
+ *   `diffuse` is the first) }
+ * @returns {object} the fragment node; the horizontal pass in groups an mrt() of the groups' outputs
  */
 export function subsurfaceBlurNode(o) {
   const { axis, samples, uniforms: u, groups } = o;
@@ -54,10 +56,11 @@ export function subsurfaceBlurNode(o) {
   const scale = screenScale(u);
   const sample = surfaceSample(o);
   const slopeAt = surfaceSlope(sample, u, axis);
-  // The lights the taps read and the group each sum is of: one kernel one light and no group; a
-  // horizontal group pass the diffuse light, its own group; the vertical group pass every group.
+  // The lights the taps read and the group each sum is of: one kernel one light and no group; the
+  // horizontal group pass the diffuse light for every group; the vertical one each group's own.
   const lights = axis === 1 && groups ? groups.lights : [o.diffuse];
-  const sumGroups = !groups ? [null] : axis === 0 ? [groups.index] : lights.map((_, g) => g);
+  const sumGroups = groups ? Array.from({ length: groups.count }, (_, g) => g) : [null];
+  const lightOf = (k) => (lights.length === 1 ? 0 : k); // the light sum k blurs
   const tapWeight = surfaceTap(sample, u, { ...o, lights });
   const profileAt = readProfile(o.profile, o.profileSize);
   const resolutionAlong = along(u.resolution, axis);
@@ -92,23 +95,24 @@ export function subsurfaceBlurNode(o) {
       });
       const kept = weight0.add(weight1);
       If(kept.greaterThan(0), () => {
-        sums.forEach((sum, k) => sum.addAssign(parts[k].mul(tap0.colours[k].mul(weight0).add(colours1[k].mul(weight1)))));
+        sums.forEach((sum, k) => sum.addAssign(parts[k].mul(tap0.colours[lightOf(k)].mul(weight0).add(colours1[lightOf(k)].mul(weight1)))));
         weightSums.forEach((weightSum, k) => weightSum.addAssign(parts[k].mul(kept)));
       });
     });
   };
 
-  return Fn(() => {
+  const splits = axis === 0 && groups; // the horizontal pass in groups: one output per group
+  const call = Fn(() => {
     const pixel = ivec2(screenCoordinate.xy).toVar();
     const centre = sample.centreAt(pixel);
     const colour = centre.colour;
     // Each light's centre colour (the groups' texels share the coverage), and what a pixel that
-    // does no work writes: its light as it is, or (a horizontal group pass) the group's share of it.
+    // does no work writes: its light as it is, or (the horizontal group pass) each group's share of it.
     const centres = [colour, ...lights.slice(1).map((light) => sample.colourOf(textureLoad(light, pixel).rgb, centre.coverage))];
     const unblurred = centres.slice(1).reduce((sum, c) => sum.add(c), colour).toVar();
-    const unsplit = axis === 0 && groups ? colour.mul(groups.energy).toVar() : unblurred;
+    const unsplit = splits ? groups.energies.slice(0, groups.count).map((energy) => colour.mul(energy).toVar()) : [unblurred];
     // Not a subsurface pixel: pass through so the next pass sees the same mask.
-    const result = vec4(unsplit, 0).toVar();
+    const results = unsplit.map((light) => vec4(light, 0).toVar());
     If(centre.coverage.greaterThan(0), () => {
       const surface = centre.surface;
       const stepPx = along(scale.pixelsPerMm(surface), axis).toVar();
@@ -119,7 +123,7 @@ export function subsurfaceBlurNode(o) {
         const tilt = slope.div(pixelWorld);
         stepPx.mulAssign(inverseSqrt(tilt.mul(tilt).add(1))); // cos(theta)
       }
-      result.assign(sample.covered(unsplit, centre.coverage));
+      results.forEach((result, k) => result.assign(sample.covered(unsplit[k], centre.coverage)));
       // Below half a pixel the kernel cannot move light to another pixel: no work.
       If(stepPx.mul(u.kernelRadiusMm).greaterThanEqual(MIN_KERNEL_PIXELS), () => {
         // The table row nearest this pixel's scale (src/profiles/footprints.js's footprintRowOf).
@@ -128,10 +132,10 @@ export function subsurfaceBlurNode(o) {
         const energyBelow = profileAt(1, float(0.5).div(stepPx), u.marginalRangeMm).toVar();
         const centreParts = partsOf(energyBelow.mul(2), 0, row);
         const weightSums = centreParts.map((part) => vec3(part).toVar());
-        const sums = centreParts.map((part, k) => centres[k].mul(part).toVar());
-        // A horizontal group pass: the group's weight and the whole kernel's as planned, dropped
-        // taps and all (the group's planned share, below).
-        const plannedGroup = vec3(centreParts[0]).toVar();
+        const sums = centreParts.map((part, k) => centres[lightOf(k)].mul(part).toVar());
+        // The horizontal group pass: each group's weight and the whole kernel's as planned, dropped
+        // taps and all (the groups' planned shares, below).
+        const plannedGroups = splits ? centreParts.map((part) => vec3(part).toVar()) : [];
         const planned = energyBelow.mul(2).toVar();
         const lastEdge = int(0).toVar(); // pixels; footprint j covers lastEdge + 1 .. edge on each side
         Loop({ start: int(0), end: int(blocks), type: 'int', condition: '<=' }, ({ i: j }) => {
@@ -149,8 +153,8 @@ export function subsurfaceBlurNode(o) {
           const offsetPx = select(last, inside, min(inside, float(edge))).toVar();
           addTap(offsetPx, parts, pixel, surface.x, slope, centres, sums, weightSums);
           addTap(offsetPx.negate(), parts, pixel, surface.x, slope, centres, sums, weightSums);
-          if (axis === 0 && groups) {
-            plannedGroup.addAssign(parts[0].mul(2));
+          if (splits) {
+            plannedGroups.forEach((plannedGroup, k) => plannedGroup.addAssign(parts[k].mul(2)));
             planned.addAssign(weight.mul(2));
           }
           If(last, () => { Break(); });
@@ -158,17 +162,22 @@ export function subsurfaceBlurNode(o) {
           lastEdge.assign(edge);
         });
         let blurred;
-        if (!groups) blurred = mix(colour, sums[0].div(weightSums[0]), u.strength);
+        if (!groups) blurred = [mix(colour, sums[0].div(weightSums[0]), u.strength)];
         // Group g: its light over its own kept weight (the one-kernel rule, per group), times its
         // planned share, so the groups sum to the one-kernel blur with nothing dropped and keep
         // their shares at depth edges (the GLSL's horizontal pass, kernelGroups.glsl).
-        else if (axis === 0) blurred = plannedGroup.div(planned).mul(mix(colour, normalised(sums[0], weightSums[0], colour), u.strength));
+        else if (splits) blurred = sums.map((sum, k) => plannedGroups[k].div(planned).mul(mix(colour, normalised(sum, weightSums[k], colour), u.strength)));
         // The groups' sum, each normalised by its own weight.
-        else blurred = mix(unblurred, sums.map((sum, k) => normalised(sum, weightSums[k], centres[k])).reduce((a, b) => a.add(b)), u.strength);
-        blurred = vec3(blurred).toVar();
-        result.assign(sample.covered(select(finite3(blurred), blurred, unsplit), centre.coverage));
+        else blurred = [mix(unblurred, sums.map((sum, k) => normalised(sum, weightSums[k], centres[k])).reduce((a, b) => a.add(b)), u.strength)];
+        blurred.forEach((light, k) => {
+          const value = vec3(light).toVar();
+          results[k].assign(sample.covered(select(finite3(value), value, unsplit[k]), centre.coverage));
+        });
       });
     });
-    return result;
+    // The horizontal group pass's outputs as a matrix's columns (one value out of a TSL function).
+    return splits ? mat4(...results, ...Array(4 - results.length).fill(vec4(0))).toVar() : results[0];
   })();
+  if (!splits) return call;
+  return mrt(Object.fromEntries(groups.names.map((name, g) => [name, call.element(g)])));
 }
