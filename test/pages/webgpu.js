@@ -192,6 +192,7 @@ const memoryOf = (renderer) => ({ ...renderer.info.memory });
  * material, and the scene drawn plainly again).
  */
 async function disposal({ backend = 'webgpu', width = 96, height = 54 }) {
+  // One kernel, then the isotropic blur's four groups (its multi-target, fraction table and materials) too.
   const renderer = await createRenderer(width, height, { backend });
   const material = new THREE.MeshStandardMaterial({ color: 0xffccaa, roughness: 0.6 });
   const { scene, camera, mesh } = boxScene(material);
@@ -200,13 +201,23 @@ async function disposal({ backend = 'webgpu', width = 96, height = 54 }) {
   const skin = NODE.subsurfaceMaterial(material, { widthMm: 5 });
   mesh.material = skin;
   const { scenePass, node, pipeline } = subsurfacePipeline(renderer, scene, camera, { sss: { worldUnitInMm: 100 } });
-  pipeline.render();
+  // A frame per setting: the node plans once per frame (updateBefore, NodeUpdateType.FRAME), and
+  // three's frame advances with the animation frame, not with each render call.
+  const frame = async () => {
+    pipeline.render();
+    await new Promise(requestAnimationFrame);
+  };
+  await frame();
+  const plans = [node.plan.groups];
   node.scattering = false;
-  pipeline.render();
+  await frame();
+  const skipped = !node.plan.blur;
   node.scattering = true;
-  pipeline.render();
+  node.kernelGroups = 4;
+  await frame();
+  plans.push(node.plan.groups);
   const during = memoryOf(renderer);
-  const blurred = node.plan.blur;
+  const blurred = skipped && node.plan.blur && plans.join() === '1,4';
   node.dispose();
   pipeline.dispose();
   scenePass.dispose();
@@ -270,10 +281,10 @@ async function debugViews({ backend = 'webgpu', width = 96, height = 54 }) {
  * its subsurface materials as node materials, the scene pass multisampled with `samples`, and the
  * scene's light for transmittance where `transmittance`: the diffuse attachment (float, before
  * the blur), whether the light depth pass ran, and the node's output in each of `views` (linear,
- * float). `lightZ` moves the light (+10: in front of the back-lit slab).
+ * float). `lightZ` moves the light (+10: in front of the back-lit slab); `kernelGroups` the node's.
  */
 async function labScene({
-  backend = 'webgpu', width = 96, height = 54, scene: name = 'backlit', transmittance = true, samples = 0, lightZ, material = {}, views = [], ...scene
+  backend = 'webgpu', width = 96, height = 54, scene: name = 'backlit', transmittance = true, samples = 0, lightZ, material = {}, views = [], kernelGroups = 1, ...scene
 }) {
   const renderer = await sharedRenderer(backend, width, height);
   const built = window.lab.buildScene(name, { width, height, ...scene });
@@ -281,7 +292,7 @@ async function labScene({
   const skins = new Map(built.subsurface.map((plain) => [plain, NODE.subsurfaceMaterial(plain, { widthMm: 1, ...material })]));
   built.scene.traverse((object) => { if (skins.has(object.material)) object.material = skins.get(object.material); });
   const { scenePass, node, pipeline } = subsurfacePipeline(renderer, built.scene, built.camera, {
-    type: THREE.FloatType, samples, sss: { worldUnitInMm: window.lab.DEFAULTS.worldUnitInMm, light: transmittance ? built.light : null },
+    type: THREE.FloatType, samples, sss: { worldUnitInMm: window.lab.DEFAULTS.worldUnitInMm, light: transmittance ? built.light : null, kernelGroups },
   });
   const target = new THREE.RenderTarget(width, height, { type: THREE.FloatType });
   const render = () => {

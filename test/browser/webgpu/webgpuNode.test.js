@@ -7,11 +7,12 @@
 //   lit from behind, the transmittance view (the ears' glow) within 8/255 of the WebGL pipeline's;
 // - a subsurface material drawn outside a subsurface pass renders exactly as three's own material;
 // - the debug views add up (diffuse + specular = final on subsurface pixels);
-// - a multisampled scene pass: on the WebGL 2 backend the WebGL pipeline's MSAA image; on WebGPU
+// - a multisampled scene pass: on the WebGL 2 backend the WebGL pipeline's MSAA image, with one
+//   kernel and with the isotropic blur's four groups (kernelGroups 4); on WebGPU
 //   (its surface attachment in half float: WebGPU multisamples no 32-bit float format) as close
 //   to it as WebGPU's own MSAA frame is to WebGLRenderer's;
-// - dispose returns the renderer to its baseline (renderer.info.memory: geometries, textures,
-//   render targets, programs; one attribute stays, the full-screen quad's geometry that the node,
+// - dispose, after frames with one kernel, with scattering off and in four groups, returns the
+//   renderer to its baseline (renderer.info.memory: geometries, textures, render targets, programs; one attribute stays, the full-screen quad's geometry that the node,
 //   like three's own display nodes, shares between all instances).
 import { describe, it, expect, beforeAll, afterAll } from 'vitest';
 import { evaluateFloats, runLab } from '../../harness/page.js';
@@ -99,12 +100,18 @@ for (const backend of BACKENDS) {
       // The lab's subsurface slab among other materials on a coloured background: silhouettes.
       const scene = { scene: 'mixed', width: 96, height: 54, samples: 4 };
       const node = await evaluateFloats(page, (o) => window.wgpu.labScene(o), { ...scene, backend, transmittance: false, views: ['final'] });
-      // The node blurs with one kernel: the WebGL pipeline's one-kernel blur (kernelGroups 1) is its match.
+      // The node's default, one kernel, against the WebGL pipeline's (kernelGroups 1).
       const webgl = await runLab(page, { ...scene, type: 'float', sss: { kernelGroups: 1 }, reads: ['output'] });
       const d = difference(node.final, webgl.output);
       if (backend === 'webgl') {
         // The same GL rasterizer: measured 2026-12-01 max 8.4e-4, mean 4.2e-5 (without MSAA: 5.9e-4, 4.0e-5).
         expect(d.max).toBeLessThan(2e-3);
+        // And the isotropic blur's four groups, whose coverage-weighted halves both renderers carry
+        // between the passes (measured 2026-12-02: max 8.4e-4, mean 4.1e-5, as with one kernel).
+        const webglGroups = (await runLab(page, { ...scene, type: 'float', sss: { kernelGroups: 4 }, reads: ['output'] })).output;
+        const nodeGroups = (await evaluateFloats(page, (o) => window.wgpu.labScene(o), { ...scene, backend, transmittance: false, views: ['final'], kernelGroups: 4 })).final;
+        expect(difference(nodeGroups, webglGroups).max).toBeLessThan(2e-3);
+        expect(difference(node.final, webglGroups).max).toBeGreaterThan(2e-3); // the groups change this image by more than the bound
         return;
       }
       // WebGPU's sample pattern is not the GL one: its plain MSAA frame differs from WebGLRenderer's
@@ -121,7 +128,7 @@ for (const backend of BACKENDS) {
 
     it("dispose returns the renderer to its baseline (renderer.info.memory)", async () => {
       const { before, during, after, blurred } = await page.evaluate((b) => window.wgpu.disposal({ backend: b }), backend);
-      expect(blurred).toBe(true);
+      expect(blurred).toBe(true); // one kernel, no blur with scattering off, then four groups
       expect(during.textures).toBeGreaterThan(before.textures); // the node's targets and tables were counted
       for (const key of ['geometries', 'textures', 'renderTargets', 'programs']) expect(after[key], key).toBe(before[key]);
     });

@@ -126,7 +126,7 @@ for (const backend of BACKENDS) {
       // strength on the slab (10 units away), which fades the diffuse light as it fogs the colour.
       const scene = { thicknessMm: 1, spot: true, fog: [5, 15] };
       const node = await backlit({ backend, ...scene, views: ['final'] });
-      // The node blurs with one kernel: the WebGL pipeline's one-kernel blur (kernelGroups 1) is its match.
+      // The node's default, one kernel, against the WebGL pipeline's (kernelGroups 1).
       const webgl = await runLab(page, {
         scene: 'backlit', ...SIZE, ...scene, worldUnitInMm: WORLD_UNIT_IN_MM, transmittance: true, type: 'float', sss: { kernelGroups: 1 }, material: { shrinkMm: SHRINK_MM }, reads: ['diffuse', 'output'],
       });
