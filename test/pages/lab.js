@@ -338,6 +338,16 @@ function lightDepthCards() {
   const points = new THREE.Points(new THREE.PlaneGeometry(2, 2, 32, 32), new THREE.PointsMaterial({ size: 40, sizeAttenuation: false }));
   points.position.set(1, -1, 6);
   scene.add(points);
+  // Two small cards turned 60° from the light, in front of the upper ones: the light enters one at
+  // cos 60°; the other has no normals, and lets the whole light in.
+  const tilted = (x, normals) => {
+    const mesh = card(new THREE.MeshStandardMaterial(), x, 0.5, 4);
+    mesh.geometry = new THREE.PlaneGeometry(0.6, 0.6);
+    if (!normals) mesh.geometry.deleteAttribute('normal');
+    mesh.rotation.y = Math.PI / 3;
+  };
+  tilted(0.5, true);
+  tilted(-0.5, false);
   return { scene, light, mapped };
 }
 
@@ -350,6 +360,12 @@ function cardDepths(data, stride) {
   ].map(([name, x, y]) => [name, depthAt(x, y)]));
 }
 
+/** The entry cosines (cardDepths.js's CARD_COSINES names) from the same map: each texel's second float. */
+function cardCosines(data, stride) {
+  const at = (x, y) => data[(Math.floor(((y + 2) / 4) * 64) * 64 + Math.floor(((x + 2) / 4) * 64)) * stride + 1];
+  return { tilted: at(0.5, 0.5), tiltedNoNormals: at(-0.5, 0.5), unclipped: at(-0.5, -1.5) };
+}
+
 /** Builds one of SCENES with the defaults above (aspect from width and height). */
 function buildScene(name, options = {}) {
   const o = { ...DEFAULTS, ...options };
@@ -358,6 +374,6 @@ function buildScene(name, options = {}) {
 
 window.lab = {
   THREE, SSS, EffectComposer, RenderPass, ShaderPass, OutputPass, createRenderer, createComposer, read, dataTexture, run, buildScene, flat, disposeFlatRig, flatScene, DEFAULTS,
-  lightDepthCards, cardDepths,
+  lightDepthCards, cardDepths, cardCosines,
 };
 window.testReady = true;

@@ -343,7 +343,7 @@ async function lightDepthCards({ backend = 'webgpu' }) {
   mapped.material.dispose();
   const afterOneDisposed = target._shaped.size;
   target.dispose();
-  return { samples: window.lab.cardDepths(rows, 2), variants, afterOneDisposed, left: target._shaped.size };
+  return { samples: window.lab.cardDepths(rows, 2), cosines: window.lab.cardCosines(rows, 2), variants, afterOneDisposed, left: target._shaped.size };
 }
 
 /** One of the WebGL lab's scenes drawn plainly by WebGPURenderer on `backend` (a scene pass, MSAA with `samples`), linear float RGBA. */

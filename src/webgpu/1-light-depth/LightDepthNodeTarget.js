@@ -6,17 +6,24 @@
 // render object function (as three's shadow maps do).
 import { MeshBasicNodeMaterial, NodeMaterial, RenderTarget, RendererUtils } from 'three/webgpu';
 import { DoubleSide, FloatType, NearestFilter, RGFormat } from 'three';
-import { abs, dot, normalView, positionView, vec3, vec4 } from 'three/tsl';
+import { Fn, abs, dot, float, normalView, positionView, vec3, vec4 } from 'three/tsl';
 import { LightDepthView, boundsNoVolume } from '../../1-light-depth/LightDepthView.js';
 
 let _state;
+
+/**
+ * |N·L| where the mesh has normals; a mesh without them lets the whole light in, as on the WebGL
+ * path (there the missing attribute reads 0 and the cosine is 1; three's normalView would take
+ * (0, 1, 0) and warn). Decided per geometry when three builds the material for an object.
+ */
+const entryCosine = (toLight) => Fn((builder) => (builder.geometry?.hasAttribute('normal') === false ? float(1) : abs(dot(normalView, toLight))))();
 
 /**
  * Distance along the light's view axis: linear, unlike the depth buffer (Jimenez et al. 2010); and
  * the entry cosine |N·L| (shaders/1-light-depth/lightDepth.frag.glsl), towards the light along the
  * view axis (directional: orthographic) or to the eye (spot). A texture channel for each.
  */
-const lightDepthOutput = (toLight) => vec4(positionView.z.negate(), abs(dot(normalView, toLight)), 0, 1);
+const lightDepthOutput = (toLight) => vec4(positionView.z.negate(), entryCosine(toLight), 0, 1);
 const LIGHT_DEPTH_PERSPECTIVE = /*@__PURE__*/ lightDepthOutput(positionView.negate().normalize()); // a spot light's camera
 const LIGHT_DEPTH_ORTHOGRAPHIC = /*@__PURE__*/ lightDepthOutput(vec3(0, 0, 1)); // a directional light's
 /** The output for the light's camera. */

@@ -5,7 +5,7 @@ import { mat4 } from 'gl-matrix';
 import { openPage, runLab } from '../../harness/page.js';
 import { at } from '../../harness/images.js';
 import { transmittedFractionOracle, thicknessFromLightDepth } from '../../oracle/transmittance.js';
-import { CARD_DEPTHS } from './cardDepths.js';
+import { CARD_COSINES, CARD_DEPTHS } from './cardDepths.js';
 
 let page;
 beforeAll(async () => { page = await openPage('/test/pages/lab.html'); });
@@ -184,7 +184,7 @@ describe('transmittance', () => {
 describe('light depth of what the light sees', () => {
   it('keeps cut-outs (map or alphaMap alpha test, with the texture\'s offset) and clipping planes, leaves out glass, hidden materials and points, and puts every material back', async () => {
     const r = await page.evaluate(async () => {
-      const { SSS, createRenderer, read, lightDepthCards, cardDepths } = window.lab;
+      const { SSS, createRenderer, read, lightDepthCards, cardDepths, cardCosines } = window.lab;
       const renderer = createRenderer(16, 16);
       renderer.localClippingEnabled = true;
       const { scene, light, mapped } = lightDepthCards();
@@ -197,15 +197,17 @@ describe('light depth of what the light sees', () => {
       const after = [];
       scene.traverse((o) => { if (o.material) after.push(o.material); });
       const samples = cardDepths(data, 4);
+      const cosines = cardCosines(data, 4);
       const variants = target._shaped.size;
       mapped.material.dispose();
       const afterOneDisposed = target._shaped.size;
       target.dispose();
       renderer.dispose();
-      return { samples, same: before.length === after.length && before.every((m, i) => m === after[i]), variants, afterOneDisposed, left: target._shaped.size };
+      return { samples, cosines, same: before.length === after.length && before.every((m, i) => m === after[i]), variants, afterOneDisposed, left: target._shaped.size };
     });
     // Distances along the light's axis (version 0.1 drew every card whole: 7 everywhere above, 4 below right).
     for (const [name, depth] of Object.entries(CARD_DEPTHS)) expect(r.samples[name], name).toBeCloseTo(depth, 4);
+    for (const [name, cosine] of Object.entries(CARD_COSINES)) expect(r.cosines[name], name).toBeCloseTo(cosine, 3);
     expect(r.same).toBe(true);
     expect(r.variants).toBe(3); // one depth material per cut-out or clipped material, the rest share one
     expect(r.afterOneDisposed).toBe(2);

@@ -19,7 +19,7 @@ import { evaluateFloats, runLab } from '../../harness/page.js';
 import { at } from '../../harness/images.js';
 import { BACKENDS, openWebgpuPage } from '../../harness/webgpuBrowser.js';
 import { thicknessFromLightDepth, transmittedFractionOracle } from '../../oracle/transmittance.js';
-import { CARD_DEPTHS } from '../1-light-depth/cardDepths.js';
+import { CARD_COSINES, CARD_DEPTHS } from '../1-light-depth/cardDepths.js';
 
 let page;
 beforeAll(async () => { page = await openWebgpuPage('/test/pages/webgpu.html'); });
@@ -154,6 +154,7 @@ for (const backend of BACKENDS) {
     it("the light depth map keeps cut-outs (map or alphaMap alpha test) and clipping (a ClippingGroup here) and leaves out glass, hidden materials and points, as the WebGL path's", async () => {
       const r = await page.evaluate((b) => window.wgpu.lightDepthCards({ backend: b }), backend);
       for (const [name, depth] of Object.entries(CARD_DEPTHS)) expect(r.samples[name], name).toBeCloseTo(depth, 4);
+      for (const [name, cosine] of Object.entries(CARD_COSINES)) expect(r.cosines[name], name).toBeCloseTo(cosine, 3);
       expect(r).toMatchObject({ variants: 3, afterOneDisposed: 2, left: 0 }); // one depth material per shaped material, freed with it
     });
 
