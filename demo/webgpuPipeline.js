@@ -36,7 +36,7 @@ export async function createWebgpuRenderer(container) {
 }
 
 /** The node's settings under the WebGL pipeline's names, as the appliers assign them. */
-const FORWARDED = ['scattering', 'profile', 'samples', 'strength', 'followSurface', 'depthThresholdMm', 'transmittance', 'debugView', 'debugDepthRange'];
+const FORWARDED = ['scattering', 'profile', 'samples', 'kernelGroups', 'strength', 'followSurface', 'depthThresholdMm', 'transmittance', 'debugView', 'debugDepthRange'];
 
 /**
  * The node dressed as the WebGL pipeline for demo/appliers.js: the settings it has forwarded,
@@ -71,12 +71,6 @@ function pipelineFacade(node, skin) {
   // No divider (the node shows one image) and no 'reference' kernel to shape.
   Object.defineProperty(facade, 'split', { get: () => 0, set() {}, enumerable: true });
   Object.defineProperty(facade, 'falloff', { get: () => undefined, set() {}, enumerable: true });
-  // The node blurs with one kernel: 'auto' is that here, a count of groups is not had.
-  Object.defineProperty(facade, 'kernelGroups', {
-    get: () => 1,
-    set(groups) { if (groups !== 'auto' && groups !== 1) facade.unsupported.add(`kernelGroups ${groups} (the node blurs with one kernel)`); },
-    enumerable: true,
-  });
   return facade;
 }
 

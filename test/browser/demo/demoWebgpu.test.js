@@ -1,6 +1,6 @@
 // The demo on WebGPURenderer (index.html?renderer=webgpu, demo/webgpuPipeline.js): in the WebGPU
 // browser (SwiftShader) it draws the head through the node, lit, and turning the scattering off
-// changes the face; in the run's shared browser, which has no WebGPU adapter, it says so and shows
+// changes the face, and so do the isotropy groups; in the run's shared browser, which has no WebGPU adapter, it says so and shows
 // the WebGL page. 320 × 180, still (frames on demand), chrome hidden for the pixels.
 import { it, expect } from 'vitest';
 import { openPage, screenshotPixels } from '../../harness/page.js';
@@ -38,6 +38,19 @@ it('?renderer=webgpu draws the head through the node: lit, and the scattering ch
   // Measured 2026-12-01: 29 % of the pixels lit; scattering off changes 8 % of them by more than
   // 2/255, the 99th percentile by 19/255 (the WebGL page's test asks the same of its divider).
   expect(d[Math.floor(0.99 * d.length)]).toBeGreaterThan(4);
+  // The isotropy control reaches the node: four groups blurred, and the face changes with them.
+  await page.evaluate(() => { window.demo.set('sss', true); window.demo.set('groups', 4); });
+  const groups = await image(page);
+  expect(await page.evaluate(() => window.demo.sss.node.plan.groups)).toBe(4);
+  const changed = (a, b) => {
+    let n = 0;
+    for (let i = 0; i < a.length; i += 4) if ([0, 1, 2].some((c) => a[i + c] !== b[i + c])) n++;
+    return n / (a.length / 4);
+  };
+  // Measured 2026-12-02: 9.7 % of the pixels change; back to one kernel, none.
+  expect(changed(on, groups)).toBeGreaterThan(0.02);
+  await page.evaluate(() => window.demo.set('groups', 1));
+  expect(changed(on, await image(page))).toBe(0);
   expect(page.problems).toEqual([]);
   await page.close();
 });
