@@ -44,7 +44,7 @@ export function autoSampleCount(radiusPx) {
  */
 export function frameGroupings(settings, pixelsPerMm) {
   const setting = settings.kernelGroups ?? 1;
-  if (setting === 1) return null; // one kernel (also a planner without groups: the WebGPU node)
+  if (setting === 1) return null; // one kernel (also a planner that names no groups)
   if (setting === 'auto' && settings.profiles.every((profile) => kernelGroupsAt(profile, pixelsPerMm, 'auto').count === 1)) return null;
   const count = setting === 'auto' ? MAX_KERNEL_GROUPS : setting;
   return settings.profiles.map((profile) => kernelGroupsAt(profile, pixelsPerMm, count));

@@ -88,12 +88,12 @@ export class SubsurfaceScatteringNode extends Node {
     this._scatteredTarget.texture.name = 'subsurface.scattered';
     /** @type {import('three/webgpu').TextureNode} what the compose adds: the scattered light (or the unblurred light when the plan skips the blur) */
     this._scatteredNode = /** @type {any} */ (passTexture(this, this._scatteredTarget.texture));
-    /** @type {Map<string, NodeMaterial[]>} the blur passes' materials by their compile-time switches (the horizontal ones, then the vertical) */
+    /** @type {Map<number, { key: string, materials: NodeMaterial[] }>} the blur passes' two materials per group count (1: one kernel), built for the switches in `key` */
     this._materials = new Map();
     // The isotropic blur, built when a frame first blurs in groups: the multi-target between the
-    // passes (an attachment per group) for each count, the fractions' texture and each group's energy share.
-    /** @type {Map<number, RenderTarget>} */
-    this._groupTargets = new Map();
+    // passes (an attachment per group), the fractions' texture and each group's energy share.
+    /** @type {RenderTarget|null} */
+    this._groupTarget = null;
     this._groupFractions = new GroupFractionTexture();
     this._groupFractionNode = null;
     this._groupEnergies = Array.from({ length: MAX_KERNEL_GROUPS }, () => uniform(new Vector3()));
@@ -263,12 +263,14 @@ export class SubsurfaceScatteringNode extends Node {
 
   /**
    * The blur materials for a frame of `groups` groups (1: one kernel): [horizontal, vertical],
-   * built once per set of compile-time switches (taps, depth rule, MSAA, groups) and kept, so
-   * 'auto' switching between one kernel and groups as a head zooms compiles nothing twice.
+   * rebuilt when a compile-time switch changes (taps, depth rule, MSAA). One pair is kept per
+   * count, so 'auto' switching between one kernel and groups as a head zooms compiles nothing twice.
    */
   _blurMaterials(samples, coverage, groups) {
-    const key = JSON.stringify([samples, this.followSurface, this.foreshortening, coverage, groups]);
-    if (this._materials.has(key)) return this._materials.get(key);
+    const key = JSON.stringify([samples, this.followSurface, this.foreshortening, coverage]);
+    const held = this._materials.get(groups);
+    if (held?.key === key) return held.materials;
+    this._freeMaterials(groups);
     const common = {
       samples, followSurface: this.followSurface, foreshorten: this.foreshortening, coverage, uniforms: this._uniforms,
       surface: this.scenePass.getTextureNode(ATTACHMENT_NAMES.SURFACE), profile: this._profileNode,
@@ -284,7 +286,7 @@ export class SubsurfaceScatteringNode extends Node {
       ];
     } else {
       this._groupFractionNode ??= texture(this._groupFractions.texture);
-      const { textures } = this._groupTargets.get(groups);
+      const { textures } = this._groupTarget;
       const lights = textures.map((t) => texture(t));
       const split = { count: groups, fractions: this._groupFractionNode };
       materials = [
@@ -292,8 +294,22 @@ export class SubsurfaceScatteringNode extends Node {
         material(subsurfaceBlurNode({ ...common, axis: 1, diffuse: lights[0], groups: { ...split, lights } }), `SubsurfaceBlur(vertical, ${groups} groups)`),
       ];
     }
-    this._materials.set(key, materials);
+    this._materials.set(groups, { key, materials });
     return materials;
+  }
+
+  /** Frees the materials of frames in `groups` groups. */
+  _freeMaterials(groups) {
+    for (const material of this._materials.get(groups)?.materials ?? []) material.dispose();
+    this._materials.delete(groups);
+  }
+
+  /** Frees the group target and the grouped materials that read it (back to one kernel, or another count). */
+  _freeGroupTarget() {
+    if (!this._groupTarget) return;
+    this._groupTarget.dispose();
+    this._groupTarget = null;
+    for (const groups of [...this._materials.keys()]) if (groups > 1) this._freeMaterials(groups);
   }
 
   /**
@@ -302,13 +318,12 @@ export class SubsurfaceScatteringNode extends Node {
    * @param {ReturnType<typeof import('../3-blur/kernelGroups.js').kernelGroups>} grouping
    */
   _groupFrame(grouping, width, height) {
-    let target = this._groupTargets.get(grouping.count);
-    if (!target) {
-      target = new RenderTarget(1, 1, { type: HalfFloatType, depthBuffer: false, count: grouping.count });
-      target.textures.forEach((t, g) => { t.name = `subsurfaceGroup${g + 1}`; }); // the horizontal pass's mrt() names
-      this._groupTargets.set(grouping.count, target);
+    if (this._groupTarget?.textures.length !== grouping.count) {
+      this._freeGroupTarget();
+      this._groupTarget = new RenderTarget(1, 1, { type: HalfFloatType, depthBuffer: false, count: grouping.count });
+      this._groupTarget.textures.forEach((t, g) => { t.name = `subsurfaceGroup${g + 1}`; }); // the horizontal pass's mrt() names
     }
-    target.setSize(width, height);
+    this._groupTarget.setSize(width, height);
     const fractions = this._groupFractions.update(grouping, this.footprintTable.table);
     if (this._groupFractionNode) this._groupFractionNode.value = fractions;
     groupEnergies(grouping).forEach((rgb, g) => this._groupEnergies[g].value.fromArray(rgb));
@@ -335,6 +350,7 @@ export class SubsurfaceScatteringNode extends Node {
     scenePass.setSize(_size.width, _size.height);
     const { width, height } = scenePass.renderTarget;
     this.plan = this._planFrame(subsurfaceMeshesOf(scene).meshes, camera, width, height);
+    if (this.kernelGroups === 1) this._freeGroupTarget(); // back to one kernel: its 8 B per pixel and group go
     const diffuse = scenePass.getTexture(ATTACHMENT_NAMES.DIFFUSE);
     if (!this.plan.blur) {
       this._scatteredNode.value = diffuse; // the compose reads the unblurred light: the output equals no SSS
@@ -359,7 +375,7 @@ export class SubsurfaceScatteringNode extends Node {
     _rendererState = RendererUtils.resetRendererState(renderer, _rendererState);
     _quadMesh.material = horizontal;
     _quadMesh.name = 'Subsurface blur [ horizontal ]';
-    renderer.setRenderTarget(groups > 1 ? this._groupTargets.get(groups) : this._horizontalTarget);
+    renderer.setRenderTarget(groups > 1 ? this._groupTarget : this._horizontalTarget);
     _quadMesh.render(renderer); // renders the scene pass first (its texture is this material's input)
     _quadMesh.material = vertical;
     _quadMesh.name = 'Subsurface blur [ vertical ]';
@@ -397,13 +413,11 @@ export class SubsurfaceScatteringNode extends Node {
     this._lightStage?.dispose();
     this._horizontalTarget.dispose();
     this._scatteredTarget.dispose();
-    for (const target of this._groupTargets.values()) target.dispose();
-    this._groupTargets.clear();
+    this._freeGroupTarget();
     this._groupFractions.dispose();
     this.footprintTable.dispose();
     this.profileLookup.dispose();
-    for (const materials of this._materials.values()) for (const material of materials) material.dispose();
-    this._materials.clear();
+    for (const groups of [...this._materials.keys()]) this._freeMaterials(groups);
     super.dispose();
   }
 }

@@ -192,7 +192,7 @@ const memoryOf = (renderer) => ({ ...renderer.info.memory });
  * material, and the scene drawn plainly again).
  */
 async function disposal({ backend = 'webgpu', width = 96, height = 54 }) {
-  // One kernel, then the isotropic blur's four groups (its multi-target, fraction table and materials) too.
+  // One kernel, then the isotropic blur's groups (its multi-target, fraction table and materials) too.
   const renderer = await createRenderer(width, height, { backend });
   const material = new THREE.MeshStandardMaterial({ color: 0xffccaa, roughness: 0.6 });
   const { scene, camera, mesh } = boxScene(material);
@@ -213,11 +213,16 @@ async function disposal({ backend = 'webgpu', width = 96, height = 54 }) {
   await frame();
   const skipped = !node.plan.blur;
   node.scattering = true;
-  node.kernelGroups = 4;
-  await frame();
-  plans.push(node.plan.groups);
-  const during = memoryOf(renderer);
-  const blurred = skipped && node.plan.blur && plans.join() === '1,4';
+  // Four groups, then three and two (each count its own multi-target and materials, the last
+  // count's freed), then one kernel again (the group target freed).
+  let during;
+  for (const groups of [4, 3, 2, 1]) {
+    node.kernelGroups = groups;
+    await frame();
+    plans.push(node.plan.groups);
+    if (groups === 4) during = memoryOf(renderer);
+  }
+  const blurred = skipped && node.plan.blur && plans.join() === '1,4,3,2,1';
   node.dispose();
   pipeline.dispose();
   scenePass.dispose();

@@ -3,7 +3,7 @@
 // fractions of kernelGroups.js rounded to the 10-bit unorms of its integer texture, so both
 // renderers blur with the same numbers) in a float RGBA texture, group g's RGB fractions of
 // footprint table row r in texel row g · FOOTPRINT_ROWS + r, column 0 the centre and j + 1
-// footprint j. Each group's pass reads its own row, in floats, which both of WebGPURenderer's
+// footprint j. The blur reads each group's row, in floats, which both of WebGPURenderer's
 // backends load alike. Refilled only when the grouping or the footprint table changes (both are
 // cached by scale step: a zoom refills it rarely).
 import { DataTexture, FloatType, NearestFilter, RGBAFormat } from 'three';

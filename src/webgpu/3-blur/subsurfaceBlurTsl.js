@@ -108,12 +108,17 @@ export function subsurfaceBlurNode(o) {
     const colour = centre.colour;
     // Each light's centre colour (the groups' texels share the coverage), and what a pixel that
     // does no work writes: its light as it is, or (the horizontal group pass) each group's share of it.
-    const centres = [colour, ...lights.slice(1).map((light) => sample.colourOf(textureLoad(light, pixel).rgb, centre.coverage))];
+    const texels = lights.slice(1).map((light) => textureLoad(light, pixel).rgb.toVar());
+    const centres = [colour, ...texels.map((rgb) => sample.colourOf(rgb, centre.coverage))];
+    // The vertical group pass: a centre whose groups are not all finite (a half past its range) is
+    // off the mask, as kernelGroups.glsl's sssGroupsAt has it.
+    const coverage = texels.length === 0 ? centre.coverage
+      : select(finite3(texels.reduce((sum, rgb) => sum.add(rgb), textureLoad(lights[0], pixel).rgb)), centre.coverage, float(0)).toVar();
     const unblurred = centres.slice(1).reduce((sum, c) => sum.add(c), colour).toVar();
     const unsplit = splits ? groups.energies.slice(0, groups.count).map((energy) => colour.mul(energy).toVar()) : [unblurred];
     // Not a subsurface pixel: pass through so the next pass sees the same mask.
     const results = unsplit.map((light) => vec4(light, 0).toVar());
-    If(centre.coverage.greaterThan(0), () => {
+    If(coverage.greaterThan(0), () => {
       const surface = centre.surface;
       const stepPx = along(scale.pixelsPerMm(surface), axis).toVar();
       const slope = float(0).toVar(); // depth change per pixel along the axis, world units
@@ -123,7 +128,7 @@ export function subsurfaceBlurNode(o) {
         const tilt = slope.div(pixelWorld);
         stepPx.mulAssign(inverseSqrt(tilt.mul(tilt).add(1))); // cos(theta)
       }
-      results.forEach((result, k) => result.assign(sample.covered(unsplit[k], centre.coverage)));
+      results.forEach((result, k) => result.assign(sample.covered(unsplit[k], coverage)));
       // Below half a pixel the kernel cannot move light to another pixel: no work.
       If(stepPx.mul(u.kernelRadiusMm).greaterThanEqual(MIN_KERNEL_PIXELS), () => {
         // The table row nearest this pixel's scale (src/profiles/footprints.js's footprintRowOf).
@@ -169,10 +174,10 @@ export function subsurfaceBlurNode(o) {
         else if (splits) blurred = sums.map((sum, k) => plannedGroups[k].div(planned).mul(mix(colour, normalised(sum, weightSums[k], colour), u.strength)));
         // The groups' sum, each normalised by its own weight.
         else blurred = [mix(unblurred, sums.map((sum, k) => normalised(sum, weightSums[k], centres[k])).reduce((a, b) => a.add(b)), u.strength)];
-        blurred.forEach((light, k) => {
-          const value = vec3(light).toVar();
-          results[k].assign(sample.covered(select(finite3(value), value, unsplit[k]), centre.coverage));
-        });
+        // Not finite: the light unblurred (every group's share of it at once, so the groups still sum to the light).
+        const values = blurred.map((light) => vec3(light).toVar());
+        const finite = finite3(values.slice(1).reduce((sum, v) => sum.add(v), values[0])).toVar();
+        values.forEach((value, k) => results[k].assign(sample.covered(select(finite, value, unsplit[k]), coverage)));
       });
     });
     // The horizontal group pass's outputs as a matrix's columns (one value out of a TSL function).

@@ -226,7 +226,7 @@ describe("what the blur reads of a grouping (KernelGroupTable, shaders/3-blur/ke
     }
   });
 
-  it("the WebGPU node's float texture (GroupFractionTexture) holds the WebGL shader's split (splitFractions: within a unorm step of the fractions, summing to 1; past groups 1 and 2's reach theirs 0), group g's rows after groups 0..g − 1's", () => {
+  it("the WebGPU node's float texture (GroupFractionTexture) holds the WebGL shader's split (splitFractions: the shader's own decoding of its texels, within a unorm step of the fractions, summing to 1; past groups 1 and 2's reach theirs 0), group g's rows after groups 0..g − 1's", () => {
     const width = table.columns + 1;
     for (const count of [2, 3, 4]) {
       const g4 = kernelGroups(profiles.skin, count, 4);
@@ -258,6 +258,22 @@ describe("what the blur reads of a grouping (KernelGroupTable, shaders/3-blur/ke
         }
       }
       if (count === 4) expect(far).toBeGreaterThan(0); // the far footprints are among the rows checked
+      // The split as kernelGroups.glsl makes it from KernelGroupTable's texels (sssSplit, and past
+      // the row's near count, the centre texel's a, its far loop), decoded here on its own.
+      const packed = new KernelGroupTable().update([g4], [table]).image.data;
+      for (let texel = 0; texel < packed.length / 4; texel++) {
+        const column = texel % width;
+        const farColumn = count > 2 && column > 0 && column - 1 >= packed[(texel - column) * 4 + 3];
+        for (let c = 0; c < 3; c++) {
+          const unorm = (g) => ((packed[texel * 4 + g] >>> (10 * c)) & 1023) / 1023;
+          let parts;
+          if (farColumn) parts = count === 3 ? [0, 0, 1, 0] : [0, 0, unorm(2), Math.max(1 - unorm(2), 0)];
+          else if (count === 2) parts = [unorm(0), Math.max(1 - unorm(0), 0), 0, 0];
+          else if (count === 3) parts = [unorm(0), unorm(1), Math.max(1 - unorm(0) - unorm(1), 0), 0];
+          else parts = [unorm(0), unorm(1), unorm(2), Math.max(1 - unorm(0) - unorm(1) - unorm(2), 0)];
+          parts.forEach((part, g) => expect(split[(texel * MAX_KERNEL_GROUPS + g) * 3 + c]).toBeCloseTo(part, 6));
+        }
+      }
       t.dispose();
       expect(t.texture).toBe(null);
     }
