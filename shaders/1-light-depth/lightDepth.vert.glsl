@@ -14,9 +14,10 @@ varying vec3 vLightViewPosition; // its -z is the linear light depth (lightDepth
 void main() {
 	#include <uv_vertex>
 	#include <batching_vertex>
+	#include <skinbase_vertex>
+	#include <morphinstance_vertex> // an InstancedMesh's own morph influences (setMorphAt): without it the shader does not compile
 	#include <beginnormal_vertex>
 	#include <morphnormal_vertex>
-	#include <skinbase_vertex>
 	#include <skinnormal_vertex>
 	#include <defaultnormal_vertex>
 	#include <begin_vertex>

@@ -182,6 +182,50 @@ describe('transmittance', () => {
 });
 
 describe('light depth of what the light sees', () => {
+  it('follows morph targets, on a mesh and per instance of an InstancedMesh (setMorphAt), as three\'s own depth material does', async () => {
+    const r = await page.evaluate(async () => {
+      const { THREE, SSS, createRenderer, read } = window.lab;
+      const renderer = createRenderer(16, 16);
+      const scene = new THREE.Scene();
+      const light = new THREE.DirectionalLight(0xffffff, 1);
+      light.position.set(0, 0, 10); // looking down −z: light-space x and y are world x and y
+      Object.assign(light.shadow.camera, { left: -2, right: 2, bottom: -2, top: 2, near: 1, far: 20 });
+      scene.add(light, light.target);
+      // A unit card whose one morph target moves it 2 towards the light.
+      const card = () => {
+        const geometry = new THREE.PlaneGeometry(0.8, 0.8);
+        const moved = geometry.attributes.position.clone();
+        for (let i = 0; i < moved.count; i++) moved.setZ(i, moved.getZ(i) + 2);
+        geometry.morphAttributes.position = [moved];
+        return geometry;
+      };
+      const material = new THREE.MeshStandardMaterial();
+      const mesh = new THREE.Mesh(card(), material);
+      mesh.position.set(0, 1, 0);
+      mesh.morphTargetInfluences = [0.5];
+      const instanced = new THREE.InstancedMesh(card(), material, 2);
+      const at = new THREE.Matrix4();
+      instanced.setMatrixAt(0, at.makeTranslation(-1, -1, 0));
+      instanced.setMatrixAt(1, at.makeTranslation(1, -1, 0));
+      instanced.setMorphAt(0, { morphTargetInfluences: [1] });
+      instanced.setMorphAt(1, { morphTargetInfluences: [0] });
+      instanced.morphTexture.needsUpdate = true; // as three's instancing-morph example: setMorphAt fills it, the upload is asked for
+      scene.add(mesh, instanced);
+      const target = new SSS.LightDepthTarget(light, { size: 64 });
+      target.render(renderer, scene);
+      const data = await read(renderer, target.renderTarget);
+      const depthAt = (x, y) => data[(Math.floor(((y + 2) / 4) * 64) * 64 + Math.floor(((x + 2) / 4) * 64)) * 4];
+      const gl = renderer.getContext().getError();
+      target.dispose();
+      renderer.dispose();
+      return { mesh: depthAt(0, 1), first: depthAt(-1, -1), second: depthAt(1, -1), gl };
+    });
+    expect(r.gl).toBe(0);
+    expect(r.mesh).toBeCloseTo(9, 4); // half the morph: 1 towards the light
+    expect(r.first).toBeCloseTo(8, 4); // instance 0 morphed whole
+    expect(r.second).toBeCloseTo(10, 4); // instance 1 not
+  });
+
   it('keeps cut-outs (map or alphaMap alpha test, with the texture\'s offset) and clipping planes, leaves out glass, hidden materials and points, and puts every material back', async () => {
     const r = await page.evaluate(async () => {
       const { SSS, createRenderer, read, lightDepthCards, cardDepths, cardCosines } = window.lab;
