@@ -16,7 +16,7 @@
 import { Node, NodeMaterial, NodeUpdateType, QuadMesh, RenderTarget, RendererUtils } from 'three/webgpu';
 import { FloatType, HalfFloatType, Vector2, Vector3 } from 'three';
 import { passTexture, texture, uniform } from 'three/tsl';
-import { MAX_KERNEL_GROUPS, groupEnergies } from '../3-blur/kernelGroups.js';
+import { MAX_KERNEL_GROUPS } from '../3-blur/kernelGroups.js';
 import { ProfileLookup } from '../profiles/ProfileLookup.js';
 import { FootprintTable } from '../profiles/FootprintTable.js';
 import { AUTO_MAX_SAMPLES } from '../profiles/footprints.js';
@@ -326,7 +326,7 @@ export class SubsurfaceScatteringNode extends Node {
     this._groupTarget.setSize(width, height);
     const fractions = this._groupFractions.update(grouping, this.footprintTable.table);
     if (this._groupFractionNode) this._groupFractionNode.value = fractions;
-    groupEnergies(grouping).forEach((rgb, g) => this._groupEnergies[g].value.fromArray(rgb));
+    this._groupFractions.energies.forEach((rgb, g) => this._groupEnergies[g].value.fromArray(rgb));
   }
 
   /**

@@ -8,13 +8,15 @@
 // cached by scale step: a zoom refills it rarely).
 import { DataTexture, FloatType, NearestFilter, RGBAFormat } from 'three';
 import { FOOTPRINT_ROWS } from '../../profiles/footprints.js';
-import { MAX_KERNEL_GROUPS } from '../../3-blur/kernelGroups.js';
+import { MAX_KERNEL_GROUPS, groupEnergies } from '../../3-blur/kernelGroups.js';
 import { splitFractions } from '../../3-blur/KernelGroupTable.js';
 
 export class GroupFractionTexture {
   constructor() {
     /** @type {DataTexture|null} RGBA float, (columns + 1) × (MAX_KERNEL_GROUPS · FOOTPRINT_ROWS) */
     this.texture = null;
+    /** Each group's share of the profile's energy, RGB (kernelGroups.js's groupEnergies), for the pixels that do no work. @type {number[][]} */
+    this.energies = [];
     this._grouping = null;
     this._table = null;
   }
@@ -45,6 +47,7 @@ export class GroupFractionTexture {
       }
     }
     this.texture.needsUpdate = true;
+    this.energies = groupEnergies(grouping);
     this._grouping = grouping;
     this._table = table;
     return this.texture;
@@ -53,6 +56,7 @@ export class GroupFractionTexture {
   dispose() {
     this.texture?.dispose();
     this.texture = null;
+    this.energies = [];
     this._grouping = this._table = null;
   }
 }

@@ -113,7 +113,7 @@ export function subsurfaceBlurNode(o) {
     // The vertical group pass: a centre whose groups are not all finite (a half past its range) is
     // off the mask, as kernelGroups.glsl's sssGroupsAt has it.
     const coverage = texels.length === 0 ? centre.coverage
-      : select(finite3(texels.reduce((sum, rgb) => sum.add(rgb), textureLoad(lights[0], pixel).rgb)), centre.coverage, float(0)).toVar();
+      : select(finite3(texels.reduce((sum, rgb) => sum.add(rgb), centre.rgb)), centre.coverage, float(0)).toVar();
     const unblurred = centres.slice(1).reduce((sum, c) => sum.add(c), colour).toVar();
     const unsplit = splits ? groups.energies.slice(0, groups.count).map((energy) => colour.mul(energy).toVar()) : [unblurred];
     // Not a subsurface pixel: pass through so the next pass sees the same mask.

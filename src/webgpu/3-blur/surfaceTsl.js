@@ -60,11 +60,11 @@ export function surfaceSample({ diffuse, surface, coverage }) {
     const colour = select(finite3(rgb), rgb, vec3(0));
     return (coverage ? select(cover.greaterThan(0), colour.div(cover), colour) : colour).toVar();
   };
-  /** The pixel a surface pass shades: { colour, coverage, surface } (see SssCentre). */
+  /** The pixel a surface pass shades: { colour, coverage, surface } (see SssCentre), and its texel's `rgb` as read. */
   const centreAt = (pixel) => {
     const light = textureLoad(diffuse, pixel).toVar();
     const cover = select(light.a.greaterThan(0), light.a, float(0)).toVar();
-    return { colour: colourOf(light.rgb, cover), coverage: cover, surface: uncovered(textureLoad(surface, pixel).xy, cover).toVar() };
+    return { colour: colourOf(light.rgb, cover), coverage: cover, surface: uncovered(textureLoad(surface, pixel).xy, cover).toVar(), rgb: light.rgb };
   };
   /** A surface pass's output: premultiplied by the centre's coverage, as its input was. */
   const covered = (colour, c) => vec4(vec3(colour).mul(c), c);
