@@ -13,6 +13,8 @@ import { computeKernel } from '../../src/profiles/kernel.js';
 import { profiles } from '../../src/profiles/presets.js';
 import { gaussianSumProfile } from '../../src/profiles/gaussianSum.js';
 import { mulberry32 as random } from '../../demo/seededRandom.js';
+import { frequenciesAt, gratingMargin, measuredTransfer } from '../oracle/gratingFit.js';
+import { radialBlur } from '../browser/3-blur/accuracyCases.js';
 
 
 /** An image whose pixels are filled by fn(i, j) → { colour, depth, widthWorld }. */
@@ -395,5 +397,61 @@ describe('transmittance oracle', () => {
       mapDepth: () => 9,
     });
     expect(outside).toBe(Infinity);
+  });
+});
+
+describe('the accuracy suite\'s measurements (test/oracle/gratingFit.js, radialBlur)', () => {
+  /** A grating image along x or y (`angleDeg` 0 or 90) at s px/mm: 0.5 + Σ a_k cos(2π f_k u), the same as RGBA. */
+  const gratingImage = (width, height, s, angleDeg, frequencies, amplitudes) => {
+    const image = new Float32Array(width * height * 4);
+    for (let y = 0; y < height; y++) {
+      for (let x = 0; x < width; x++) {
+        const u = (angleDeg === 0 ? x + 0.5 - width / 2 : y + 0.5 - height / 2) / s;
+        const v = 0.5 + frequencies.reduce((sum, f, k) => sum + amplitudes[k] * Math.cos(2 * Math.PI * f * u + 0.7 * k), 0);
+        image.fill(v, (y * width + x) * 4, (y * width + x) * 4 + 4);
+      }
+    }
+    return image;
+  };
+
+  it('a strip across an axis-aligned grating measures the square\'s transfer; a strip at another angle is refused', () => {
+    const s = 2;
+    const frequencies = frequenciesAt(s);
+    const transfer = frequencies.map((f) => Math.exp(-f)); // any known attenuation per frequency
+    for (const angleDeg of [0, 90]) {
+      const [width, height] = angleDeg === 0 ? [256, 16] : [16, 256];
+      const before = gratingImage(width, height, s, angleDeg, frequencies, frequencies.map(() => 0.1));
+      const after = gratingImage(width, height, s, angleDeg, frequencies, transfer.map((t) => 0.1 * t));
+      const measured = measuredTransfer({ width, height, before, after }, frequencies, s, angleDeg);
+      for (let c = 0; c < 3; c++) measured[c].forEach((m, k) => expect(m).toBeCloseTo(transfer[k], 5));
+      expect(() => measuredTransfer({ width, height, before, after }, frequencies, s, 45)).toThrow(RangeError);
+    }
+    // Sides of 96 px and more keep the kernel's reach (9 mm) from the border, strips none.
+    expect(gratingMargin(2, 256)).toBe(18);
+    expect(gratingMargin(10, 256)).toBe(88);
+    expect(gratingMargin(2, 16)).toBe(0);
+  });
+
+  it('radialBlur over a region is the whole image\'s result there, to the bit', () => {
+    const size = 64;
+    const next = random(7);
+    const image = Float32Array.from({ length: size * size * 4 }, () => next());
+    const region = { x0: 20, x1: 40, y0: 24, y1: 36 };
+    const whole = radialBlur(image, size, size, 'skin', 3);
+    const part = radialBlur(image, size, size, 'skin', 3, region);
+    let compared = 0;
+    for (let y = 0; y < size; y++) {
+      for (let x = 0; x < size; x++) {
+        const inside = x >= region.x0 && x < region.x1 && y >= region.y0 && y < region.y1;
+        for (let c = 0; c < 3; c++) {
+          const i = (y * size + x) * 3 + c;
+          if (inside) {
+            expect(part[i]).toBe(whole[i]);
+            compared++;
+          } else expect(part[i]).toBe(0);
+        }
+      }
+    }
+    expect(compared).toBe(20 * 12 * 3);
   });
 });

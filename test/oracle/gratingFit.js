@@ -27,17 +27,17 @@ function solve(A, b) {
 
 /**
  * Amplitude of each frequency in channel c of an image: least squares of c0 + Σ aₖ cos + bₖ sin
- * over the pixels at least `margin` from the image's border, u the coordinate along the grating (mm).
+ * over the pixels at least `margins` (x, y) from the image's border, u the coordinate along the grating (mm).
  */
-function amplitudes(image, { width, height }, c, frequencies, s, angleDeg, margin) {
+function amplitudes(image, { width, height }, c, frequencies, s, angleDeg, [marginX, marginY]) {
   const cos = Math.cos((angleDeg * Math.PI) / 180);
   const sin = Math.sin((angleDeg * Math.PI) / 180);
   const n = 1 + 2 * frequencies.length;
   const A = Array.from({ length: n }, () => new Array(n).fill(0));
   const b = new Array(n).fill(0);
   const basis = new Array(n);
-  for (let y = margin; y < height - margin; y++) {
-    for (let x = margin; x < width - margin; x++) {
+  for (let y = marginY; y < height - marginY; y++) {
+    for (let x = marginX; x < width - marginX; x++) {
       const u = (((x + 0.5 - width / 2) * cos) + ((y + 0.5 - height / 2) * sin)) / s;
       basis[0] = 1;
       frequencies.forEach((f, k) => {
@@ -60,8 +60,17 @@ export const FREQUENCIES = [0.05, 0.1, 0.25, 0.4, 0.7, 1.0, 1.5];
 /** The frequencies a scale (px/mm) can show with at least 4 pixels per cycle (at most 1.5 cycles/mm). */
 export const frequenciesAt = (s) => FREQUENCIES.filter((f) => f <= 0.25 * s + 1e-9).slice(-5);
 
-/** Pixels kept from the border: the kernel's reach (red skin: 99.9 % within 9 mm), at least 8. */
-export const gratingMargin = (s, width, height) => Math.min(Math.max(8, Math.ceil(9 * s)), Math.floor(Math.min(width, height) / 2) - 40);
+/** A side shorter than this is a strip across an axis-aligned grating (see measuredTransfer). */
+const STRIP_MAX = 96;
+
+/**
+ * Pixels kept from the border along a side of `size` pixels: the kernel's reach (red skin: 99.9 %
+ * within 9 mm), at least 8, at most all but the central 80. A strip's side (under STRIP_MAX) keeps
+ * none: across an axis-aligned grating every row (or column) is the centre's, the blur's taps across
+ * falling on the same value and kept or dropped alike, as the step edges' strips
+ * (test/browser/3-blur/accuracyCases.js).
+ */
+export const gratingMargin = (s, size) => (size < STRIP_MAX ? 0 : Math.min(Math.max(8, Math.ceil(9 * s)), Math.floor(size / 2) - 40));
 
 /**
  * The measured transfer of each channel at each frequency: amplitude after over before.
@@ -70,7 +79,9 @@ export const gratingMargin = (s, width, height) => Math.min(Math.max(8, Math.cei
  * @returns {number[][]} [channel][frequency]
  */
 export function measuredTransfer(r, frequencies, s, angleDeg) {
-  const margin = gratingMargin(s, r.width, r.height);
+  const stripAcross = r.height < STRIP_MAX ? 0 : r.width < STRIP_MAX ? 90 : null;
+  if (stripAcross !== null && angleDeg !== stripAcross) throw new RangeError(`measuredTransfer: a ${r.width} × ${r.height} strip measures a grating at ${stripAcross}° only, got ${angleDeg}°`);
+  const margin = [gratingMargin(s, r.width), gratingMargin(s, r.height)];
   return [0, 1, 2].map((c) => {
     const before = amplitudes(r.before, r, c, frequencies, s, angleDeg, margin);
     const after = amplitudes(r.after, r, c, frequencies, s, angleDeg, margin);
