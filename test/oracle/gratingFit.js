@@ -64,24 +64,28 @@ export const frequenciesAt = (s) => FREQUENCIES.filter((f) => f <= 0.25 * s + 1e
 const STRIP_MAX = 96;
 
 /**
- * Pixels kept from the border along a side of `size` pixels: the kernel's reach (red skin: 99.9 %
- * within 9 mm), at least 8, at most all but the central 80. A strip's side (under STRIP_MAX) keeps
- * none: across an axis-aligned grating every row (or column) is the centre's, the blur's taps across
- * falling on the same value and kept or dropped alike, as the step edges' strips
- * (test/browser/3-blur/accuracyCases.js).
+ * Pixels kept from the border along a side of `size` pixels (at least STRIP_MAX): the kernel's
+ * reach (red skin: 99.9 % within 9 mm), at least 8, at most all but the central 80.
  */
-export const gratingMargin = (s, size) => (size < STRIP_MAX ? 0 : Math.min(Math.max(8, Math.ceil(9 * s)), Math.floor(size / 2) - 40));
+export const gratingMargin = (s, size) => Math.min(Math.max(8, Math.ceil(9 * s)), Math.floor(size / 2) - 40);
 
 /**
- * The measured transfer of each channel at each frequency: amplitude after over before.
+ * The measured transfer of each channel at each frequency: amplitude after over before. A side
+ * under STRIP_MAX pixels is a strip across a grating along the other side (0° for a wide strip, 90°
+ * for a tall one) and keeps no margin: every row (or column) of it is the centre's when the blur
+ * is separable, its taps across falling on the same value and kept or dropped alike (the accuracy
+ * suite's strips, test/browser/3-blur/accuracyCases.js). A strip at another angle, or an image
+ * with both sides under STRIP_MAX, is a RangeError.
  * @param {{ before: Float32Array, after: Float32Array, width: number, height: number }} r RGBA floats
  * @param {number[]} frequencies cycles/mm @param {number} s px/mm @param {number} angleDeg the grating's direction
  * @returns {number[][]} [channel][frequency]
  */
 export function measuredTransfer(r, frequencies, s, angleDeg) {
-  const stripAcross = r.height < STRIP_MAX ? 0 : r.width < STRIP_MAX ? 90 : null;
-  if (stripAcross !== null && angleDeg !== stripAcross) throw new RangeError(`measuredTransfer: a ${r.width} × ${r.height} strip measures a grating at ${stripAcross}° only, got ${angleDeg}°`);
-  const margin = [gratingMargin(s, r.width), gratingMargin(s, r.height)];
+  const [wide, tall] = [r.height < STRIP_MAX, r.width < STRIP_MAX];
+  if (wide && tall) throw new RangeError(`measuredTransfer: an image needs a side of at least ${STRIP_MAX} px, got ${r.width} × ${r.height}`);
+  const stripAngle = wide ? 0 : tall ? 90 : null;
+  if (stripAngle !== null && angleDeg !== stripAngle) throw new RangeError(`measuredTransfer: a ${r.width} × ${r.height} strip measures a grating at ${stripAngle}° only, got ${angleDeg}°`);
+  const margin = [tall ? 0 : gratingMargin(s, r.width), wide ? 0 : gratingMargin(s, r.height)];
   return [0, 1, 2].map((c) => {
     const before = amplitudes(r.before, r, c, frequencies, s, angleDeg, margin);
     const after = amplitudes(r.after, r, c, frequencies, s, angleDeg, margin);

@@ -269,8 +269,8 @@ function flatRigFor(width, height, sss) {
 function disposeFlatRig() {
   if (!flatRig) return;
   const { pipeline, composer, renderer, material } = flatRig;
+  pipeline.dispose(); // unbinds the kept material first
   material?.dispose();
-  pipeline.dispose();
   composer.dispose();
   renderer.dispose();
   renderer.forceContextLoss();
