@@ -12,7 +12,7 @@ import {
   FloatType, NearestFilter, ShaderMaterial, WebGLRenderer, WebGLRenderTarget,
 } from 'three';
 import { EffectComposer } from 'three/addons/postprocessing/EffectComposer.js';
-import { SubsurfaceScattering } from '/src/index.js';
+import { LightDepthTarget, SubsurfaceScattering } from '/src/index.js';
 import { readRenderTargetFloats } from '/dev/readback.js';
 import { GpuStageTimer, median, sssStageTimes } from '/dev/gpuTimer.js';
 import { buildScene } from '/bench/scenes.js';
@@ -43,9 +43,10 @@ const surfaceMaterial = () => new ShaderMaterial({
  * @param {{ width: number, height: number, lightAzimuthDeg?: number, lightElevationDeg?: number, widthMm?: number, atlasSize?: number, density?: number, view?: number[]|null, scene?: 'head'|'slab' }} o
  *   view: [x, y, z, targetX, targetY, targetZ, fovDeg] for another camera than the bench's (a close-up);
  *   density: the truth's samples per area (1: bench/surfaceTruth/scatter.js's rule); truthLight:
- *   the truth computed before for the same configuration (truthLight()), instead of computing it
+ *   the truth computed before for the same configuration (truthLight()), instead of computing it;
+ *   truthLimits: its screen-space limits (truthLimits()), with it
  */
-async function open({ width, height, lightAzimuthDeg = 0, lightElevationDeg = 0, widthMm = 1, atlasSize = 2048, density = 1, view = null, scene = 'head', truthLight = null }) {
+async function open({ width, height, lightAzimuthDeg = 0, lightElevationDeg = 0, widthMm = 1, atlasSize = 2048, density = 1, view = null, scene = 'head', truthLight = null, truthLimits = null }) {
   close();
   const renderer = new WebGLRenderer({ antialias: false });
   renderer.setPixelRatio(1);
@@ -77,17 +78,22 @@ async function open({ width, height, lightAzimuthDeg = 0, lightElevationDeg = 0,
   session.unscattered = unscattered.diffuse;
   session.triangles = trianglesOf(mesh, built.worldUnitInMm);
   // truthLight: a truth computed before for this configuration (its light per pixel, as truthLight() gives it).
-  const truth = truthLight ? { light: Float64Array.from(truthLight), cached: true } : await truthAt({ atlasSize, density });
+  const cachedLimits = truthLimits && Object.fromEntries(Object.entries(truthLimits).map(([name, light]) => [name, Float64Array.from(light)]));
+  const truth = truthLight ? { light: Float64Array.from(truthLight), screenLimits: cachedLimits, cached: true } : await truthAt({ atlasSize, density, screenLimits: true });
+  if (!truthLight && built.light) { // the same with the light's view of the surface too: what a translucent shadow map could add
+    const { screenLimits: both } = await truthAt({ atlasSize, density, screenLimits: true, lightSees: await lightVisibility() });
+    truth.screenLimits = { ...truth.screenLimits, seenOrLit: both.seen, seenOrLitTrueArea: both.seenTrueArea };
+  }
   if (truth.light.length !== 3 * pixels.length) throw new RangeError(`open: truthLight must hold 3 × ${pixels.length} values, got ${truth.light.length}`);
   const { light } = truth;
-  session.truth = { pixels, light };
+  session.truth = { pixels, light, screenLimits: truth.screenLimits ?? null };
   // Scattering moves light, it does not make it: over the whole view the truth keeps about the
   // light of the unscattered image (less where light leaves through surfaces the camera misses).
   const sums = [0, 0, 0, 0, 0, 0];
   pixels.forEach((i, q) => { for (let c = 0; c < 3; c++) { sums[c] += light[3 * q + c]; sums[3 + c] += unscattered.diffuse[4 * i + c]; } });
   const gl = renderer.getContext();
   const debug = gl.getExtension('WEBGL_debug_renderer_info');
-  const { light: _, ...stats } = truth;
+  const { light: _, screenLimits: __, ...stats } = truth;
   return {
     webgl: { renderer: gl.getParameter(debug ? debug.UNMASKED_RENDERER_WEBGL : gl.RENDERER), version: gl.getParameter(gl.VERSION) },
     truthOverUnscattered: [0, 1, 2].map((c) => sums[c] / sums[3 + c]),
@@ -122,12 +128,14 @@ const VISIBLE_DEPTH_MM = 0.5;
 const MAX_DEPTH_SPAN_PIXELS = 4;
 
 /**
- * The light entering at a surface point: its camera pixel's diffuse light where the camera sees it
+ * The light entering at a surface point, and whether the camera sees it (a fourth number, 1 or 0,
+ * for the screen-space limits; with `lightSees`, whether the camera or the light sees it): its
+ * camera pixel's diffuse light where the camera sees it
  * (inside the image, on a subsurface pixel whose surface lies at the point's distance within
  * VISIBLE_DEPTH_MM plus the pixel's depth span at its facing angle), else the atlas's.
  * Counts where each read came from in `counts`.
  */
-function lightOfSurface(atlas, counts) {
+function lightOfSurface(atlas, counts, lightSees = null) {
   const { width, height, built, surface, unscattered } = session;
   const { camera, worldUnitInMm } = built;
   camera.updateMatrixWorld();
@@ -135,7 +143,7 @@ function lightOfSurface(atlas, counts) {
   const eyeWorld = camera.position.toArray();
   const eye = eyeWorld.map((x) => x * worldUnitInMm);
   const pixelPerDepth = 2 / (camera.projectionMatrix.elements[5] * height); // pixel footprint / distance
-  const out = [0, 0, 0]; // reused: the caller copies it
+  const out = [0, 0, 0, 1]; // reused: the caller copies it; out[3]: 1 where the camera sees the point
   return (pointMm, uv) => {
     const x = pointMm[0] / worldUnitInMm;
     const y = pointMm[1] / worldUnitInMm;
@@ -153,23 +161,25 @@ function lightOfSurface(atlas, counts) {
         const spanMm = pixelPerDepth * pixelDistanceMm * Math.min(Math.sqrt(1 - facing * facing) / facing, MAX_DEPTH_SPAN_PIXELS);
         if (Math.abs(distanceMm - pixelDistanceMm) <= VISIBLE_DEPTH_MM + spanMm) {
           counts.camera++;
-          out[0] = unscattered[4 * i]; out[1] = unscattered[4 * i + 1]; out[2] = unscattered[4 * i + 2];
+          out[0] = unscattered[4 * i]; out[1] = unscattered[4 * i + 1]; out[2] = unscattered[4 * i + 2]; out[3] = 1;
           return out;
         }
       }
     }
+    out[3] = lightSees !== null && lightSees(x, y, z) ? 1 : 0;
     if (atlas.lightAt(uv[0], uv[1], out)) { counts.atlas++; return out; }
     counts.missed++;
-    out[0] = 0; out[1] = 0; out[2] = 0;
+    out[0] = 0; out[1] = 0; out[2] = 0; out[3] = 0;
     return out;
   };
 }
 
 /**
  * The truth at the session's pixels: over the mesh at `density` (bench/surfaceTruth/scatter.js),
- * the camera's light where it sees, an atlas of `atlasSize`² texels elsewhere.
+ * the camera's light where it sees, an atlas of `atlasSize`² texels elsewhere; with
+ * `screenLimits`, what screen space can reach (seen by the camera, or by the camera or `lightSees`).
  */
-async function truthAt({ atlasSize = 2048, density = 1 } = {}) {
+async function truthAt({ atlasSize = 2048, density = 1, screenLimits = false, lightSees = null } = {}) {
   const { renderer, built, mesh, widthMm, height, pixels, surface, unscattered, triangles } = session;
   const started = performance.now();
   const atlas = await renderSurfaceAtlas({ renderer, built, mesh, widthMm, viewHeight: height, size: atlasSize });
@@ -191,14 +201,58 @@ async function truthAt({ atlasSize = 2048, density = 1 } = {}) {
   const counts = { camera: 0, atlas: 0, missed: 0 };
   const truthStarted = performance.now();
   const truth = surfaceTruth({
-    triangles, lightAt: lightOfSurface(atlas, counts), queryMm, queryLight, queryPixelMm, gaussians: GAUSSIANS.skin, widthMm, lightEdgeMm, density,
+    triangles, lightAt: lightOfSurface(atlas, counts, lightSees), queryMm, queryLight, queryPixelMm, gaussians: GAUSSIANS.skin, widthMm, lightEdgeMm, density, screenLimits,
   });
   const reads = counts.camera + counts.atlas + counts.missed;
   return {
-    light: truth.light, atlasSize, density, atlasMs, truthMs: performance.now() - truthStarted, lightEdgeMm,
+    light: truth.light, screenLimits: truth.screenLimits, atlasSize, density, atlasMs, truthMs: performance.now() - truthStarted, lightEdgeMm,
     localShare: truth.localShare, pieces: truth.pieces, lightReads: reads,
     readShares: Object.fromEntries(Object.entries(counts).map(([k, n]) => [k, n / reads])),
   };
+}
+
+/** How far (mm) a point may lie behind the surface the light's depth map holds and still be that surface, beside a texel's width. */
+const LIGHT_SEES_DEPTH_MM = 1;
+
+/**
+ * Whether the light sees a point (world units): the point's depth along the light's axis is within
+ * LIGHT_SEES_DEPTH_MM plus a texel's width of the surface one of the four nearest texels of the
+ * library's own light depth map holds (LightDepthTarget, 2048²: what a translucent shadow map of
+ * the light's view would hold).
+ */
+async function lightVisibility() {
+  const { renderer, built } = session;
+  const view = new LightDepthTarget(built.light, { size: 2048 });
+  try {
+    view.render(renderer, built.scene);
+    const depth = await readRenderTargetFloats(renderer, view.renderTarget);
+    const { camera, size } = view;
+    const viewMatrix = camera.matrixWorldInverse.elements;
+    const projection = camera.projectionMatrix.clone().multiply(camera.matrixWorldInverse).elements;
+    const texelWorld = camera.isOrthographicCamera ? (camera.right - camera.left) / size : null;
+    const toleranceBase = LIGHT_SEES_DEPTH_MM / built.worldUnitInMm;
+    return (x, y, z) => {
+      const e = projection;
+      const w = e[3] * x + e[7] * y + e[11] * z + e[15];
+      if (!(w > 0)) return false;
+      const u = (((e[0] * x + e[4] * y + e[8] * z + e[12]) / w + 1) / 2) * size - 0.5;
+      const v = (((e[1] * x + e[5] * y + e[9] * z + e[13]) / w + 1) / 2) * size - 0.5;
+      if (!(u >= -0.5 && v >= -0.5 && u < size - 0.5 && v < size - 0.5)) return false;
+      const pointDepth = -(viewMatrix[2] * x + viewMatrix[6] * y + viewMatrix[10] * z + viewMatrix[14]);
+      const tolerance = toleranceBase + (texelWorld ?? (2 * pointDepth) / (camera.projectionMatrix.elements[0] * size));
+      const u0 = Math.floor(u);
+      const v0 = Math.floor(v);
+      for (let k = 0; k < 4; k++) {
+        const tu = Math.min(Math.max(u0 + (k & 1), 0), size - 1);
+        const tv = Math.min(Math.max(v0 + (k >> 1), 0), size - 1);
+        const recorded = depth[4 * (tv * size + tu)];
+        if (recorded > 0 && Math.abs(pointDepth - recorded) <= tolerance) return true;
+      }
+      return false;
+    };
+  } finally {
+    view.dispose();
+  }
 }
 
 /** The median of a typed array (a copy is sorted). */
@@ -394,4 +448,26 @@ async function images(setting) {
 /** The session's truth, rgb per subsurface pixel (in the order of the pixels), to be saved and given back to open. */
 const truthLight = () => Array.from(session.truth.light);
 
-window.surfaceTruthBench = { open, measure, truthUncertainty, images, costs, truthLight, close };
+/** The truth's screen-space limits (to keep beside truthLight()), or null where it has none. */
+const truthLimits = () => {
+  const limits = session.truth.screenLimits;
+  return limits && Object.fromEntries(Object.entries(limits).map(([name, light]) => [name, Array.from(light)]));
+};
+
+/**
+ * What screen space can reach at best (bench/surfaceTruth/scatter.js's screenLimitsOf: `seen`, the
+ * light the camera sees, each Gaussian's mean over the surface it sees; `seenTrueArea`, that with
+ * the true area within reach), and the same with the surface the light sees too (`seenOrLit`,
+ * `seenOrLitTrueArea`: a translucent shadow map's reach), in the measure of a setting's error;
+ * null where the truth has none (kept from a run before they were computed).
+ */
+function screenLimits() {
+  const limits = session.truth.screenLimits;
+  if (!limits) return null;
+  return Object.fromEntries(Object.entries(limits).map(([name, light]) => {
+    const valueAt = (q, c) => light[3 * q + c];
+    return [name, { relative: relativeByRegion(valueAt), bias: biasByRegion(valueAt) }];
+  }));
+}
+
+window.surfaceTruthBench = { open, measure, screenLimits, truthUncertainty, images, costs, truthLight, truthLimits, close };

@@ -12,6 +12,12 @@ const CHECK_LABEL = {
   atlas: (c) => `*the truth from a ${c.atlasSize}² atlas, against the truth*`,
 };
 const settingLabel = (name) => (name === 'default' ? "**default** (footprint, samples 'auto')" : name);
+const LIMIT_LABEL = {
+  seen: '*screen space at best: the light the camera sees, each Gaussian averaged over the surface it sees*',
+  seenTrueArea: '*the same with the true area within reach (the unseen part filled with that average)*',
+  seenOrLit: '*with the light\'s view too: the light the camera or the light sees, each Gaussian averaged over that surface*',
+  seenOrLitTrueArea: '*the same with the true area within reach*',
+};
 
 /** The largest amount a convergence check moved the truth by, over the regions with pixels. */
 const worstMove = (configuration) => Math.max(...configuration.convergence.flatMap((c) => REGIONS.map((r) => c.relative[r] ?? 0)));
@@ -21,6 +27,7 @@ function configurationTable(configuration, regions = REGIONS) {
   const { cost } = configuration;
   const costOf = (name) => (cost ? [cost[name] == null ? '—' : cost[name].toFixed(1)] : []);
   const rows = configuration.settings.filter((s) => s.name !== 'none').map((s) => [settingLabel(s.name), ...regions.map((r) => number(s.relative[r])), ...costOf(s.name)]);
+  for (const [name, limit] of Object.entries(configuration.screenLimits ?? {})) rows.push([LIMIT_LABEL[name], ...regions.map((r) => `*${number(limit.relative[r])}*`), ...(cost ? [''] : [])]);
   for (const check of configuration.convergence) rows.push([CHECK_LABEL[check.name](check), ...regions.map((r) => `*${number(check.relative[r])}*`), ...(cost ? [''] : [])]);
   const pixels = (r) => (r === 'all' ? configuration.pixels : configuration.regionPixels[r]);
   return table(['setting', ...regions.map((r) => `${r} (${pixels(r)} px)`), ...(cost ? ['SSS ms'] : [])], rows);
@@ -42,8 +49,9 @@ function truthSentence(c) {
 
 /**
  * The short form for docs/BENCH.md: the default, the dense reference and the reference kernel per
- * view and light, over all pixels and the regions where screen space fails, beside the truth's
- * convergence (the most either check moved it).
+ * view and light, over all pixels and the regions where screen space fails, beside what screen
+ * space can reach at best (and with the light's view too) and the truth's convergence (the most
+ * either check moved it).
  * @param {object} results bench/results/surface-truth.json
  */
 export function surfaceTruthSummary(results) {
@@ -51,6 +59,10 @@ export function surfaceTruthSummary(results) {
   const rows = results.views.flatMap((c) => [
     ...['default', 'dense', 'reference17'].map((name) => c.settings.find((s) => s.name === name)).filter(Boolean)
       .map((s) => [c.name, s.name, ...regions.map((r) => number(s.relative[r]))]),
+    ...(c.screenLimits ? [
+      [c.name, '*screen space at best (the light the camera sees)*', ...regions.map((r) => `*${number(c.screenLimits.seen.relative[r])}*`)],
+      ...(c.screenLimits.seenOrLitTrueArea ? [[c.name, '*with the light\'s view and the true area too*', ...regions.map((r) => `*${number(c.screenLimits.seenOrLitTrueArea.relative[r])}*`)]] : []),
+    ] : []),
     ...(c.convergence.length ? [[c.name, '*the truth\'s own convergence (most moved)*', ...regions.map((r) => `*${number(Math.max(...c.convergence.map((k) => k.relative[r] ?? 0)))}*`)]] : []),
   ]);
   return table(['view, light', 'setting', ...regions], rows);
@@ -67,12 +79,26 @@ function goalsTable(results) {
     const worse = noT ? present.filter((r) => d[r] > noT[r] + 1e-3) : [];
     const bias = Object.fromEntries(c.settings.map((x) => [x.name, x.bias?.creases]));
     const red = (name) => (bias[name] ? `${(100 * bias[name][0]).toFixed(1)} %` : '—');
-    return [c.name, `${number(d[worst])} (${worst})`, number(d.all), by.dense ? number(by.dense.all) : '—',
+    return [c.name, `${number(d[worst])} (${worst})`, number(d.all), by.dense ? number(by.dense.all) : '—', c.screenLimits ? number(c.screenLimits.seen.relative.all) : '—',
       noT ? (worse.length ? `worse in ${worse.map((r) => `${r} ${number(noT[r])} → ${number(d[r])}`).join(', ')}` : 'never worse') : '—',
       `${red('none')} → ${red('default')}`];
   });
-  return table(['view, light', 'default: worst region (goal ≤ 1.0)', 'default: all pixels (goal front ≤ 0.35)', 'dense: all pixels', 'transmittance (default against default without it)',
+  return table(['view, light', 'default: worst region (goal ≤ 1.0)', 'default: all pixels (goal front ≤ 0.35)', 'dense: all pixels', 'screen space at best: all pixels', 'transmittance (default against default without it)',
     'creases: red against the truth\'s, no scattering → default'], rows);
+}
+
+/** Per configuration: the default beside what screen space can reach at best, over all pixels and in its worst region. */
+function limitsTable(results) {
+  const rows = results.views.filter((c) => c.screenLimits).map((c) => {
+    const d = c.settings.find((x) => x.name === 'default').relative;
+    const { seen, seenTrueArea, seenOrLit, seenOrLitTrueArea } = c.screenLimits;
+    const present = REGIONS.filter((r) => r !== 'all' && seen.relative[r] != null);
+    const worst = present.reduce((a, r) => (seen.relative[r] > seen.relative[a] ? r : a), present[0]);
+    const belowDefault = present.filter((r) => seen.relative[r] < d[r] - 0.05);
+    return [c.name, number(d.all), number(seen.relative.all), number(seenTrueArea.relative.all), number(seenOrLit?.relative.all), number(seenOrLitTrueArea?.relative.all), `${worst} ${number(seen.relative[worst])}`,
+      belowDefault.length ? belowDefault.map((r) => `${r} ${number(d[r])} → ${number(seen.relative[r])}`).join(', ') : 'none'];
+  });
+  return table(['view, light', 'default: all pixels', 'screen space at best: all pixels', 'with the true area', 'with the light\'s view too', 'and the true area', 'screen space at best, its worst region', 'regions where the default is 0.05 or more above the best'], rows);
 }
 
 /**
@@ -129,7 +155,9 @@ scatters the light the pipeline blurs (bench/surfaceTruth/page.js):
 Unit tests (test/node/bench/surfaceTruth.test.js, Node): the pieces' areas sum to the mesh's within
 1e-9; a step of light on an irregularly triangulated plane is within 2e-3 of the closed form
 (erfc per Gaussian); uniform light on a sphere keeps Σ wᵢ (1 − exp(−2ρ²/vᵢ)), the closed form at
-3D distances, within 5e-4.
+3D distances, within 5e-4; the screen-space limits below average only the light seen (a plane lit
+where the camera does not see, a sphere whose far half it does not see) within 1e-3 of their closed
+forms.
 
 Error: ‖setting − truth‖ / ‖no scattering − truth‖ over each region's pixels (RGB), i.e. the part of
 the effect a setting misses: 0 is the truth, 1 no better than no scattering ("no scattering": no
@@ -163,9 +191,30 @@ red than the truth.
 
 ${goalsTable(results)}
 
+## What screen space can reach
+
+The truth also gives the best any screen-space method can do (bench/surfaceTruth/scatter.js's
+screenLimitsOf, in the same pass): the light the camera sees, each Gaussian averaged over the
+surface the camera sees at the true 3D distances and areas. That is a screen blur with an exact
+kernel and a perfect depth rule: its kernel sums to 1 over the surface it keeps, as every screen
+blur's does, so where light comes from surface the camera cannot see (behind a silhouette, inside
+a fold, lit from behind) it puts the average of what it sees instead. A second line fills that
+unseen part with the same average but keeps the true area within reach (more than a plane's in a
+fold, less round a convex edge): what knowing the geometry, but not the hidden light, would add.
+Two more lines add the surface the light sees (the library's own light depth map, 2048², tells
+which points it reaches): what a method that also gathers the light's view of the surface (a
+translucent shadow map, Dachsbacher and Stamminger 2003) could reach at best. In the tables above
+all four are the italic rows below the settings.
+
+${limitsTable(results)}
+
+Where the best is far from the truth, only light the camera does not see can close the gap (issue
+21's part 2: a translucent shadow map, the light's view of the surface); where the default is well
+above the best, a better screen-space method can still gain.
+
 ${sections.join('\n')}
 What no screen-space method can see: light entering surfaces hidden from the camera (behind a
 silhouette, inside an ear fold) and the true surface area of walls seen edge-on (eyelid slits,
-nostrils).
+nostrils); "What screen space can reach" above measures both.
 `;
 }

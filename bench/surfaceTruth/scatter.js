@@ -27,6 +27,12 @@
 // The sums run piece by piece (streamed, nothing stored): each piece at a Gaussian's size is
 // splatted to the query points within the Gaussian's cut-off radius.
 
+/** A piece's light: r, g, b, the share of its area the camera sees, and r, g, b times that share. */
+export const LIGHT_CHANNELS = 7;
+
+/** sumOverPieces's limit sums where none are kept. */
+const NO_LIMIT_SUMS = Object.freeze({ area: null, seenArea: null, seenLight: null });
+
 /** A Gaussian is summed over pieces whose longest edge is at most this times its σ. */
 export const EDGE_PER_SIGMA = 1;
 
@@ -94,8 +100,10 @@ export function pointGrid(pointsMm, members, cellMm) {
 
 /**
  * Visits the mesh's pieces: each triangle split in four at its edges' midpoints, recursively, while
- * `split(piece)` says so. `leaf(piece)` returns the light of a piece that is not split; a split
- * piece's light is its four children's mean (equal areas). `emit(piece, light)` is called for every
+ * `split(piece)` says so. `leaf(piece)` returns the light of a piece that is not split (r, g, b
+ * and, optionally, the share of it the camera sees, 1 if left out); a split piece's light is its
+ * four children's mean (equal areas), LIGHT_CHANNELS numbers: r, g, b, the share seen, and the
+ * light seen (r, g, b times that share). `emit(piece, light)` is called for every
  * piece, after its light. A piece (one object per depth, reused: read it in the call) has corners
  * a, b, c (mm, [x, y, z]) and their uvs ua, ub, uc, its area (mm²), longest edge (mm), centroid,
  * depth (0: a triangle of the mesh) and parent (null at depth 0); fields set on it by `split` stay
@@ -111,7 +119,7 @@ export function forEachPiece(triangles, { split, leaf, emit }) {
       const parent = stack.length ? stack[stack.length - 1] : null;
       stack.push({
         a: new Float64Array(3), b: new Float64Array(3), c: new Float64Array(3), ua: new Float64Array(2), ub: new Float64Array(2), uc: new Float64Array(2),
-        centroid: new Float64Array(3), light: new Float64Array(3), areaMm2: 0, edgeMm: 0, depth: stack.length, parent,
+        centroid: new Float64Array(3), light: new Float64Array(LIGHT_CHANNELS), areaMm2: 0, edgeMm: 0, depth: stack.length, parent,
       });
     }
     return stack[depth];
@@ -135,18 +143,20 @@ export function forEachPiece(triangles, { split, leaf, emit }) {
       const uabx = (uax + ubx) / 2; const uaby = (uay + uby) / 2; const ubcx = (ubx + ucx) / 2;
       const ubcy = (uby + ucy) / 2; const ucax = (ucx + uax) / 2; const ucay = (ucy + uay) / 2;
       const q = areaMm2 / 4;
+      // Each child's light is read before the next child reuses its piece.
       let e = visit(depth + 1, ax, ay, az, abx, aby, abz, cax, cay, caz, uax, uay, uabx, uaby, ucax, ucay, q);
-      let r = e[0]; let g = e[1]; let b = e[2];
+      for (let k = 0; k < LIGHT_CHANNELS; k++) light[k] = e[k];
       e = visit(depth + 1, abx, aby, abz, bx, by, bz, bcx, bcy, bcz, uabx, uaby, ubx, uby, ubcx, ubcy, q);
-      r += e[0]; g += e[1]; b += e[2];
+      for (let k = 0; k < LIGHT_CHANNELS; k++) light[k] += e[k];
       e = visit(depth + 1, cax, cay, caz, bcx, bcy, bcz, cx, cy, cz, ucax, ucay, ubcx, ubcy, ucx, ucy, q);
-      r += e[0]; g += e[1]; b += e[2];
+      for (let k = 0; k < LIGHT_CHANNELS; k++) light[k] += e[k];
       e = visit(depth + 1, abx, aby, abz, bcx, bcy, bcz, cax, cay, caz, uabx, uaby, ubcx, ubcy, ucax, ucay, q);
-      r += e[0]; g += e[1]; b += e[2];
-      light[0] = r / 4; light[1] = g / 4; light[2] = b / 4;
+      for (let k = 0; k < LIGHT_CHANNELS; k++) light[k] = (light[k] + e[k]) / 4;
     } else {
       const e = leaf(piece);
+      const seen = e.length > 3 ? e[3] : 1;
       light[0] = e[0]; light[1] = e[1]; light[2] = e[2];
+      light[3] = seen; light[4] = seen * e[0]; light[5] = seen * e[1]; light[6] = seen * e[2];
     }
     emit(piece, light);
     return light;
@@ -170,7 +180,9 @@ export function triangleArea(a, b, c) {
  * The surface truth at each query point.
  * @param {object} o
  * @param {Triangles} o.triangles the whole subsurface mesh, world millimetres
- * @param {(x: number[], uv: number[]) => number[]} o.lightAt the diffuse light entering at a surface point
+ * @param {(x: number[], uv: number[]) => number[]} o.lightAt the diffuse light entering at a surface
+ *   point (r, g, b) and, for the screen-space limits, a fourth number: 1 where the camera sees it, 0
+ *   where it does not (1 if left out)
  * @param {Float64Array} o.queryMm xyz per query point, millimetres
  * @param {Float64Array} o.queryLight rgb per query point: its own light (for the local Gaussians)
  * @param {Float64Array} o.queryPixelMm per query point: its pixel's footprint, mm (the local rule)
@@ -179,10 +191,11 @@ export function triangleArea(a, b, c) {
  * @param {number} [o.lightEdgeMm] the longest edge of a piece whose light is read at its centroid
  * @param {number} [o.density=1] samples per area relative to the rule above (2: √2 shorter edges,
  *   twice the samples); the local rule does not change with it (the pixels' light is what it is)
- * @returns {{ light: Float64Array, localShare: number[], pieces: number[], lightReads: number }} per
- *   Gaussian: the share of query points where it was kept local, and the pieces summed
+ * @param {boolean} [o.screenLimits=false] also return what screen space can reach (screenLimitsOf)
+ * @returns {{ light: Float64Array, localShare: number[], pieces: number[], lightReads: number, screenLimits?: { seen: Float64Array, seenTrueArea: Float64Array } }}
+ *   per Gaussian: the share of query points where it was kept local, and the pieces summed
  */
-export function surfaceTruth({ triangles, lightAt, queryMm, queryLight, queryPixelMm, gaussians, widthMm = 1, lightEdgeMm = Infinity, density = 1 }) {
+export function surfaceTruth({ triangles, lightAt, queryMm, queryLight, queryPixelMm, gaussians, widthMm = 1, lightEdgeMm = Infinity, density = 1, screenLimits = false }) {
   const scaled = scaledGaussians(gaussians, widthMm, density);
   const queries = queryMm.length / 3;
   const light = new Float64Array(3 * queries);
@@ -197,8 +210,49 @@ export function surfaceTruth({ triangles, lightAt, queryMm, queryLight, queryPix
     localShare.push(1 - members.length / queries);
     return members.length ? pointGrid(queryMm, members, g.radiusMm / 2) : null;
   });
-  const { pieces, lightReads } = sumOverPieces({ triangles, lightAt, queryMm, scaled, grids, light, lightEdge: lightEdgeMm / Math.sqrt(density) });
-  return { light, localShare, pieces, lightReads };
+  const limitSums = screenLimits ? grids.map((grid) => (grid ? { area: new Float64Array(queries), seenArea: new Float64Array(queries), seenLight: new Float64Array(3 * queries) } : null)) : null;
+  const { pieces, lightReads } = sumOverPieces({ triangles, lightAt, queryMm, scaled, grids, light, lightEdge: lightEdgeMm / Math.sqrt(density), limitSums });
+  return { light, localShare, pieces, lightReads, ...(screenLimits ? { screenLimits: screenLimitsOf(scaled, limitSums, queryLight) } : {}) };
+}
+
+/**
+ * What screen space can reach at best, from the per-Gaussian sums (sumOverPieces's limitSums):
+ * - `seen`: each summed Gaussian's mean of the light over the surface the camera sees, weighted
+ *   by the Gaussian at the 3D distance and the true area: a screen-space blur whose kernel is
+ *   exact and whose depth rule is perfect (it sums to 1 over the surface it keeps, as every
+ *   screen blur's kernel does) still gets this, not the truth;
+ * - `seenTrueArea`: the light seen, with the area the camera does not see filled with that mean:
+ *   a screen method that also knew the surface's true area within reach (more than a plane's in
+ *   a fold, less round a convex edge) but not the light the camera cannot see.
+ * A Gaussian kept local is the same in both as in the truth; where a Gaussian reaches no surface
+ * the camera sees, the point's own light.
+ */
+function screenLimitsOf(scaled, limitSums, queryLight) {
+  const queries = queryLight.length / 3;
+  const seen = new Float64Array(3 * queries);
+  const seenTrueArea = new Float64Array(3 * queries);
+  scaled.forEach(({ w }, m) => {
+    const sums = limitSums[m];
+    for (let q = 0; q < queries; q++) {
+      for (let c = 0; c < 3; c++) {
+        const own = queryLight[3 * q + c];
+        if (!sums) { // kept local at every point: as the truth
+          seen[3 * q + c] += w[c] * own;
+          seenTrueArea[3 * q + c] += w[c] * own;
+          continue;
+        }
+        if (!(sums.area[q] > 0)) { // not summed here (kept local at this point)
+          seen[3 * q + c] += w[c] * own;
+          seenTrueArea[3 * q + c] += w[c] * own;
+          continue;
+        }
+        const mean = sums.seenArea[q] > 0 ? sums.seenLight[3 * q + c] / sums.seenArea[q] : own;
+        seen[3 * q + c] += w[c] * mean;
+        seenTrueArea[3 * q + c] += w[c] * (sums.seenLight[3 * q + c] + (sums.area[q] - sums.seenArea[q]) * mean);
+      }
+    }
+  });
+  return { seen, seenTrueArea };
 }
 
 /**
@@ -221,16 +275,21 @@ function nearTest(scaled, grids, summed) {
 /**
  * Adds each summed Gaussian's sum over the mesh's pieces to `light` at the query points that sum
  * it (`grids[m]`, null where none does); returns the pieces summed per Gaussian and the light reads.
+ * With `limitSums` (per Gaussian, null where it is not summed) it also adds, per query point, the
+ * Gaussian's area weight Σ G·A (`area`), its part on the surface the camera sees (`seenArea`) and
+ * the light seen (`seenLight`, r, g, b), unweighted by the profile.
  */
-function sumOverPieces({ triangles, lightAt, queryMm, scaled, grids, light, lightEdge }) {
+function sumOverPieces({ triangles, lightAt, queryMm, scaled, grids, light, lightEdge, limitSums = null }) {
   const summed = scaled.map((g, m) => m).filter((m) => grids[m]);
   const pieces = scaled.map(() => 0);
   let lightReads = 0;
   const near = nearTest(scaled, grids, summed);
   const uv = [0, 0];
-  const none = [0, 0, 0];
+  const none = [0, 0, 0, 0];
   // One splat: the piece's light e at (x, y, z) into the points within Gaussian m's radius.
   let sx = 0; let sy = 0; let sz = 0; let sr = 0; let sg = 0; let sb = 0; let sVariance = 1; let sR2 = 0; let sNorm = 0; let sw = none;
+  let sSeen = 0; let sSeenR = 0; let sSeenG = 0; let sSeenB = 0;
+  let sArea = null; let sSeenArea = null; let sSeenLight = null; // the Gaussian's limit sums, or null
   const splat = (q) => {
     const d2 = (queryMm[3 * q] - sx) ** 2 + (queryMm[3 * q + 1] - sy) ** 2 + (queryMm[3 * q + 2] - sz) ** 2;
     if (d2 > sR2) return;
@@ -238,6 +297,13 @@ function sumOverPieces({ triangles, lightAt, queryMm, scaled, grids, light, ligh
     light[3 * q] += sw[0] * g * sr;
     light[3 * q + 1] += sw[1] * g * sg;
     light[3 * q + 2] += sw[2] * g * sb;
+    if (sArea !== null) { // the Gaussian's own sums for the screen-space limits (unweighted)
+      sArea[q] += g;
+      sSeenArea[q] += g * sSeen;
+      sSeenLight[3 * q] += g * sSeenR;
+      sSeenLight[3 * q + 1] += g * sSeenG;
+      sSeenLight[3 * q + 2] += g * sSeenB;
+    }
   };
   const readAt = (piece, out) => {
     lightReads++;
@@ -245,7 +311,7 @@ function sumOverPieces({ triangles, lightAt, queryMm, scaled, grids, light, ligh
     uv[0] = (ua[0] + ub[0] + uc[0]) / 3;
     uv[1] = (ua[1] + ub[1] + uc[1]) / 3;
     const e = lightAt(piece.centroid, uv);
-    out[0] = e[0]; out[1] = e[1]; out[2] = e[2];
+    out[0] = e[0]; out[1] = e[1]; out[2] = e[2]; out[3] = e.length > 3 ? e[3] : 1;
     return out;
   };
   forEachPiece(triangles, {
@@ -270,12 +336,12 @@ function sumOverPieces({ triangles, lightAt, queryMm, scaled, grids, light, ligh
       piece.shared = parent !== null && parent.shared !== null ? parent.shared : null;
       let split = piece.wanted && edgeMm > piece.needEdgeMm;
       if (!split) for (const m of summed) if (scaled[m].edgeMm < edgeMm && near(m, piece)) { split = true; break; }
-      if (split && piece.shared === null && edgeMm <= lightEdge) piece.shared = readAt(piece, piece.read ??= new Float64Array(3));
+      if (split && piece.shared === null && edgeMm <= lightEdge) piece.shared = readAt(piece, piece.read ??= new Float64Array(4));
       return split;
     },
     leaf(piece) {
       if (piece.shared !== null) return piece.shared;
-      return piece.wanted ? readAt(piece, piece.read ??= new Float64Array(3)) : none;
+      return piece.wanted ? readAt(piece, piece.read ??= new Float64Array(4)) : none;
     },
     emit(piece, e) {
       for (const m of piece.sums) {
@@ -285,6 +351,8 @@ function sumOverPieces({ triangles, lightAt, queryMm, scaled, grids, light, ligh
         sNorm = piece.areaMm2 / (2 * Math.PI * sVariance);
         sx = piece.centroid[0]; sy = piece.centroid[1]; sz = piece.centroid[2];
         sr = e[0]; sg = e[1]; sb = e[2];
+        sSeen = e[3]; sSeenR = e[4]; sSeenG = e[5]; sSeenB = e[6];
+        ({ area: sArea, seenArea: sSeenArea, seenLight: sSeenLight } = limitSums ? limitSums[m] : NO_LIMIT_SUMS);
         grids[m].within(sx, sy, sz, scaled[m].radiusMm, splat);
       }
     },

@@ -132,6 +132,43 @@ describe('surface truth', () => {
     }
   });
 
+  it('screen-space limits, on a plane: light the camera does not see beyond a line is missing from both, each Gaussian then averaging the light it sees (1e-3 of the closed forms); with everything seen the true-area limit is the truth', () => {
+    const mesh = jitteredPlane(4, 28, 5);
+    const xs = [0.05, 0.4, 1.3, 3];
+    const queryMm = Float64Array.from(xs.flatMap((x) => [x, -0.23, 0]));
+    const queryLight = new Float64Array(3 * xs.length).fill(0.2);
+    const common = { triangles: mesh, queryMm, queryLight, queryPixelMm: new Float64Array(xs.length).fill(0.5), gaussians: SKIN, screenLimits: true };
+    // Lit (1) where the camera does not see (x < 0), 0.2 where it does.
+    const hidden = surfaceTruth({ ...common, lightAt: ([x]) => (x < 0 ? [1, 1, 1, 0] : [0.2, 0.2, 0.2, 1]) });
+    xs.forEach((x, q) => {
+      for (let c = 0; c < 3; c++) {
+        const truth = SKIN.reduce((sum, [v, w], m) => sum + w[c] * (m === 0 ? 0.2 : 0.2 + 0.8 * erfc(x / Math.sqrt(2 * v)) / 2), 0);
+        expect(Math.abs(hidden.light[3 * q + c] - truth), `truth at ${x} mm`).toBeLessThan(2e-3);
+        expect(Math.abs(hidden.screenLimits.seen[3 * q + c] - 0.2), `seen at ${x} mm`).toBeLessThan(1e-3);
+        expect(Math.abs(hidden.screenLimits.seenTrueArea[3 * q + c] - 0.2), `seen, true area, at ${x} mm`).toBeLessThan(1e-3);
+      }
+    });
+    const seen = surfaceTruth({ ...common, lightAt: ([x]) => [x < 0 ? 1 : 0.2, 0.2, 0.2] });
+    seen.light.forEach((value, k) => expect(Math.abs(seen.screenLimits.seenTrueArea[k] - value)).toBeLessThan(1e-12));
+  });
+
+  it('screen-space limits, on a sphere of radius 3 mm with uniform light, its far half unseen: each Gaussian averages to the light (1), while the true area keeps 1 − exp(−2ρ²/v) of it as the truth does (5e-4)', () => {
+    const rho = 3;
+    const mesh = icosphere(rho, 5);
+    const queryMm = Float64Array.from([0, 0, rho, rho * Math.SQRT1_2, 0, rho * Math.SQRT1_2]);
+    const limits = surfaceTruth({
+      triangles: mesh, lightAt: ([, , z]) => [1, 1, 1, z > 0 ? 1 : 0], queryMm, queryLight: new Float64Array(6).fill(1),
+      queryPixelMm: new Float64Array(2), gaussians: SKIN, screenLimits: true,
+    }).screenLimits;
+    for (let q = 0; q < 2; q++) {
+      for (let c = 0; c < 3; c++) {
+        const kept = SKIN.reduce((s, [v, w]) => s + w[c] * (1 - Math.exp((-2 * rho * rho) / v)), 0);
+        expect(Math.abs(limits.seen[3 * q + c] - 1), `point ${q}, channel ${c}`).toBeLessThan(1e-9);
+        expect(Math.abs(limits.seenTrueArea[3 * q + c] - kept), `point ${q}, channel ${c}`).toBeLessThan(5e-4);
+      }
+    }
+  });
+
   it('widthMm scales the profile: at width 2 a step reads as the width-1 step at half the distance; twice the density moves it by < 1e-3', () => {
     const mesh = jitteredPlane(4, 40, 2);
     const at = (x, widthMm, density = 1) => surfaceTruth({
