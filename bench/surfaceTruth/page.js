@@ -44,9 +44,9 @@ const surfaceMaterial = () => new ShaderMaterial({
  *   view: [x, y, z, targetX, targetY, targetZ, fovDeg] for another camera than the bench's (a close-up);
  *   density: the truth's samples per area (1: bench/surfaceTruth/scatter.js's rule); truthLight:
  *   the truth computed before for the same configuration (truthLight()), instead of computing it;
- *   truthLimits: its screen-space limits (truthLimits()), with it
+ *   truthIdealBlurs: its ideal blurs (truthIdealBlurs()), with it
  */
-async function open({ width, height, lightAzimuthDeg = 0, lightElevationDeg = 0, widthMm = 1, atlasSize = 2048, density = 1, view = null, scene = 'head', truthLight = null, truthLimits = null }) {
+async function open({ width, height, lightAzimuthDeg = 0, lightElevationDeg = 0, widthMm = 1, atlasSize = 2048, density = 1, view = null, scene = 'head', truthLight = null, truthIdealBlurs = null }) {
   close();
   const renderer = new WebGLRenderer({ antialias: false });
   renderer.setPixelRatio(1);
@@ -78,22 +78,22 @@ async function open({ width, height, lightAzimuthDeg = 0, lightElevationDeg = 0,
   session.unscattered = unscattered.diffuse;
   session.triangles = trianglesOf(mesh, built.worldUnitInMm);
   // truthLight: a truth computed before for this configuration (its light per pixel, as truthLight() gives it).
-  const cachedLimits = truthLimits && Object.fromEntries(Object.entries(truthLimits).map(([name, light]) => [name, Float64Array.from(light)]));
-  const truth = truthLight ? { light: Float64Array.from(truthLight), screenLimits: cachedLimits, cached: true } : await truthAt({ atlasSize, density, screenLimits: true });
-  if (!truthLight && built.light) { // the same with the light's view of the surface too: what a translucent shadow map could add
-    const { screenLimits: both } = await truthAt({ atlasSize, density, screenLimits: true, lightSees: await lightVisibility() });
-    truth.screenLimits = { ...truth.screenLimits, seenOrLit: both.seen, seenOrLitTrueArea: both.seenTrueArea };
+  const cachedLimits = truthIdealBlurs && Object.fromEntries(Object.entries(truthIdealBlurs).map(([name, light]) => [name, Float64Array.from(light)]));
+  const truth = truthLight ? { light: Float64Array.from(truthLight), idealBlurs: cachedLimits, cached: true } : await truthAt({ atlasSize, density, idealBlurs: true });
+  if (!truthLight && built.light) { // the same with the light's view of the surface too (a translucent shadow map's)
+    const { idealBlurs: both } = await truthAt({ atlasSize, density, idealBlurs: true, lightSees: await lightVisibility() });
+    truth.idealBlurs = { ...truth.idealBlurs, seenOrLit: both.seen, seenOrLitTrueArea: both.seenTrueArea };
   }
   if (truth.light.length !== 3 * pixels.length) throw new RangeError(`open: truthLight must hold 3 × ${pixels.length} values, got ${truth.light.length}`);
   const { light } = truth;
-  session.truth = { pixels, light, screenLimits: truth.screenLimits ?? null };
+  session.truth = { pixels, light, idealBlurs: truth.idealBlurs ?? null };
   // Scattering moves light, it does not make it: over the whole view the truth keeps about the
   // light of the unscattered image (less where light leaves through surfaces the camera misses).
   const sums = [0, 0, 0, 0, 0, 0];
   pixels.forEach((i, q) => { for (let c = 0; c < 3; c++) { sums[c] += light[3 * q + c]; sums[3 + c] += unscattered.diffuse[4 * i + c]; } });
   const gl = renderer.getContext();
   const debug = gl.getExtension('WEBGL_debug_renderer_info');
-  const { light: _, screenLimits: __, ...stats } = truth;
+  const { light: _, idealBlurs: __, ...stats } = truth;
   return {
     webgl: { renderer: gl.getParameter(debug ? debug.UNMASKED_RENDERER_WEBGL : gl.RENDERER), version: gl.getParameter(gl.VERSION) },
     truthOverUnscattered: [0, 1, 2].map((c) => sums[c] / sums[3 + c]),
@@ -129,7 +129,7 @@ const MAX_DEPTH_SPAN_PIXELS = 4;
 
 /**
  * The light entering at a surface point, and whether the camera sees it (a fourth number, 1 or 0,
- * for the screen-space limits; with `lightSees`, whether the camera or the light sees it): its
+ * for the ideal blurs; with `lightSees`, whether the camera or the light sees it): its
  * camera pixel's diffuse light where the camera sees it
  * (inside the image, on a subsurface pixel whose surface lies at the point's distance within
  * VISIBLE_DEPTH_MM plus the pixel's depth span at its facing angle), else the atlas's.
@@ -177,9 +177,9 @@ function lightOfSurface(atlas, counts, lightSees = null) {
 /**
  * The truth at the session's pixels: over the mesh at `density` (bench/surfaceTruth/scatter.js),
  * the camera's light where it sees, an atlas of `atlasSize`² texels elsewhere; with
- * `screenLimits`, what screen space can reach (seen by the camera, or by the camera or `lightSees`).
+ * `idealBlurs`, the ideal blurs of what is seen (by the camera, or by the camera or `lightSees`).
  */
-async function truthAt({ atlasSize = 2048, density = 1, screenLimits = false, lightSees = null } = {}) {
+async function truthAt({ atlasSize = 2048, density = 1, idealBlurs = false, lightSees = null } = {}) {
   const { renderer, built, mesh, widthMm, height, pixels, surface, unscattered, triangles } = session;
   const started = performance.now();
   const atlas = await renderSurfaceAtlas({ renderer, built, mesh, widthMm, viewHeight: height, size: atlasSize });
@@ -201,11 +201,11 @@ async function truthAt({ atlasSize = 2048, density = 1, screenLimits = false, li
   const counts = { camera: 0, atlas: 0, missed: 0 };
   const truthStarted = performance.now();
   const truth = surfaceTruth({
-    triangles, lightAt: lightOfSurface(atlas, counts, lightSees), queryMm, queryLight, queryPixelMm, gaussians: GAUSSIANS.skin, widthMm, lightEdgeMm, density, screenLimits,
+    triangles, lightAt: lightOfSurface(atlas, counts, lightSees), queryMm, queryLight, queryPixelMm, gaussians: GAUSSIANS.skin, widthMm, lightEdgeMm, density, idealBlurs,
   });
   const reads = counts.camera + counts.atlas + counts.missed;
   return {
-    light: truth.light, screenLimits: truth.screenLimits, atlasSize, density, atlasMs, truthMs: performance.now() - truthStarted, lightEdgeMm,
+    light: truth.light, idealBlurs: truth.idealBlurs, atlasSize, density, atlasMs, truthMs: performance.now() - truthStarted, lightEdgeMm,
     localShare: truth.localShare, pieces: truth.pieces, lightReads: reads,
     readShares: Object.fromEntries(Object.entries(counts).map(([k, n]) => [k, n / reads])),
   };
@@ -229,7 +229,7 @@ async function lightVisibility() {
     const { camera, size } = view;
     const viewMatrix = camera.matrixWorldInverse.elements;
     const projection = camera.projectionMatrix.clone().multiply(camera.matrixWorldInverse).elements;
-    const texelWorld = camera.isOrthographicCamera ? (camera.right - camera.left) / size : null;
+    const texelWorld = camera.isOrthographicCamera ? Math.max(camera.right - camera.left, camera.top - camera.bottom) / size : null;
     const toleranceBase = LIGHT_SEES_DEPTH_MM / built.worldUnitInMm;
     return (x, y, z) => {
       const e = projection;
@@ -448,26 +448,26 @@ async function images(setting) {
 /** The session's truth, rgb per subsurface pixel (in the order of the pixels), to be saved and given back to open. */
 const truthLight = () => Array.from(session.truth.light);
 
-/** The truth's screen-space limits (to keep beside truthLight()), or null where it has none. */
-const truthLimits = () => {
-  const limits = session.truth.screenLimits;
-  return limits && Object.fromEntries(Object.entries(limits).map(([name, light]) => [name, Array.from(light)]));
+/** The truth's ideal blurs (to keep beside truthLight()), or null where it has none. */
+const truthIdealBlurs = () => {
+  const blurs = session.truth.idealBlurs;
+  return blurs && Object.fromEntries(Object.entries(blurs).map(([name, light]) => [name, Array.from(light)]));
 };
 
 /**
- * What screen space can reach at best (bench/surfaceTruth/scatter.js's screenLimitsOf: `seen`, the
+ * The ideal blurs of what is seen (bench/surfaceTruth/scatter.js's idealBlursOf: `seen`, the
  * light the camera sees, each Gaussian's mean over the surface it sees; `seenTrueArea`, that with
  * the true area within reach), and the same with the surface the light sees too (`seenOrLit`,
- * `seenOrLitTrueArea`: a translucent shadow map's reach), in the measure of a setting's error;
- * null where the truth has none (kept from a run before they were computed).
+ * `seenOrLitTrueArea`: the light's view, as a translucent shadow map holds it), in the measure of
+ * a setting's error; null where the truth has none (kept from a run before they were computed).
  */
-function screenLimits() {
-  const limits = session.truth.screenLimits;
-  if (!limits) return null;
-  return Object.fromEntries(Object.entries(limits).map(([name, light]) => {
+function idealBlurs() {
+  const blurs = session.truth.idealBlurs;
+  if (!blurs) return null;
+  return Object.fromEntries(Object.entries(blurs).map(([name, light]) => {
     const valueAt = (q, c) => light[3 * q + c];
     return [name, { relative: relativeByRegion(valueAt), bias: biasByRegion(valueAt) }];
   }));
 }
 
-window.surfaceTruthBench = { open, measure, screenLimits, truthUncertainty, images, costs, truthLight, truthLimits, close };
+window.surfaceTruthBench = { open, measure, idealBlurs, truthUncertainty, images, costs, truthLight, truthIdealBlurs, close };

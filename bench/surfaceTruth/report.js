@@ -12,8 +12,8 @@ const CHECK_LABEL = {
   atlas: (c) => `*the truth from a ${c.atlasSize}² atlas, against the truth*`,
 };
 const settingLabel = (name) => (name === 'default' ? "**default** (footprint, samples 'auto')" : name);
-const LIMIT_LABEL = {
-  seen: '*screen space at best: the light the camera sees, each Gaussian averaged over the surface it sees*',
+const IDEAL_BLUR_LABEL = {
+  seen: '*an ideal normalised screen blur: the light the camera sees, each Gaussian averaged over the surface it sees*',
   seenTrueArea: '*the same with the true area within reach (the unseen part filled with that average)*',
   seenOrLit: '*with the light\'s view too: the light the camera or the light sees, each Gaussian averaged over that surface*',
   seenOrLitTrueArea: '*the same with the true area within reach*',
@@ -27,7 +27,7 @@ function configurationTable(configuration, regions = REGIONS) {
   const { cost } = configuration;
   const costOf = (name) => (cost ? [cost[name] == null ? '—' : cost[name].toFixed(1)] : []);
   const rows = configuration.settings.filter((s) => s.name !== 'none').map((s) => [settingLabel(s.name), ...regions.map((r) => number(s.relative[r])), ...costOf(s.name)]);
-  for (const [name, limit] of Object.entries(configuration.screenLimits ?? {})) rows.push([LIMIT_LABEL[name], ...regions.map((r) => `*${number(limit.relative[r])}*`), ...(cost ? [''] : [])]);
+  for (const [name, blur] of Object.entries(configuration.idealBlurs ?? {})) rows.push([IDEAL_BLUR_LABEL[name], ...regions.map((r) => `*${number(blur.relative[r])}*`), ...(cost ? [''] : [])]);
   for (const check of configuration.convergence) rows.push([CHECK_LABEL[check.name](check), ...regions.map((r) => `*${number(check.relative[r])}*`), ...(cost ? [''] : [])]);
   const pixels = (r) => (r === 'all' ? configuration.pixels : configuration.regionPixels[r]);
   return table(['setting', ...regions.map((r) => `${r} (${pixels(r)} px)`), ...(cost ? ['SSS ms'] : [])], rows);
@@ -49,9 +49,9 @@ function truthSentence(c) {
 
 /**
  * The short form for docs/BENCH.md: the default, the dense reference and the reference kernel per
- * view and light, over all pixels and the regions where screen space fails, beside what screen
- * space can reach at best (and with the light's view too) and the truth's convergence (the most
- * either check moved it).
+ * view and light, over all pixels and the regions where screen space fails, beside the ideal
+ * normalised screen blur (and the ideal blur of the camera's and the light's views with the true
+ * area) and the truth's convergence (the most either check moved it).
  * @param {object} results bench/results/surface-truth.json
  */
 export function surfaceTruthSummary(results) {
@@ -59,9 +59,9 @@ export function surfaceTruthSummary(results) {
   const rows = results.views.flatMap((c) => [
     ...['default', 'dense', 'reference17'].map((name) => c.settings.find((s) => s.name === name)).filter(Boolean)
       .map((s) => [c.name, s.name, ...regions.map((r) => number(s.relative[r]))]),
-    ...(c.screenLimits ? [
-      [c.name, '*screen space at best (the light the camera sees)*', ...regions.map((r) => `*${number(c.screenLimits.seen.relative[r])}*`)],
-      ...(c.screenLimits.seenOrLitTrueArea ? [[c.name, '*with the light\'s view and the true area too*', ...regions.map((r) => `*${number(c.screenLimits.seenOrLitTrueArea.relative[r])}*`)]] : []),
+    ...(c.idealBlurs ? [
+      [c.name, '*an ideal normalised screen blur*', ...regions.map((r) => `*${number(c.idealBlurs.seen.relative[r])}*`)],
+      ...(c.idealBlurs.seenOrLitTrueArea ? [[c.name, '*an ideal blur of the camera\'s and the light\'s views, with the true area*', ...regions.map((r) => `*${number(c.idealBlurs.seenOrLitTrueArea.relative[r])}*`)]] : []),
     ] : []),
     ...(c.convergence.length ? [[c.name, '*the truth\'s own convergence (most moved)*', ...regions.map((r) => `*${number(Math.max(...c.convergence.map((k) => k.relative[r] ?? 0)))}*`)]] : []),
   ]);
@@ -79,26 +79,26 @@ function goalsTable(results) {
     const worse = noT ? present.filter((r) => d[r] > noT[r] + 1e-3) : [];
     const bias = Object.fromEntries(c.settings.map((x) => [x.name, x.bias?.creases]));
     const red = (name) => (bias[name] ? `${(100 * bias[name][0]).toFixed(1)} %` : '—');
-    return [c.name, `${number(d[worst])} (${worst})`, number(d.all), by.dense ? number(by.dense.all) : '—', c.screenLimits ? number(c.screenLimits.seen.relative.all) : '—',
+    return [c.name, `${number(d[worst])} (${worst})`, number(d.all), by.dense ? number(by.dense.all) : '—', c.idealBlurs ? number(c.idealBlurs.seen.relative.all) : '—',
       noT ? (worse.length ? `worse in ${worse.map((r) => `${r} ${number(noT[r])} → ${number(d[r])}`).join(', ')}` : 'never worse') : '—',
       `${red('none')} → ${red('default')}`];
   });
-  return table(['view, light', 'default: worst region (goal ≤ 1.0)', 'default: all pixels (goal front ≤ 0.35)', 'dense: all pixels', 'screen space at best: all pixels', 'transmittance (default against default without it)',
+  return table(['view, light', 'default: worst region (goal ≤ 1.0)', 'default: all pixels (goal front ≤ 0.35)', 'dense: all pixels', 'ideal normalised screen blur: all pixels', 'transmittance (default against default without it)',
     'creases: red against the truth\'s, no scattering → default'], rows);
 }
 
-/** Per configuration: the default beside what screen space can reach at best, over all pixels and in its worst region. */
-function limitsTable(results) {
-  const rows = results.views.filter((c) => c.screenLimits).map((c) => {
+/** Per configuration: the default beside the ideal blurs, over all pixels, and the regions where the default is nearer the truth than the ideal screen blur or well farther. */
+function idealBlursTable(results) {
+  const rows = results.views.filter((c) => c.idealBlurs).map((c) => {
     const d = c.settings.find((x) => x.name === 'default').relative;
-    const { seen, seenTrueArea, seenOrLit, seenOrLitTrueArea } = c.screenLimits;
+    const { seen, seenTrueArea, seenOrLit, seenOrLitTrueArea } = c.idealBlurs;
     const present = REGIONS.filter((r) => r !== 'all' && seen.relative[r] != null);
-    const worst = present.reduce((a, r) => (seen.relative[r] > seen.relative[a] ? r : a), present[0]);
-    const belowDefault = present.filter((r) => seen.relative[r] < d[r] - 0.05);
-    return [c.name, number(d.all), number(seen.relative.all), number(seenTrueArea.relative.all), number(seenOrLit?.relative.all), number(seenOrLitTrueArea?.relative.all), `${worst} ${number(seen.relative[worst])}`,
-      belowDefault.length ? belowDefault.map((r) => `${r} ${number(d[r])} → ${number(seen.relative[r])}`).join(', ') : 'none'];
+    const listed = (regions) => (regions.length ? regions.map((r) => `${r} ${number(d[r])} (${number(seen.relative[r])})`).join(', ') : 'none');
+    return [c.name, number(d.all), number(seen.relative.all), number(seenTrueArea.relative.all), number(seenOrLit?.relative.all), number(seenOrLitTrueArea?.relative.all),
+      listed(present.filter((r) => d[r] < seen.relative[r])), listed(present.filter((r) => d[r] > seen.relative[r] + 0.05))];
   });
-  return table(['view, light', 'default: all pixels', 'screen space at best: all pixels', 'with the true area', 'with the light\'s view too', 'and the true area', 'screen space at best, its worst region', 'regions where the default is 0.05 or more above the best'], rows);
+  return table(['view, light', 'default: all pixels', 'ideal normalised screen blur', 'with the true area', 'with the light\'s view too', 'and the true area',
+    'regions where the default is nearer the truth than the ideal screen blur (its value)', 'regions where it is 0.05 or more farther'], rows);
 }
 
 /**
@@ -155,9 +155,9 @@ scatters the light the pipeline blurs (bench/surfaceTruth/page.js):
 Unit tests (test/node/bench/surfaceTruth.test.js, Node): the pieces' areas sum to the mesh's within
 1e-9; a step of light on an irregularly triangulated plane is within 2e-3 of the closed form
 (erfc per Gaussian); uniform light on a sphere keeps Σ wᵢ (1 − exp(−2ρ²/vᵢ)), the closed form at
-3D distances, within 5e-4; the screen-space limits below average only the light seen (a plane lit
-where the camera does not see, a sphere whose far half it does not see) within 1e-3 of their closed
-forms.
+3D distances, within 5e-4; the ideal blurs below average only the light seen (a plane lit where
+the camera does not see, with a ramp where it does; a sphere whose far half it does not see) within
+1e-3 of their closed forms.
 
 Error: ‖setting − truth‖ / ‖no scattering − truth‖ over each region's pixels (RGB), i.e. the part of
 the effect a setting misses: 0 is the truth, 1 no better than no scattering ("no scattering": no
@@ -191,30 +191,33 @@ red than the truth.
 
 ${goalsTable(results)}
 
-## What screen space can reach
+## Ideal blurs of what is seen
 
-The truth also gives the best any screen-space method can do (bench/surfaceTruth/scatter.js's
-screenLimitsOf, in the same pass): the light the camera sees, each Gaussian averaged over the
-surface the camera sees at the true 3D distances and areas. That is a screen blur with an exact
-kernel and a perfect depth rule: its kernel sums to 1 over the surface it keeps, as every screen
-blur's does, so where light comes from surface the camera cannot see (behind a silhouette, inside
-a fold, lit from behind) it puts the average of what it sees instead. A second line fills that
-unseen part with the same average but keeps the true area within reach (more than a plane's in a
-fold, less round a convex edge): what knowing the geometry, but not the hidden light, would add.
-Two more lines add the surface the light sees (the library's own light depth map, 2048², tells
-which points it reaches): what a method that also gathers the light's view of the surface (a
-translucent shadow map, Dachsbacher and Stamminger 2003) could reach at best. In the tables above
-all four are the italic rows below the settings.
+The truth's pass also computes ideal blurs of what a view sees (bench/surfaceTruth/scatter.js's
+idealBlursOf). The first is an ideal normalised screen blur: the light the camera sees, each
+Gaussian averaged over the surface the camera sees, at the true 3D distances and areas. It has
+an exact kernel and a perfect depth rule, and like every screen blur its kernel sums to 1 over
+the surface it keeps. Where light comes from surface the camera cannot see (behind a silhouette,
+inside a fold, lit from behind) it puts the average of what it sees instead. It is not a bound:
+a real blur's own errors can land nearer the truth, and the default's does in some regions (the
+table's second-to-last column).
 
-${limitsTable(results)}
+A second line fills that unseen part with the same average but keeps the true area within reach:
+more than a plane's in a fold, less round a convex edge. Two more lines add the surface the light
+sees, found with the library's own light depth map at 2048²: the light's view, as a translucent
+shadow map holds it (Dachsbacher and Stamminger 2003). The last of them also knows the area of
+surface neither view sees, which no shadow map has, and fills it with the average of what is
+seen. In the tables above all four are the italic rows below the settings.
 
-Where the best is far from the truth, only light the camera does not see can close the gap (issue
-21's part 2: a translucent shadow map, the light's view of the surface); where the default is well
-above the best, a better screen-space method can still gain.
+${idealBlursTable(results)}
+
+Where even the blurs that see more stay far from the truth, the missing light is neither in the
+camera's nor the light's view; where the light's view brings a blur near the truth, gathering that
+view (issue 21's part 2) is where to look.
 
 ${sections.join('\n')}
 What no screen-space method can see: light entering surfaces hidden from the camera (behind a
 silhouette, inside an ear fold) and the true surface area of walls seen edge-on (eyelid slits,
-nostrils); "What screen space can reach" above measures both.
+nostrils); "Ideal blurs of what is seen" above measures both.
 `;
 }

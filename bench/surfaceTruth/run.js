@@ -99,7 +99,7 @@ const line = (relative) => Object.entries(relative).map(([k, v]) => `${k} ${v ==
 async function measureConfiguration(page, name, options, settingNames, withCost = false) {
   const cachePath = join(truthDirectory, `${fileName(name)}.json`);
   const cached = useCache ? JSON.parse(await readFile(cachePath, 'utf8').catch(() => 'null')) : null;
-  const info = await page.evaluate((o) => window.surfaceTruthBench.open(o), { ...view, atlasSize: ATLAS, ...options, truthLight: cached?.light ?? null, truthLimits: cached?.limits ?? null });
+  const info = await page.evaluate((o) => window.surfaceTruthBench.open(o), { ...view, atlasSize: ATLAS, ...options, truthLight: cached?.light ?? null, truthIdealBlurs: cached?.idealBlurs ?? null });
   info.view = { width: options.width ?? view.width, height: options.height ?? view.height };
   if (cached) {
     Object.assign(info, cached.info ?? {}, { cachedTruth: true });
@@ -107,7 +107,7 @@ async function measureConfiguration(page, name, options, settingNames, withCost 
   } else if (!quick) { // kept for measuring other settings against it later (bench/surfaceTruth/variants.js)
     await mkdir(truthDirectory, { recursive: true });
     const { webgl: _, ...kept } = info;
-    await writeFile(cachePath, JSON.stringify({ name, options: { ...view, atlasSize: ATLAS, ...options }, info: kept, light: await page.evaluate(() => window.surfaceTruthBench.truthLight()), limits: await page.evaluate(() => window.surfaceTruthBench.truthLimits()) }));
+    await writeFile(cachePath, JSON.stringify({ name, options: { ...view, atlasSize: ATLAS, ...options }, info: kept, light: await page.evaluate(() => window.surfaceTruthBench.truthLight()), idealBlurs: await page.evaluate(() => window.surfaceTruthBench.truthIdealBlurs()) }));
   }
   results.webgl ??= info.webgl;
   console.log(`${name}: truth in ${(info.truthMs / 1000).toFixed(1)} s (${info.lightReads} light reads: ${Object.entries(info.readShares).map(([k, v]) => `${k} ${(100 * v).toFixed(1)} %`).join(', ')}); truth / unscattered ${info.truthOverUnscattered.map((v) => v.toFixed(4)).join(', ')}`);
@@ -117,9 +117,9 @@ async function measureConfiguration(page, name, options, settingNames, withCost 
     convergence.push({ ...check, relative: moved.relative, truthMs: moved.truthMs });
     console.log(`  truth at ${check.name} ×2 against it: ${line(moved.relative)}`);
   }
-  // What screen space can reach at best (bench/surfaceTruth/scatter.js's screenLimitsOf).
-  const screenLimits = await page.evaluate(() => window.surfaceTruthBench.screenLimits());
-  for (const [limit, r] of Object.entries(screenLimits ?? {})) console.log(`  screen-space limit, ${limit.padEnd(12)} ${line(r.relative)}`);
+  // Ideal blurs of what the camera (and the light) sees (bench/surfaceTruth/scatter.js's idealBlursOf).
+  const idealBlurs = await page.evaluate(() => window.surfaceTruthBench.idealBlurs());
+  for (const [blur, r] of Object.entries(idealBlurs ?? {})) console.log(`  ideal blur of ${blur.padEnd(17)} ${line(r.relative)}`);
   const settings = [];
   for (const [setting, o] of SETTINGS.filter(([n]) => settingNames.includes(n))) {
     const r = await page.evaluate((x) => window.surfaceTruthBench.measure(x), o);
@@ -139,7 +139,7 @@ async function measureConfiguration(page, name, options, settingNames, withCost 
   const images = await page.evaluate(() => window.surfaceTruthBench.images({}));
   for (const [k, v] of Object.entries(images)) await png(`image-${fileName(name)}-${k}`, v);
   const { webgl: _, ...kept } = info;
-  const configuration = { ...options, ...kept, name, convergence, screenLimits, settings, cost }; // name last: a light's options have one too
+  const configuration = { ...options, ...kept, name, convergence, idealBlurs, settings, cost }; // name last: a light's options have one too
   if (!quick) await writeFile(join(truthDirectory, `${fileName(name)}.result.json`), JSON.stringify(configuration)); // the part's own copy
   return configuration;
 }

@@ -30,8 +30,8 @@
 /** A piece's light: r, g, b, the share of its area the camera sees, and r, g, b times that share. */
 export const LIGHT_CHANNELS = 7;
 
-/** sumOverPieces's limit sums where none are kept. */
-const NO_LIMIT_SUMS = Object.freeze({ area: null, seenArea: null, seenLight: null });
+/** sumOverPieces's ideal-blur sums where none are kept. */
+const NO_BLUR_SUMS = Object.freeze({ area: null, seenArea: null, seenLight: null });
 
 /** A Gaussian is summed over pieces whose longest edge is at most this times its σ. */
 export const EDGE_PER_SIGMA = 1;
@@ -181,7 +181,7 @@ export function triangleArea(a, b, c) {
  * @param {object} o
  * @param {Triangles} o.triangles the whole subsurface mesh, world millimetres
  * @param {(x: number[], uv: number[]) => number[]} o.lightAt the diffuse light entering at a surface
- *   point (r, g, b) and, for the screen-space limits, a fourth number: 1 where the camera sees it, 0
+ *   point (r, g, b) and, for the ideal blurs, a fourth number: 1 where the camera sees it, 0
  *   where it does not (1 if left out)
  * @param {Float64Array} o.queryMm xyz per query point, millimetres
  * @param {Float64Array} o.queryLight rgb per query point: its own light (for the local Gaussians)
@@ -191,11 +191,11 @@ export function triangleArea(a, b, c) {
  * @param {number} [o.lightEdgeMm] the longest edge of a piece whose light is read at its centroid
  * @param {number} [o.density=1] samples per area relative to the rule above (2: √2 shorter edges,
  *   twice the samples); the local rule does not change with it (the pixels' light is what it is)
- * @param {boolean} [o.screenLimits=false] also return what screen space can reach (screenLimitsOf)
- * @returns {{ light: Float64Array, localShare: number[], pieces: number[], lightReads: number, screenLimits?: { seen: Float64Array, seenTrueArea: Float64Array } }}
+ * @param {boolean} [o.idealBlurs=false] also return the ideal blurs of what is seen (idealBlursOf)
+ * @returns {{ light: Float64Array, localShare: number[], pieces: number[], lightReads: number, idealBlurs?: { seen: Float64Array, seenTrueArea: Float64Array } }}
  *   per Gaussian: the share of query points where it was kept local, and the pieces summed
  */
-export function surfaceTruth({ triangles, lightAt, queryMm, queryLight, queryPixelMm, gaussians, widthMm = 1, lightEdgeMm = Infinity, density = 1, screenLimits = false }) {
+export function surfaceTruth({ triangles, lightAt, queryMm, queryLight, queryPixelMm, gaussians, widthMm = 1, lightEdgeMm = Infinity, density = 1, idealBlurs = false }) {
   const scaled = scaledGaussians(gaussians, widthMm, density);
   const queries = queryMm.length / 3;
   const light = new Float64Array(3 * queries);
@@ -210,29 +210,29 @@ export function surfaceTruth({ triangles, lightAt, queryMm, queryLight, queryPix
     localShare.push(1 - members.length / queries);
     return members.length ? pointGrid(queryMm, members, g.radiusMm / 2) : null;
   });
-  const limitSums = screenLimits ? grids.map((grid) => (grid ? { area: new Float64Array(queries), seenArea: new Float64Array(queries), seenLight: new Float64Array(3 * queries) } : null)) : null;
-  const { pieces, lightReads } = sumOverPieces({ triangles, lightAt, queryMm, scaled, grids, light, lightEdge: lightEdgeMm / Math.sqrt(density), limitSums });
-  return { light, localShare, pieces, lightReads, ...(screenLimits ? { screenLimits: screenLimitsOf(scaled, limitSums, queryLight) } : {}) };
+  const blurSums = idealBlurs ? grids.map((grid) => (grid ? { area: new Float64Array(queries), seenArea: new Float64Array(queries), seenLight: new Float64Array(3 * queries) } : null)) : null;
+  const { pieces, lightReads } = sumOverPieces({ triangles, lightAt, queryMm, scaled, grids, light, lightEdge: lightEdgeMm / Math.sqrt(density), blurSums });
+  return { light, localShare, pieces, lightReads, ...(idealBlurs ? { idealBlurs: idealBlursOf(scaled, blurSums, queryLight) } : {}) };
 }
 
 /**
- * What screen space can reach at best, from the per-Gaussian sums (sumOverPieces's limitSums):
+ * Ideal blurs of what a view sees, from the per-Gaussian sums (sumOverPieces's blurSums):
  * - `seen`: each summed Gaussian's mean of the light over the surface the camera sees, weighted
- *   by the Gaussian at the 3D distance and the true area: a screen-space blur whose kernel is
- *   exact and whose depth rule is perfect (it sums to 1 over the surface it keeps, as every
- *   screen blur's kernel does) still gets this, not the truth;
+ *   by the Gaussian at the 3D distance and the true area: an ideal normalised screen blur (an
+ *   exact kernel, a perfect depth rule, summing to 1 over the surface it keeps as every screen
+ *   blur's kernel does). Not a bound: a real blur's own errors can land nearer the truth;
  * - `seenTrueArea`: the light seen, with the area the camera does not see filled with that mean:
  *   a screen method that also knew the surface's true area within reach (more than a plane's in
  *   a fold, less round a convex edge) but not the light the camera cannot see.
  * A Gaussian kept local is the same in both as in the truth; where a Gaussian reaches no surface
- * the camera sees, the point's own light.
+ * the camera sees, its mean is the point's own light (times its whole area in `seenTrueArea`).
  */
-function screenLimitsOf(scaled, limitSums, queryLight) {
+function idealBlursOf(scaled, blurSums, queryLight) {
   const queries = queryLight.length / 3;
   const seen = new Float64Array(3 * queries);
   const seenTrueArea = new Float64Array(3 * queries);
   scaled.forEach(({ w }, m) => {
-    const sums = limitSums[m];
+    const sums = blurSums[m];
     for (let q = 0; q < queries; q++) {
       for (let c = 0; c < 3; c++) {
         const own = queryLight[3 * q + c];
@@ -275,11 +275,11 @@ function nearTest(scaled, grids, summed) {
 /**
  * Adds each summed Gaussian's sum over the mesh's pieces to `light` at the query points that sum
  * it (`grids[m]`, null where none does); returns the pieces summed per Gaussian and the light reads.
- * With `limitSums` (per Gaussian, null where it is not summed) it also adds, per query point, the
+ * With `blurSums` (per Gaussian, null where it is not summed) it also adds, per query point, the
  * Gaussian's area weight Σ G·A (`area`), its part on the surface the camera sees (`seenArea`) and
  * the light seen (`seenLight`, r, g, b), unweighted by the profile.
  */
-function sumOverPieces({ triangles, lightAt, queryMm, scaled, grids, light, lightEdge, limitSums = null }) {
+function sumOverPieces({ triangles, lightAt, queryMm, scaled, grids, light, lightEdge, blurSums = null }) {
   const summed = scaled.map((g, m) => m).filter((m) => grids[m]);
   const pieces = scaled.map(() => 0);
   let lightReads = 0;
@@ -289,7 +289,7 @@ function sumOverPieces({ triangles, lightAt, queryMm, scaled, grids, light, ligh
   // One splat: the piece's light e at (x, y, z) into the points within Gaussian m's radius.
   let sx = 0; let sy = 0; let sz = 0; let sr = 0; let sg = 0; let sb = 0; let sVariance = 1; let sR2 = 0; let sNorm = 0; let sw = none;
   let sSeen = 0; let sSeenR = 0; let sSeenG = 0; let sSeenB = 0;
-  let sArea = null; let sSeenArea = null; let sSeenLight = null; // the Gaussian's limit sums, or null
+  let sArea = null; let sSeenArea = null; let sSeenLight = null; // the Gaussian's ideal-blur sums, or null
   const splat = (q) => {
     const d2 = (queryMm[3 * q] - sx) ** 2 + (queryMm[3 * q + 1] - sy) ** 2 + (queryMm[3 * q + 2] - sz) ** 2;
     if (d2 > sR2) return;
@@ -297,7 +297,7 @@ function sumOverPieces({ triangles, lightAt, queryMm, scaled, grids, light, ligh
     light[3 * q] += sw[0] * g * sr;
     light[3 * q + 1] += sw[1] * g * sg;
     light[3 * q + 2] += sw[2] * g * sb;
-    if (sArea !== null) { // the Gaussian's own sums for the screen-space limits (unweighted)
+    if (sArea !== null) { // the Gaussian's own sums for the ideal blurs (unweighted)
       sArea[q] += g;
       sSeenArea[q] += g * sSeen;
       sSeenLight[3 * q] += g * sSeenR;
@@ -352,7 +352,7 @@ function sumOverPieces({ triangles, lightAt, queryMm, scaled, grids, light, ligh
         sx = piece.centroid[0]; sy = piece.centroid[1]; sz = piece.centroid[2];
         sr = e[0]; sg = e[1]; sb = e[2];
         sSeen = e[3]; sSeenR = e[4]; sSeenG = e[5]; sSeenB = e[6];
-        ({ area: sArea, seenArea: sSeenArea, seenLight: sSeenLight } = limitSums ? limitSums[m] : NO_LIMIT_SUMS);
+        ({ area: sArea, seenArea: sSeenArea, seenLight: sSeenLight } = blurSums ? blurSums[m] : NO_BLUR_SUMS);
         grids[m].within(sx, sy, sz, scaled[m].radiusMm, splat);
       }
     },

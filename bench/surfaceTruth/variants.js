@@ -23,7 +23,7 @@ try {
     const cached = JSON.parse(await readFile(join(root, 'bench/results/tmp/surface-truth', `${view}.json`), 'utf8'));
     const page = await openReadyPage(session.browser, `${session.baseUrl}/bench/surfaceTruth/index.html`,
       { width: cached.options.width, height: cached.options.height, readyExpr: 'window.surfaceTruthBench' });
-    await page.evaluate((o) => window.surfaceTruthBench.open(o), { ...cached.options, truthLight: cached.light, truthLimits: cached.limits ?? null });
+    await page.evaluate((o) => window.surfaceTruthBench.open(o), { ...cached.options, truthLight: cached.light, truthIdealBlurs: cached.idealBlurs ?? null });
     console.log(cached.name);
     for (const [name, options] of settings) {
       const { relative, bias } = await page.evaluate((o) => window.surfaceTruthBench.measure(o), options);

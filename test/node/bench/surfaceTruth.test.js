@@ -132,39 +132,50 @@ describe('surface truth', () => {
     }
   });
 
-  it('screen-space limits, on a plane: light the camera does not see beyond a line is missing from both, each Gaussian then averaging the light it sees (1e-3 of the closed forms); with everything seen the true-area limit is the truth', () => {
+  it('ideal blurs of what is seen, on a plane: light the camera does not see beyond a line is missing from both, each Gaussian averaging the light it sees, not the point\'s own (1e-3 of the closed forms); with everything seen the true-area blur is the truth', () => {
     const mesh = jitteredPlane(4, 28, 5);
     const xs = [0.05, 0.4, 1.3, 3];
     const queryMm = Float64Array.from(xs.flatMap((x) => [x, -0.23, 0]));
-    const queryLight = new Float64Array(3 * xs.length).fill(0.2);
-    const common = { triangles: mesh, queryMm, queryLight, queryPixelMm: new Float64Array(xs.length).fill(0.5), gaussians: SKIN, screenLimits: true };
-    // Lit (1) where the camera does not see (x < 0), 0.2 where it does.
-    const hidden = surfaceTruth({ ...common, lightAt: ([x]) => (x < 0 ? [1, 1, 1, 0] : [0.2, 0.2, 0.2, 1]) });
+    // Seen (x ≥ 0): a ramp 0.2 + 0.05 x; unseen (x < 0): lit at 1. The points' own light is kept
+    // apart (0.5): a blur that took it in place of the seen mean would fail.
+    const seenLight = (x) => 0.2 + 0.05 * x;
+    const queryLight = new Float64Array(3 * xs.length).fill(0.5);
+    // Light read on pieces of 0.1 mm (a ramp read once per 4 mm triangle would be a staircase).
+    const common = { triangles: mesh, queryMm, queryLight, queryPixelMm: new Float64Array(xs.length).fill(0.5), gaussians: SKIN, idealBlurs: true, lightEdgeMm: 0.1 };
+    const hidden = surfaceTruth({ ...common, lightAt: ([x]) => (x < 0 ? [1, 1, 1, 0] : [seenLight(x), seenLight(x), seenLight(x), 1]) });
+    const gauss = (v) => (d) => Math.exp((-d * d) / (2 * v)) / Math.sqrt(2 * Math.PI * v);
     xs.forEach((x, q) => {
       for (let c = 0; c < 3; c++) {
-        const truth = SKIN.reduce((sum, [v, w], m) => sum + w[c] * (m === 0 ? 0.2 : 0.2 + 0.8 * erfc(x / Math.sqrt(2 * v)) / 2), 0);
-        expect(Math.abs(hidden.light[3 * q + c] - truth), `truth at ${x} mm`).toBeLessThan(2e-3);
-        expect(Math.abs(hidden.screenLimits.seen[3 * q + c] - 0.2), `seen at ${x} mm`).toBeLessThan(1e-3);
-        expect(Math.abs(hidden.screenLimits.seenTrueArea[3 * q + c] - 0.2), `seen, true area, at ${x} mm`).toBeLessThan(1e-3);
+        // Gaussian m across the line: the seen part's mean of the ramp, ∫_0^∞ g(u − x)(0.2 + 0.05u) du / ∫_0^∞ g(u − x) du.
+        let seen = 0;
+        SKIN.forEach(([v, w], m) => {
+          if (m === 0) { seen += w[c] * 0.5; return; } // kept local: the point's own light
+          const mass = 1 - erfc(x / Math.sqrt(2 * v)) / 2;
+          const firstMoment = x * mass + v * gauss(v)(x); // ∫_0^∞ u g(u − x) du
+          seen += w[c] * (0.2 * mass + 0.05 * firstMoment) / mass;
+        });
+        expect(Math.abs(hidden.idealBlurs.seen[3 * q + c] - seen), `seen at ${x} mm`).toBeLessThan(1e-3);
+        // On a plane the true area within reach is the kernel's own: both blurs agree.
+        expect(Math.abs(hidden.idealBlurs.seenTrueArea[3 * q + c] - seen), `seen, true area, at ${x} mm`).toBeLessThan(1e-3);
       }
     });
     const seen = surfaceTruth({ ...common, lightAt: ([x]) => [x < 0 ? 1 : 0.2, 0.2, 0.2] });
-    seen.light.forEach((value, k) => expect(Math.abs(seen.screenLimits.seenTrueArea[k] - value)).toBeLessThan(1e-12));
+    seen.light.forEach((value, k) => expect(Math.abs(seen.idealBlurs.seenTrueArea[k] - value)).toBeLessThan(1e-12));
   });
 
-  it('screen-space limits, on a sphere of radius 3 mm with uniform light, its far half unseen: each Gaussian averages to the light (1), while the true area keeps 1 − exp(−2ρ²/v) of it as the truth does (5e-4)', () => {
+  it('ideal blurs of what is seen, on a sphere of radius 3 mm whose far half is unseen and three times as bright: each Gaussian averages the near half\'s light (1); with the true area it keeps 1 − exp(−2ρ²/v) of it, what the truth keeps of uniform light (5e-4)', () => {
     const rho = 3;
     const mesh = icosphere(rho, 5);
     const queryMm = Float64Array.from([0, 0, rho, rho * Math.SQRT1_2, 0, rho * Math.SQRT1_2]);
-    const limits = surfaceTruth({
-      triangles: mesh, lightAt: ([, , z]) => [1, 1, 1, z > 0 ? 1 : 0], queryMm, queryLight: new Float64Array(6).fill(1),
-      queryPixelMm: new Float64Array(2), gaussians: SKIN, screenLimits: true,
-    }).screenLimits;
+    const blurs = surfaceTruth({
+      triangles: mesh, lightAt: ([, , z]) => (z > 0 ? [1, 1, 1, 1] : [3, 3, 3, 0]), queryMm, queryLight: new Float64Array(6).fill(0.5),
+      queryPixelMm: new Float64Array(2), gaussians: SKIN, idealBlurs: true,
+    }).idealBlurs;
     for (let q = 0; q < 2; q++) {
       for (let c = 0; c < 3; c++) {
         const kept = SKIN.reduce((s, [v, w]) => s + w[c] * (1 - Math.exp((-2 * rho * rho) / v)), 0);
-        expect(Math.abs(limits.seen[3 * q + c] - 1), `point ${q}, channel ${c}`).toBeLessThan(1e-9);
-        expect(Math.abs(limits.seenTrueArea[3 * q + c] - kept), `point ${q}, channel ${c}`).toBeLessThan(5e-4);
+        expect(Math.abs(blurs.seen[3 * q + c] - 1), `point ${q}, channel ${c}`).toBeLessThan(1e-9);
+        expect(Math.abs(blurs.seenTrueArea[3 * q + c] - kept), `point ${q}, channel ${c}`).toBeLessThan(5e-4);
       }
     }
   });
