@@ -78,8 +78,8 @@ async function open({ width, height, lightAzimuthDeg = 0, lightElevationDeg = 0,
   session.unscattered = unscattered.diffuse;
   session.triangles = trianglesOf(mesh, built.worldUnitInMm);
   // truthLight: a truth computed before for this configuration (its light per pixel, as truthLight() gives it).
-  const cachedLimits = truthIdealBlurs && Object.fromEntries(Object.entries(truthIdealBlurs).map(([name, light]) => [name, Float64Array.from(light)]));
-  const truth = truthLight ? { light: Float64Array.from(truthLight), idealBlurs: cachedLimits, cached: true } : await truthAt({ atlasSize, density, idealBlurs: true });
+  const cachedBlurs = truthIdealBlurs && Object.fromEntries(Object.entries(truthIdealBlurs).map(([name, light]) => [name, Float64Array.from(light)]));
+  const truth = truthLight ? { light: Float64Array.from(truthLight), idealBlurs: cachedBlurs, cached: true } : await truthAt({ atlasSize, density, idealBlurs: true });
   if (!truthLight && built.light) { // the same with the light's view of the surface too (a translucent shadow map's)
     const { idealBlurs: both } = await truthAt({ atlasSize, density, idealBlurs: true, lightSees: await lightVisibility() });
     truth.idealBlurs = { ...truth.idealBlurs, seenOrLit: both.seen, seenOrLitTrueArea: both.seenTrueArea };

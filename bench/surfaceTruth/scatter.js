@@ -236,12 +236,7 @@ function idealBlursOf(scaled, blurSums, queryLight) {
     for (let q = 0; q < queries; q++) {
       for (let c = 0; c < 3; c++) {
         const own = queryLight[3 * q + c];
-        if (!sums) { // kept local at every point: as the truth
-          seen[3 * q + c] += w[c] * own;
-          seenTrueArea[3 * q + c] += w[c] * own;
-          continue;
-        }
-        if (!(sums.area[q] > 0)) { // not summed here (kept local at this point)
+        if (!sums || !(sums.area[q] > 0)) { // kept local here (or at every point): as the truth
           seen[3 * q + c] += w[c] * own;
           seenTrueArea[3 * q + c] += w[c] * own;
           continue;
