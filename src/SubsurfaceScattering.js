@@ -56,7 +56,7 @@ export { MIN_KERNEL_PIXELS } from './3-blur/samplingModel.js';
  * @property {import('./options.js').ProfileName|object} [profile='skin'] a preset's name ('skin', 'skinBurley', 'marble', 'milk') or a profile object (burleyProfile, dipoleProfile, gaussianSumProfile)
  * @property {import('./options.js').Method} [method='footprint'] how the blur weighs its taps: 'footprint', 'marginal', 'reference' or 'dense' (METHOD_TABLE)
  * @property {number|'auto'} [samples='auto'] taps per direction, odd, 3..63 (a budget for 'footprint'); 'auto': as few as the on-screen scale needs
- * @property {number|'auto'} [kernelGroups=1] method 'footprint': 1, one separable kernel (exact along the screen axes only; the fast blur); 'auto' or 2..4: the profile's Gaussians blurred in groups, the same in every direction, at about twice the blur's time ('auto': one group where one is within the isotropy budget, a far head, else 4)
+ * @property {number|'auto'} [kernelGroups=1] method 'footprint': 1, one separable kernel (exact along the screen axes only; the fast blur); 'auto' or 2..4: the profile's Gaussians blurred in groups, the same in every direction, at 1.7 (two groups) to 3 (four) times the blur's time on SwiftShader ('auto': one group where one is within the isotropy budget, a far head, else 4)
  * @property {number[]} [strength] RGB, 0..1: mix with no scattering (the reference model)
  * @property {number[]} [falloff] RGB, (0, 10]: method 'reference' only, its kernel's shape
  * @property {import('./options.js').FollowSurfaceMode} [followSurface='drop'] a tap on another surface: 'drop' (renormalise), 'lerp' (to the centre) or 'off'
@@ -231,7 +231,7 @@ export class SubsurfaceScattering extends Pass {
 
   /**
    * The isotropic blur's groups (method 'footprint'): 1 (default: one kernel, exact along the
-   * screen axes only), 'auto' or 2..4 (the same in every direction, about twice the blur's time).
+   * screen axes only), 'auto' or 2..4 (the same in every direction, at 1.7 to 3 times the blur's time on SwiftShader).
    * This frame's count: `plan.groups`.
    * @type {number|'auto'}
    */

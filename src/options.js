@@ -173,7 +173,7 @@ export const PIPELINE_SCHEMA = Object.freeze({
   },
   kernelGroups: {
     default: 1, type: "number|'auto'",
-    doc: `method 'footprint': 1, one separable kernel (exact along the screen axes only; the fast blur); 'auto' or 2..${MAX_KERNEL_GROUPS}: the profile's Gaussians blurred in groups, the same in every direction, at about twice the blur's time ('auto': one group where one is within the isotropy budget, a far head, else ${MAX_KERNEL_GROUPS})`,
+    doc: `method 'footprint': 1, one separable kernel (exact along the screen axes only; the fast blur); 'auto' or 2..${MAX_KERNEL_GROUPS}: the profile's Gaussians blurred in groups, the same in every direction, at 1.7 (two groups) to 3 (four) times the blur's time on SwiftShader ('auto': one group where one is within the isotropy budget, a far head, else ${MAX_KERNEL_GROUPS})`,
     check: (value, name) => checkKernelGroups(value, name),
   },
   strength: {
