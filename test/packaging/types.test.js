@@ -61,8 +61,9 @@ beforeAll(() => {
     const withoutThree = code.replace("import * as THREE from 'three';\n", '');
     writeFileSync(`${project}/src/readme-${i + 1}.${lang === 'jsx' ? 'tsx' : 'ts'}`, `${context}\n${withoutThree}\nexport {};\n`);
   });
-  // The WebGPURenderer snippet imports three/webgpu as THREE itself: the usage snippet's objects typed from 'three'.
-  const webgpuContext = "declare const scene: import('three').Scene, camera: import('three').PerspectiveCamera, disc: import('three').Mesh, skin: import('three').MeshStandardMaterial;";
+  // The WebGPURenderer snippet imports three/webgpu as THREE itself: the usage snippet's objects typed
+  // from 'three', `disc` as TypeScript infers it there (a Mesh of its geometry and `skin`'s class).
+  const webgpuContext = "declare const scene: import('three').Scene, camera: import('three').PerspectiveCamera, disc: import('three').Mesh<import('three').CylinderGeometry, import('three').MeshStandardMaterial>, skin: import('three').MeshStandardMaterial;";
   writeFileSync(`${project}/src/readme-4.ts`, `${webgpuContext}\n${snippets[4].code}\nexport {};\n`);
   // The misuses without their directives: the lines after each must be the errors.
   const bare = [];
@@ -81,8 +82,8 @@ describe('the generated declarations', () => {
     expect(status).toBe(0);
   }, 120_000);
 
-  it("compile the README's WebGPURenderer snippet against the webgpu entry (strict, its declarations checked too)", () => {
-    const { status, output } = compile(['src/readme-4.ts'], 'tsconfig.webgpu');
+  it("compile the README's WebGPURenderer snippet and a webgpu consumer against the webgpu entry (strict, its declarations checked too)", () => {
+    const { status, output } = compile(['src/readme-4.ts', 'src/webgpuConsumer.ts'], 'tsconfig.webgpu');
     expect(output).toBe('');
     expect(status).toBe(0);
   }, 120_000);

@@ -5,6 +5,7 @@ import * as THREE from 'three';
 import { SubsurfaceScattering, makeSubsurface, computeKernel } from 'three-separable-sss';
 import { SubsurfaceScatteringPass } from 'three-separable-sss/postprocessing';
 import { useSubsurfaceScattering } from 'three-separable-sss/react';
+import { subsurfaceMaterial } from 'three-separable-sss/webgpu';
 
 const scene = new THREE.Scene();
 const camera = new THREE.PerspectiveCamera();
@@ -49,3 +50,5 @@ makeSubsurface();
 new SubsurfaceScatteringPass({ scene, camera, method: 'fast' });
 // @ts-expect-error antialias is a sample count
 useSubsurfaceScattering({ antialias: true });
+// @ts-expect-error subsurfaceMaterial takes a MeshStandardMaterial or MeshPhysicalMaterial (or its node version)
+subsurfaceMaterial(new THREE.MeshBasicMaterial());

@@ -56,7 +56,7 @@ function withSubsurface(Base) {
       this.isSubsurfaceNodeMaterial = true;
     }
 
-    /** The profile's scale on this material: 1 is its physical size (profile mm per mm). */
+    /** The profile's scale on this material: 1 is its physical size (profile mm per mm). @type {number} */
     get widthMm() {
       return this.subsurfaceWidth.value;
     }
@@ -185,12 +185,15 @@ const NOT_COPIED = new Set(['uuid', 'type', 'isSubsurfaceNodeMaterial', 'subsurf
 /**
  * A subsurface node material made from `material`: a MeshStandardMaterial or MeshPhysicalMaterial
  * (or their node versions), its settings carried over as WebGPURenderer itself converts a classic
- * material (NodeLibrary.fromMaterial). The material given is left as it is.
- * @param {import('three').MeshStandardMaterial | import('three/webgpu').MeshStandardNodeMaterial} material
+ * material (NodeLibrary.fromMaterial copies every own property, the class flags too). The material
+ * given is left as it is. Typed as the node material and the material given, so that it takes the
+ * place of that material where the mesh's type names it (`mesh.material = subsurfaceMaterial(mesh.material)`).
+ * @template {import('three').MeshStandardMaterial | import('three/webgpu').MeshStandardNodeMaterial} M
+ * @param {M} material
  * @param {{ widthMm?: number, transmittance?: boolean, translucency?: number, shrinkMm?: number }} [options]
  *   widthMm: the profile's scale, 1 its physical size; the others as the WebGL path's makeSubsurface
  *   (src/options.js's MATERIAL_SCHEMA), also properties of the material
- * @returns {SubsurfaceStandardNodeMaterial | SubsurfacePhysicalNodeMaterial}
+ * @returns {M & (M extends import('three').MeshPhysicalMaterial | import('three/webgpu').MeshPhysicalNodeMaterial ? SubsurfacePhysicalNodeMaterial : SubsurfaceStandardNodeMaterial)}
  */
 export function subsurfaceMaterial(material, options) {
   const given = checkOptions('subsurfaceMaterial options', options, MATERIAL_OPTIONS);
