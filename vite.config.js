@@ -7,6 +7,7 @@
 //   `vite` (npm start)       → the demo and the test pages on a dev server
 import { defineConfig } from 'vite';
 import { fileURLToPath } from 'node:url';
+import { glslCommentsStripped } from './scripts/stripGlslComments.js';
 
 const root = fileURLToPath(new URL('.', import.meta.url));
 
@@ -23,6 +24,7 @@ export default defineConfig(({ mode }) => {
     return {
       root,
       publicDir: false,
+      plugins: [glslCommentsStripped()], // the shaders' comments stay in shaders/, not in every bundle
       build: {
         outDir: 'dist',
         emptyOutDir: true,
@@ -53,6 +55,7 @@ export default defineConfig(({ mode }) => {
     root,
     base: './',
     publicDir: 'public',
+    plugins: [glslCommentsStripped()], // a build only: the dev server serves the shaders as they are
     // Pages in this repository (the README's snippet, the bench, the integration pages) import the
     // package and its subpaths by name.
     resolve: {
