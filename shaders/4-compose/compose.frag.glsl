@@ -1,5 +1,6 @@
 // Stage 4: the scattered diffuse light back on top of the rest of the scene's light, in linear
-// HDR, before OutputPass. Pixels that are not subsurface keep exactly what their material wrote.
+// HDR, before OutputPass (on the screen, as the last pass: tone-mapped and encoded, see the end).
+// Pixels that are not subsurface keep exactly what their material wrote.
 // The scene's depth goes out with the colour (gl_FragDepth), so that later passes and the
 // transparent objects drawn after this one depth-test against the scene. With KEEP_BACKGROUND
 // (the pass's clear = false) pixels where the scene drew nothing are left as the target had them.
@@ -79,4 +80,10 @@ void main() {
 	// Never hand NaN or Inf to tone mapping.
 	if ( ! sssFinite( colour ) ) colour = vec3( 0.0 );
 	gl_FragColor = vec4( colour, light.a );
+	// Drawn to the screen (the composer's last pass), the light leaves as three draws any material
+	// there, and so as a RenderPass in this place would: the renderer's tone mapping and output colour
+	// space. Into a render target three turns both off (NoToneMapping, linear), so the next pass
+	// (OutputPass, an EffectPass) gets linear HDR as before.
+	#include <tonemapping_fragment>
+	#include <colorspace_fragment>
 }

@@ -201,4 +201,72 @@ describe('SubsurfaceScatteringPass in pmndrs EffectComposer', () => {
     expect(r.followed).toBe(true);
     expect(r.badOption).toMatch(/^RangeError: .*method/);
   });
+
+  it('as the last pass draws to the screen with the renderer\'s tone mapping and sRGB, as three\'s RenderPass and OutputPass do (pmndrs and three.js composers)', async () => {
+    const r = await page.evaluate(async (width, height) => {
+      const { THREE, SSS, EffectComposer, RenderPass, OutputPass, createRenderer } = window.lab;
+      const { POSTPROCESSING: PP, SubsurfaceScatteringPass } = window.pp;
+      const renderer = createRenderer(width, height);
+      renderer.toneMapping = THREE.ACESFilmicToneMapping;
+      // A lit cube on a coloured background, no subsurface material: the pass adds nothing there.
+      const scene = new THREE.Scene();
+      scene.background = new THREE.Color(0x203040);
+      const cube = new THREE.Mesh(new THREE.BoxGeometry(1, 1, 1), new THREE.MeshStandardMaterial({ color: 0xc08060, roughness: 0.6 }));
+      cube.rotation.set(0.5, 0.7, 0);
+      scene.add(cube, new THREE.AmbientLight(0xffffff, 0.3));
+      const sun = new THREE.DirectionalLight(0xffffff, 3);
+      sun.position.set(2, 3, 4);
+      scene.add(sun);
+      const camera = new THREE.PerspectiveCamera(40, width / height, 0.1, 20);
+      camera.position.set(0, 0, 3);
+      const gl = renderer.getContext();
+      // The canvas, read in the task that drew it (the drawing buffer is not preserved).
+      const screen = (render) => {
+        render();
+        renderer.setRenderTarget(null);
+        const pixels = new Uint8Array(width * height * 4);
+        gl.readPixels(0, 0, width, height, gl.RGBA, gl.UNSIGNED_BYTE, pixels);
+        return Array.from(pixels);
+      };
+      const images = {};
+      const pmndrs = (pass) => {
+        const composer = new PP.EffectComposer(renderer, { frameBufferType: THREE.HalfFloatType });
+        composer.addPass(pass);
+        const image = screen(() => composer.render(0));
+        composer.dispose();
+        return image;
+      };
+      images.pmndrsRender = pmndrs(new PP.RenderPass(scene, camera));
+      images.pmndrsOurs = pmndrs(new SubsurfaceScatteringPass({ scene, camera }));
+      const three = (...passes) => {
+        const size = renderer.getDrawingBufferSize(new THREE.Vector2());
+        const composer = new EffectComposer(renderer, new THREE.WebGLRenderTarget(size.x, size.y, { type: THREE.HalfFloatType }));
+        for (const pass of passes) composer.addPass(pass); // the last one: the composer draws it to the screen
+        const image = screen(() => composer.render());
+        composer.dispose();
+        for (const pass of passes) pass.dispose();
+        return image;
+      };
+      images.threeOutput = three(new RenderPass(scene, camera), new OutputPass()); // three's linear-HDR pipeline's end
+      images.threeOurs = three(new SSS.SubsurfaceScattering({ scene, camera }));
+      const result = { images, glError: gl.getError() };
+      renderer.dispose();
+      renderer.forceContextLoss();
+      return result;
+    }, WIDTH, HEIGHT);
+    expect(r.glError).toBe(0);
+    const worst = (a, b, where = () => true) => a.reduce((w, v, i) => (i % 4 === 3 || !where(i - (i % 4)) ? w : Math.max(w, Math.abs(v - b[i]))), 0);
+    // On both composers the pass's screen is three's RenderPass + OutputPass screen (the background
+    // tone-mapped too, as OutputPass does it)...
+    expect(worst(r.images.threeOurs, r.images.threeOutput)).toBeLessThanOrEqual(1);
+    expect(worst(r.images.pmndrsOurs, r.images.threeOutput)).toBeLessThanOrEqual(1);
+    // ...and the lit cube is what pmndrs's RenderPass draws in that place (three tone-maps and
+    // encodes a material drawn to the screen; a cleared background colour it only encodes: 0x203040).
+    const background = r.images.pmndrsRender.slice(0, 3);
+    expect(background).toEqual([32, 48, 64]);
+    const onCube = (i) => [0, 1, 2].some((c) => Math.abs(r.images.pmndrsRender[i + c] - background[c]) > 2);
+    const cubePixels = r.images.pmndrsRender.filter((_, i) => i % 4 === 0 && onCube(i)).length;
+    expect(cubePixels).toBeGreaterThan(0.05 * WIDTH * HEIGHT);
+    expect(worst(r.images.pmndrsOurs, r.images.pmndrsRender, onCube)).toBeLessThanOrEqual(1);
+  });
 });
