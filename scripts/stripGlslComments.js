@@ -16,6 +16,9 @@ import { readFile } from 'node:fs/promises';
  */
 export function stripGlslComments(source) {
   const text = String(source);
+  // A line continuation joins lines before comments are taken out (GLSL ES 3.00 §3.2), which
+  // this scan does not do: refused rather than stripped differently (no shader has one).
+  if (/\\[ \t]*\r?\n/.test(text)) throw new SyntaxError('stripGlslComments: a line continuation (\\ at the end of a line) is not supported');
   let code = '';
   for (let i = 0; i < text.length;) {
     if (text.startsWith('//', i)) {

@@ -82,8 +82,9 @@ void main() {
 	gl_FragColor = vec4( colour, light.a );
 	// Drawn to the screen (the composer's last pass), the light leaves as three draws any material
 	// there, and so as a RenderPass in this place would: the renderer's tone mapping and output colour
-	// space. Into a render target three turns both off (NoToneMapping, linear), so the next pass
-	// (OutputPass, an EffectPass) gets linear HDR as before.
+	// space (the transparent objects drawn after this pass then blend over it, as under that
+	// RenderPass). Into a render target three turns both off (NoToneMapping, linear), so the next
+	// pass (OutputPass, an EffectPass) gets linear HDR as before.
 	#include <tonemapping_fragment>
 	#include <colorspace_fragment>
 }

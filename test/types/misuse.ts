@@ -52,3 +52,7 @@ new SubsurfaceScatteringPass({ scene, camera, method: 'fast' });
 useSubsurfaceScattering({ antialias: true });
 // @ts-expect-error subsurfaceMaterial takes a MeshStandardMaterial or MeshPhysicalMaterial (or its node version)
 subsurfaceMaterial(new THREE.MeshBasicMaterial());
+class Tinted extends THREE.MeshStandardMaterial { tint(): void {} }
+const tinted = new THREE.Mesh(new THREE.BoxGeometry(), new Tinted());
+// @ts-expect-error the node material is three's kind of material, not the subclass (its methods are not carried over)
+tinted.material = subsurfaceMaterial(tinted.material);

@@ -183,17 +183,30 @@ export class SubsurfacePhysicalNodeMaterial extends withSubsurface(MeshPhysicalN
 const NOT_COPIED = new Set(['uuid', 'type', 'isSubsurfaceNodeMaterial', 'subsurfaceWidth', '_subsurface', 'transmittanceNodes']);
 
 /**
+ * @overload
+ * @param {import('three').MeshPhysicalMaterial | import('three/webgpu').MeshPhysicalNodeMaterial} material
+ * @param {SubsurfaceMaterialOptions} [options]
+ * @returns {SubsurfacePhysicalNodeMaterial & import('three').MeshPhysicalMaterial}
+ */
+/**
+ * @overload
+ * @param {import('three').MeshStandardMaterial | import('three/webgpu').MeshStandardNodeMaterial} material
+ * @param {SubsurfaceMaterialOptions} [options]
+ * @returns {SubsurfaceStandardNodeMaterial & import('three').MeshStandardMaterial}
+ */
+/**
  * A subsurface node material made from `material`: a MeshStandardMaterial or MeshPhysicalMaterial
  * (or their node versions), its settings carried over as WebGPURenderer itself converts a classic
  * material (NodeLibrary.fromMaterial copies every own property, the class flags too). The material
- * given is left as it is. Typed as the node material and the material given, so that it takes the
- * place of that material where the mesh's type names it (`mesh.material = subsurfaceMaterial(mesh.material)`).
- * @template {import('three').MeshStandardMaterial | import('three/webgpu').MeshStandardNodeMaterial} M
- * @param {M} material
- * @param {{ widthMm?: number, transmittance?: boolean, translucency?: number, shrinkMm?: number }} [options]
+ * given is left as it is. Typed as the node material and three's material of its kind (not a
+ * subclass of it: methods are not copied), so that it takes the place of that material where the
+ * mesh's type names it (`mesh.material = subsurfaceMaterial(mesh.material)`).
+ * @typedef {{ widthMm?: number, transmittance?: boolean, translucency?: number, shrinkMm?: number }} SubsurfaceMaterialOptions
  *   widthMm: the profile's scale, 1 its physical size; the others as the WebGL path's makeSubsurface
  *   (src/options.js's MATERIAL_SCHEMA), also properties of the material
- * @returns {M & (M extends import('three').MeshPhysicalMaterial | import('three/webgpu').MeshPhysicalNodeMaterial ? SubsurfacePhysicalNodeMaterial : SubsurfaceStandardNodeMaterial)}
+ * @param {import('three').MeshStandardMaterial | import('three/webgpu').MeshStandardNodeMaterial} material
+ * @param {SubsurfaceMaterialOptions} [options]
+ * @returns {SubsurfaceStandardNodeMaterial | SubsurfacePhysicalNodeMaterial}
  */
 export function subsurfaceMaterial(material, options) {
   const given = checkOptions('subsurfaceMaterial options', options, MATERIAL_OPTIONS);

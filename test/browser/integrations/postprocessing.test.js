@@ -217,6 +217,10 @@ describe('SubsurfaceScatteringPass in pmndrs EffectComposer', () => {
       const sun = new THREE.DirectionalLight(0xffffff, 3);
       sun.position.set(2, 3, 4);
       scene.add(sun);
+      // A half-transparent pane in front of the cube, inside its outline (drawn after the compose).
+      const pane = new THREE.Mesh(new THREE.PlaneGeometry(0.3, 0.3), new THREE.MeshStandardMaterial({ color: 0x40a0ff, transparent: true, opacity: 0.5 }));
+      pane.position.set(0, 0, 1);
+      scene.add(pane);
       const camera = new THREE.PerspectiveCamera(40, width / height, 0.1, 20);
       camera.position.set(0, 0, 3);
       const gl = renderer.getContext();
@@ -238,6 +242,10 @@ describe('SubsurfaceScatteringPass in pmndrs EffectComposer', () => {
       };
       images.pmndrsRender = pmndrs(new PP.RenderPass(scene, camera));
       images.pmndrsOurs = pmndrs(new SubsurfaceScatteringPass({ scene, camera }));
+      // Without the pane: what OutputPass tone-maps after blending (in linear light) is the same.
+      pane.visible = false;
+      images.pmndrsRenderOpaque = pmndrs(new PP.RenderPass(scene, camera));
+      images.pmndrsOursOpaque = pmndrs(new SubsurfaceScatteringPass({ scene, camera }));
       const three = (...passes) => {
         const size = renderer.getDrawingBufferSize(new THREE.Vector2());
         const composer = new EffectComposer(renderer, new THREE.WebGLRenderTarget(size.x, size.y, { type: THREE.HalfFloatType }));
@@ -256,17 +264,20 @@ describe('SubsurfaceScatteringPass in pmndrs EffectComposer', () => {
     }, WIDTH, HEIGHT);
     expect(r.glError).toBe(0);
     const worst = (a, b, where = () => true) => a.reduce((w, v, i) => (i % 4 === 3 || !where(i - (i % 4)) ? w : Math.max(w, Math.abs(v - b[i]))), 0);
-    // On both composers the pass's screen is three's RenderPass + OutputPass screen (the background
-    // tone-mapped too, as OutputPass does it)...
+    // An opaque scene: on both composers the pass's screen is three's RenderPass + OutputPass
+    // screen (the background tone-mapped too, as OutputPass does it)...
     expect(worst(r.images.threeOurs, r.images.threeOutput)).toBeLessThanOrEqual(1);
-    expect(worst(r.images.pmndrsOurs, r.images.threeOutput)).toBeLessThanOrEqual(1);
-    // ...and the lit cube is what pmndrs's RenderPass draws in that place (three tone-maps and
-    // encodes a material drawn to the screen; a cleared background colour it only encodes: 0x203040).
+    expect(worst(r.images.pmndrsOursOpaque, r.images.threeOutput)).toBeLessThanOrEqual(1);
+    // ...and with the pane, the cube and the pane over it are what pmndrs's RenderPass draws in
+    // that place: three tone-maps and encodes each material drawn to the screen, the pane blended
+    // over the encoded cube (a cleared background colour it only encodes: 0x203040).
     const background = r.images.pmndrsRender.slice(0, 3);
     expect(background).toEqual([32, 48, 64]);
     const onCube = (i) => [0, 1, 2].some((c) => Math.abs(r.images.pmndrsRender[i + c] - background[c]) > 2);
     const cubePixels = r.images.pmndrsRender.filter((_, i) => i % 4 === 0 && onCube(i)).length;
     expect(cubePixels).toBeGreaterThan(0.05 * WIDTH * HEIGHT);
+    const underPane = r.images.pmndrsRender.filter((v, i) => i % 4 === 0 && Math.abs(v - r.images.pmndrsRenderOpaque[i]) > 8).length;
+    expect(underPane).toBeGreaterThan(0.005 * WIDTH * HEIGHT);
     expect(worst(r.images.pmndrsOurs, r.images.pmndrsRender, onCube)).toBeLessThanOrEqual(1);
   });
 });

@@ -16,6 +16,7 @@ describe('stripGlslComments', () => {
     expect(stripGlslComments('a; // x /* y\n\tb /* c // d */ e;\n  #define X 1 // z\nf /* g\nh */ i;\n\n')).toBe('a;\nb   e;\n#define X 1\nf\ni;');
     expect(stripGlslComments('#if A // a /* not a block\n#endif')).toBe('#if A\n#endif');
     expect(() => stripGlslComments('a; /* open')).toThrow(SyntaxError);
+    expect(() => stripGlslComments('#define A 1 \\\n  + 2')).toThrow(/line continuation/);
   });
 
   it("leaves every shader's code as it is: the same lines, without what follows // (they hold no block comment)", () => {
