@@ -1,4 +1,4 @@
-// `npm run bench:footprint [-- --repeat N] [-- --no-browser]`: what the package weighs, as a
+// `npm run bench:footprint [-- --repeat N] [-- --no-browser] [-- --keep-app]`: what the package weighs, as a
 // newcomer and a user meet it (issue 35's before/after), read from the tree it runs in:
 //   1. source: lines of src/**/*.js and shaders/**/*.glsl, and how many files
 //   2. public names per entry of package.json's "exports" (each JS entry, whatever subpaths it
@@ -26,8 +26,9 @@
 //      not the first frame's 'auto' count) and with one seen before (down), beside the median of 5
 //      frames with nothing changed.
 // Prints the JSON and writes it to bench/results/footprint-<commit>.json (-dirty when src/,
-// shaders/, README.md or package.json differ from the commit); the app, its builds and a
-// screenshot of each page stay in the temp folder. The pure parts: surface.js.
+// shaders/, README.md or package.json differ from the commit); the app's builds, the tarball and a
+// screenshot of each page stay in the temp folder (its node_modules too with --keep-app). The pure
+// parts: surface.js.
 import { execFileSync, spawnSync } from 'node:child_process';
 import { createServer } from 'node:http';
 import { cp, mkdir, mkdtemp, readFile, readdir, rm, stat, writeFile } from 'node:fs/promises';
@@ -44,9 +45,10 @@ const args = process.argv.slice(2);
 const repeatAt = args.indexOf('--repeat');
 const REPEAT = repeatAt >= 0 ? Math.max(1, Number(args[repeatAt + 1]) || 1) : 5;
 const BROWSER = !args.includes('--no-browser');
+const KEEP_APP = args.includes('--keep-app');
 const log = (...m) => console.error('[footprint]', ...m);
 
-const git = (...a) => execFileSync('git', a, { cwd: root, encoding: 'utf8' }).trim();
+const git = (...a) => execFileSync('git', a, { cwd: root, encoding: 'utf8' }).trimEnd();
 const pkg = JSON.parse(await readFile(join(root, 'package.json'), 'utf8'));
 const versionOf = async (name) => JSON.parse(await readFile(join(root, 'node_modules', name, 'package.json'), 'utf8')).version;
 
@@ -216,7 +218,9 @@ await mkdir(dirname(outFile), { recursive: true });
 const json = JSON.stringify(result, null, 1);
 await writeFile(outFile, `${json}\n`);
 console.log(json);
-log(`wrote ${relative(root, outFile)}; the app stays in ${app}`);
+// The app's node_modules go (60 MB a run); its pages, builds, the tarball and the screenshots stay.
+if (!KEEP_APP) await rm(join(app, 'node_modules'), { recursive: true, force: true });
+log(`wrote ${relative(root, outFile)}; the app's builds and screenshots stay in ${work}${KEEP_APP ? ' (its node_modules too)' : ''}`);
 
 function kB(bytes) { return `${(bytes / 1000).toFixed(1)} kB`; }
 
@@ -251,41 +255,50 @@ async function measureInBrowser(distDir) {
       };
     }
     out.firstFrameCostMs = Math.round((out.sss.firstFrameMs - out.plain.firstFrameMs) * 10) / 10;
-    // The slider, on the last page (b).
-    const firstPlanSamples = out.firstFrame.sss.at(-1).plan?.samples ?? null;
-    const { up, down } = sliderSweep(3, 63);
-    const sweep = await lastSss.evaluate(async (upValues, downValues) => {
-      const { sss } = window.app;
-      const frame = window.__footprintFrame;
-      const run = (values) => values.map((v) => { sss.samples = v; return { samples: v, ...frame(false) }; });
-      const before = sss.samples;
-      const upRuns = run(upValues);
-      const downRuns = run(downValues);
-      return { samplesBefore: before, up: upRuns, down: downRuns };
-    }, up, down);
     out.sssOwnNames = await lastSss.evaluate(() => Object.getOwnPropertyNames(window.app.sss));
-    out.slider = {
-      values: `odd 3..63 (${up.length}), then 61..3 (${down.length}), one frame each`,
-      samplesBefore: sweep.samplesBefore,
-      programsAfterUp: sweep.up.at(-1).programs,
-      programsAfterDown: sweep.down.at(-1).programs,
-      // A new value: one no frame of this page drew with before (the first frame's 'auto' choice
-      // included, as plan.samples says it).
-      newValueMedianMs: median(sweep.up.filter((r) => r.samples !== firstPlanSamples).map((r) => r.ms)),
-      firstFrameSamples: firstPlanSamples,
-      seenValueMedianMs: median(sweep.down.map((r) => r.ms)),
-      frames: [...sweep.up, ...sweep.down].map((r) => [r.samples, r.ms, r.programs]),
-      problems: lastSss.problems,
-    };
+    log(`first frame: plain ${out.plain.firstFrameMs.toFixed(0)} ms, sss ${out.sss.firstFrameMs.toFixed(0)} ms (+${out.firstFrameCostMs.toFixed(0)}); a steady frame ${out.plain.steadyFrameMs.toFixed(0)} / ${out.sss.steadyFrameMs.toFixed(0)} ms`);
+    // The slider, on the last page (b): on its own, so that a refused value keeps the rest.
+    try {
+      out.slider = await slider(lastSss, out.firstFrame.sss.at(-1).plan?.samples ?? null);
+      log(`programs: plain ${out.plain.programsAfterFirstFrame}, sss ${out.sss.programsAfterFirstFrame} after the first frame, ${out.slider.programsAfterUp} after the slider up, ${out.slider.programsAfterDown} after down; a new samples value ${out.slider.newValueMedianMs.toFixed(0)} ms, a seen one ${out.slider.seenValueMedianMs.toFixed(0)} ms`);
+    } catch (error) {
+      out.slider = { error: String(error.message).split('\n')[0], problems: lastSss.problems };
+      log(`the slider failed: ${out.slider.error}`);
+    }
     await lastSss.close();
-    log(`programs: plain ${out.plain.programsAfterFirstFrame}, sss ${out.sss.programsAfterFirstFrame} after the first frame, ${out.slider.programsAfterUp} after the slider up, ${out.slider.programsAfterDown} after down`);
-    log(`first frame: plain ${out.plain.firstFrameMs.toFixed(0)} ms, sss ${out.sss.firstFrameMs.toFixed(0)} ms (+${out.firstFrameCostMs.toFixed(0)}); a new samples value ${out.slider.newValueMedianMs.toFixed(0)} ms, a seen one ${out.slider.seenValueMedianMs.toFixed(0)} ms, a steady frame ${out.sss.steadyFrameMs.toFixed(0)} ms`);
   } finally {
     await browser.close().catch(() => browser.process()?.kill('SIGKILL'));
     await new Promise((resolve) => server.close(resolve));
     await rm(userDataDir, { recursive: true, force: true });
   }
   return out;
+}
+
+/** `sss.samples` over every odd value 3..63 and back down, one frame each. */
+async function slider(page, firstPlanSamples) {
+  const { up, down } = sliderSweep(3, 63);
+  const sweep = await page.evaluate(async (upValues, downValues) => {
+    const { sss } = window.app;
+    const frame = window.__footprintFrame;
+    const run = (values) => values.map((v) => { sss.samples = v; return { samples: v, ...frame(false) }; });
+    const before = sss.samples;
+    const upRuns = run(upValues);
+    const downRuns = run(downValues);
+    return { samplesBefore: before, up: upRuns, down: downRuns };
+  }, up, down);
+  return {
+    values: `odd 3..63 (${up.length}), then 61..3 (${down.length}), one frame each`,
+    samplesBefore: sweep.samplesBefore,
+    programsAfterUp: sweep.up.at(-1).programs,
+    programsAfterDown: sweep.down.at(-1).programs,
+    // A new value: one no frame of this page drew with before (the first frame's 'auto' choice
+    // included, as plan.samples says it).
+    newValueMedianMs: median(sweep.up.filter((r) => r.samples !== firstPlanSamples).map((r) => r.ms)),
+    firstFrameSamples: firstPlanSamples,
+    seenValueMedianMs: median(sweep.down.map((r) => r.ms)),
+    frames: [...sweep.up, ...sweep.down].map((r) => [r.samples, r.ms, r.programs]),
+    problems: page.problems,
+  };
 }
 
 // Runs in the page: one composer.render fenced by gl.finish and a 1-pixel readPixels (the centre,
