@@ -47,7 +47,7 @@ import { materialOutputOf } from './4-compose/debugViews.js';
  */
 
 /** three's Pass with the pipeline's settings as properties (src/options.js's schema; src/support/settings.js). */
-const PassWithSettings = /** @type {typeof Pass & (new () => import('./options.js').PipelineSettings)} */ (
+const PassWithSettings = /** @type {new () => Pass & import('./options.js').PipelineSettings} */ (
   withSettings(Pass, PIPELINE_SCHEMA, 'SubsurfaceScattering'));
 
 /**
@@ -66,7 +66,7 @@ export class SubsurfaceScattering extends PassWithSettings {
     checkThreeRevision('SubsurfaceScattering'); // first: older releases fail inside the stages
     super();
     const o = checkPipelineOptions(options); // every option checked here, once, against the schema
-    /** @private The settings' values (read and assigned through their properties). */
+    /** @internal The settings' values (read and assigned through their properties). */
     this._settings = Object.fromEntries(propertiesOf(PIPELINE_SCHEMA).map(({ name }) => [name, o[name]]));
     if (Object.hasOwn(options, 'transmittance')) checkNeedsLight('transmittance', o.transmittance, o.light);
     checkNeedsLight('debugView', o.debugView, o.light);
@@ -82,24 +82,24 @@ export class SubsurfaceScattering extends PassWithSettings {
     this._clearColor = null;
     this._clearAlpha = null;
     this._stageTimer = null;
-    /** @private The pipeline's profile's GPU tables (the default of its materials). */
+    /** @internal The pipeline's profile's GPU tables (the default of its materials). */
     this._profileLookup = new ProfileLookup(o.profile);
-    /** @private Tables of the other profiles its materials name (computing one takes tens of ms: kept). */
+    /** @internal Tables of the other profiles its materials name (computing one takes tens of ms: kept). */
     this._otherLookups = new Map();
-    /** @private Stage 1, for transmittance (null without a light). */
+    /** @internal Stage 1, for transmittance (null without a light). */
     this._lightDepth = o.light ? new LightDepthTarget(o.light, { size: o.lightDepthSize }) : null;
-    /** @private The size setSize last gave, device pixels (checked against the GPU's limits on the next frame). */
+    /** @internal The size setSize last gave, device pixels (checked against the GPU's limits on the next frame). */
     this._size = { width: 1, height: 1 };
-    /** @private The GPU's render target limits, known from the first frame on. */
+    /** @internal The GPU's render target limits, known from the first frame on. */
     this._limits = undefined;
-    /** @private The frame's checks of the camera and the light, each warned about once (see `problems`). */
+    /** @internal The frame's checks of the camera and the light, each warned about once (see `problems`). */
     this._checks = new FrameChecks('SubsurfaceScattering');
 
     // Stages 2, 3 and 4.
-    /** @private */
+    /** @internal */
     this._scenePass = new SubsurfaceScenePass(o.scene, o.camera, { type: o.type, owner: this });
     this._scenePass.diffuseCarriesDepth = true; // without MSAA: the blur's taps read light and depth in one fetch
-    /** @private */
+    /** @internal */
     this._blur = new BlurStage({
       type: o.type, profileLookup: this._profileLookup, method: o.method, samples: o.samples, strength: o.strength, falloff: o.falloff, kernelGroups: o.kernelGroups,
       surface: {
@@ -108,7 +108,7 @@ export class SubsurfaceScattering extends PassWithSettings {
       },
     });
     this._blur.scattering = o.scattering;
-    /** @private */
+    /** @internal */
     this._composePass = new SubsurfaceComposePass({
       colorTexture: this._scenePass.colorTexture,
       surfaceTexture: this._scenePass.surfaceTexture,
@@ -119,7 +119,7 @@ export class SubsurfaceScattering extends PassWithSettings {
     this._composePass.maskFromScattered = true; // its blur writes the mask into the scattered light's alpha
     this._composePass.setDebugView(o.debugView, { depthRange: o.debugDepthRange, thicknessRangeMm: o.debugThicknessRangeMm });
     this._composePass.setSplit(o.split);
-    /** @private The materials made subsurface through this pipeline (see makeSubsurface; `materials` is the public view). */
+    /** @internal The materials made subsurface through this pipeline (see makeSubsurface; `materials` is the public view). */
     this._subsurfaceMaterials = new PipelineMaterials(this, () => ({
       worldUnitInMm: this.worldUnitInMm,
       lightDepth: this.transmittance ? this._lightDepth : null,

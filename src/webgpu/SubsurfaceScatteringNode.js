@@ -52,7 +52,7 @@ const _size = /*@__PURE__*/ new Vector2();
 let _rendererState;
 
 /** three's Node with the node's settings as properties (src/options.js's schema; src/support/settings.js). */
-const NodeWithSettings = /** @type {typeof Node & (new (type: string) => import('../options.js').NodeSettings)} */ (
+const NodeWithSettings = /** @type {new (type: string) => Node & import('../options.js').NodeSettings} */ (
   withSettings(Node, NODE_SCHEMA, 'SubsurfaceScatteringNode'));
 
 /**
@@ -80,7 +80,7 @@ export class SubsurfaceScatteringNode extends NodeWithSettings {
     if (!scenePass || scenePass.isPassNode !== true) throw new TypeError(`subsurfaceScattering: scenePass must be a PassNode (pass(scene, camera)), got ${describe(scenePass)}`);
     const o = checkNodeOptions(options); // every option checked here, once, against the schema
     checkNodeMethod(o.method);
-    /** @private The settings' values (read and assigned through their properties). */
+    /** @internal The settings' values (read and assigned through their properties). */
     this._settings = Object.fromEntries(propertiesOf(NODE_SCHEMA).map(({ name }) => [name, o[name]]));
     if (Object.hasOwn(options ?? {}, 'transmittance')) checkNeedsLight('transmittance', o.transmittance, o.light);
     checkNeedsLight('debugView', o.debugView, o.light);
