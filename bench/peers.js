@@ -82,20 +82,20 @@ export async function openPeers(session) {
  */
 const UNDO_SWITCHES = Object.freeze({
   lightDepthEveryFrame: (sss) => [sss, 'skipsUnreadLightDepth', false],
-  composeAsBefore: (sss) => [sss.composePass, 'fetchesEverywhere', true],
-  depthPrepass: (sss) => [sss.scenePass, 'depthPrepass', true],
-  fullFrameBlur: (sss) => [sss.blur, 'confineToSubsurface', false],
-  bothTexelsFetched: (sss) => [sss.blur, 'skipsEmptyTexels', false],
-  depthFromSurface: (sss) => [sss.blur, 'lightCarriesDepth', false],
-  maskInDiffuse: (sss) => [sss.scenePass, 'diffuseCarriesDepth', false],
-  maskFromDiffuse: (sss) => [sss.composePass, 'maskFromScattered', false],
-  msaaDepthResolvedTwice: (sss) => [sss.scenePass, 'resolvesDepthOnce', false],
-  isotropicDepthFromSurface: (sss) => [sss.blur, 'groupsCarryDepth', false], // with isotropic's switch too (applyFeature)
+  composeAsBefore: (sss) => [sss._composePass, 'fetchesEverywhere', true],
+  depthPrepass: (sss) => [sss._scenePass, 'depthPrepass', true],
+  fullFrameBlur: (sss) => [sss._blur, 'confineToSubsurface', false],
+  bothTexelsFetched: (sss) => [sss._blur, 'skipsEmptyTexels', false],
+  depthFromSurface: (sss) => [sss._blur, 'lightCarriesDepth', false],
+  maskInDiffuse: (sss) => [sss._scenePass, 'diffuseCarriesDepth', false],
+  maskFromDiffuse: (sss) => [sss._composePass, 'maskFromScattered', false],
+  msaaDepthResolvedTwice: (sss) => [sss._scenePass, 'resolvesDepthOnce', false],
+  isotropicDepthFromSurface: (sss) => [sss._blur, 'groupsCarryDepth', false], // with isotropic's switch too (applyFeature)
 });
 
 /** The additions switched on or off by a field (bench/peerPlan.js's ADDITIONS), as UNDO_SWITCHES. */
 const ADDITION_SWITCHES = Object.freeze({
-  noDepthWrite: (sss) => [sss.composePass, 'writesDepth', false],
+  noDepthWrite: (sss) => [sss._composePass, 'writesDepth', false],
   isotropic: (sss) => [sss, 'kernelGroups', 'auto'],
 });
 
@@ -214,7 +214,7 @@ function fence(peers, session, measure) {
     return;
   }
   const target = measure === 'threePlain' ? (MSAA_FEATURES.includes(peers.feature) ? peers.plainMsaa : peers.plain).readBuffer
-    : measure === 'blur' ? session.sss.scatteredTarget
+    : measure === 'blur' ? session.sss._blur.scatteredTarget
       : measure === 'floor' ? peers.floor.targets[1] : session.composer.readBuffer;
   session.renderer.readRenderTargetPixels(target, 0, 0, 1, 1, new Uint16Array(4)); // half-float targets
 }
@@ -232,7 +232,7 @@ function warmedUp(peers, session, { measure, warmUp }) {
   const { renderer, sss } = session;
   const draw = VARIANTS.includes(measure) ? peers.draw[measure]
     : measure === 'stages' ? peers.draw.ours
-      : measure === 'blur' ? () => sss.renderScattering(renderer) : () => peers.floor.render(renderer, { begin() {}, end() {} });
+      : measure === 'blur' ? () => sss._renderScattering(renderer) : () => peers.floor.render(renderer, { begin() {}, end() {} });
   for (let i = 0; i < warmUp; i++) draw();
 }
 
@@ -246,7 +246,7 @@ async function timed(peers, session, { measure, frames }) {
     const times = await recorded(stageTimer, frames, () => peers.draw.ours());
     return Object.fromEntries(STAGES.map((stage) => [stage, msOf(times, stage)]));
   }
-  const run = measure === 'blur' ? () => sss.renderScattering(renderer) : () => peers.floor.render(renderer, stageTimer);
+  const run = measure === 'blur' ? () => sss._renderScattering(renderer) : () => peers.floor.render(renderer, stageTimer);
   const times = await recorded(stageTimer, frames, run);
   const [first, second] = measure === 'blur' ? ['blurH', 'blurV'] : ['floorH', 'floorV'];
   const a = msOf(times, first);
@@ -370,7 +370,7 @@ export async function floorImages(peers, session) {
   return {
     width: session.width,
     height: session.height,
-    diffuse: await readRenderTargetFloats(renderer, sss.scenePass.renderTarget, 1),
+    diffuse: await readRenderTargetFloats(renderer, sss._scenePass.renderTarget, 1),
     horizontal: await readRenderTargetFloats(renderer, peers.floor.targets[0]),
     output: await readRenderTargetFloats(renderer, peers.floor.targets[1]),
   };

@@ -62,8 +62,8 @@ function renderVariants(variants) {
     if (withPane) scene.add(pane);
     const sss = new SSS.SubsurfaceScattering({ scene, camera, worldUnitInMm: 100, type: THREE.FloatType, light, multisampling });
     for (const m of [skin, skinBehind]) sss.makeSubsurface(m);
-    sss.addTo(composer);
-    const targets = { scene: sss.scenePass, blur: sss.blur, compose: sss.composePass, pipeline: sss };
+    composer.addPass(sss);
+    const targets = { scene: sss._scenePass, blur: sss._blur, compose: sss._composePass, pipeline: sss };
     for (const [key, value] of Object.entries(switches)) {
       const [owner, field] = key.split('.');
       targets[owner][field] = value;
@@ -76,13 +76,13 @@ function renderVariants(variants) {
     composer.render();
     const out = {
       output: await read(renderer, composer.readBuffer),
-      scattered: await read(renderer, sss.scatteredTarget),
-      diffuse: await read(renderer, sss.scenePass.renderTarget, 1),
-      box: sss.scenePass.subsurfaceBox,
+      scattered: await read(renderer, sss._blur.scatteredTarget),
+      diffuse: await read(renderer, sss._scenePass.renderTarget, 1),
+      box: sss._scenePass.subsurfaceBox,
       blur: sss.plan.blur,
       groups: sss.plan.groups,
       // The groups' programs (both passes) as compiled: whether they carry the depth.
-      groupsCarry: [sss.blur.horizontalPass, sss.blur.verticalPass].flatMap((pass) => [...pass._groupMaterials.values()].map((m) => m.defines.SSS_GROUPS_CARRY_DEPTH)),
+      groupsCarry: [sss._blur.horizontalPass, sss._blur.verticalPass].flatMap((pass) => [...pass._groupMaterials.values()].map((m) => m.defines.SSS_GROUPS_CARRY_DEPTH)),
     };
     sss.dispose();
     composer.dispose();

@@ -8,6 +8,7 @@ import { spawnSync } from 'node:child_process';
 import { cpSync, mkdirSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
 import * as runtime from '../../src/index.js';
+import * as stages from '../../src/stages.js';
 import * as internals from '../../src/internals.js';
 
 const root = fileURLToPath(new URL('../..', import.meta.url));
@@ -121,11 +122,12 @@ describe('the generated declarations', () => {
     expect([...new Set(errors.map((e) => e.line))].sort((a, b) => a - b)).toEqual(expectedLines);
   }, 120_000);
 
-  it('consumer.ts names every value the package and its internals entry export', () => {
+  it('consumer.ts names every value the package, its stages entry and its internals entry export', () => {
     const consumer = readFileSync(`${root}test/types/consumer.ts`, 'utf8');
     const namesIn = (block) => [...block.matchAll(/^ {2}(\w+):/gm)].map((m) => m[1]).sort();
-    expect(namesIn(consumer.slice(consumer.indexOf('export const ALL_EXPORTS')))).toEqual(Object.keys(runtime).sort());
-    const internalsBlock = consumer.slice(consumer.indexOf('export const ALL_INTERNALS'), consumer.indexOf('export const ALL_EXPORTS'));
-    expect(namesIn(internalsBlock)).toEqual(Object.keys(internals).sort());
+    const blockOf = (from, to) => consumer.slice(consumer.indexOf(from), to ? consumer.indexOf(to) : undefined);
+    expect(namesIn(blockOf('export const ALL_EXPORTS'))).toEqual(Object.keys(runtime).sort());
+    expect(namesIn(blockOf('export const ALL_STAGES', 'export const ALL_EXPORTS'))).toEqual(Object.keys(stages).sort());
+    expect(namesIn(blockOf('export const ALL_INTERNALS', 'export const ALL_STAGES'))).toEqual(Object.keys(internals).sort());
   });
 });

@@ -9,7 +9,7 @@
 // here is part of the library.
 import * as THREE from 'three';
 import { EffectComposer } from 'three/addons/postprocessing/EffectComposer.js';
-import * as SSS from '/src/index.js';
+import * as SSS from '/test/harness/sss.js';
 import { readRenderTargetFloats } from '/dev/readback.js';
 import { ALL_CASES, CALL_CASES } from '/test/reliability/badInputs.js';
 import { createFixture } from '/test/reliability/fixture.js';
@@ -128,7 +128,7 @@ const CHANGES = [
   (s) => { s.sss.multisampling = 4; },
   (s) => s.composer.setSize(WIDTH + 16, HEIGHT + 9),
   (s) => { s.sss.foreshortening = false; },
-  (s) => s.sss.lightDepth.setSize(32),
+  (s) => s.sss._lightDepth.setSize(32),
   (s) => s.sss.makeSubsurface(s.material, { widthMm: 8, translucency: 0.3 }),
   (s) => Object.assign(s.sss, { profile: 'skinBurley', method: 'reference', samples: 'auto' }),
   (s) => { s.sss.debugView = 'thickness'; },
@@ -143,7 +143,7 @@ const CHANGES = [
     sss.multisampling = 'auto';
     s.composer.setSize(WIDTH, HEIGHT);
     sss.foreshortening = true;
-    sss.lightDepth.setSize(64);
+    sss._lightDepth.setSize(64);
     sss.makeSubsurface(s.material, { widthMm: 5, translucency: 0 });
     sss.worldUnitInMm = 100;
     sss.clear = true;

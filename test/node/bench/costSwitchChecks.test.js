@@ -8,13 +8,13 @@ describe('issue 19 switches', () => {
   const sss = new SubsurfaceScattering({ scene: new Scene(), camera: new PerspectiveCamera() });
   const switches = [
     [sss, 'skipsUnreadLightDepth', true],
-    [sss.scenePass, 'depthPrepass', false],
-    [sss.blur, 'confineToSubsurface', true],
-    [sss.composePass, 'writesDepth', true],
-    [sss.composePass, 'fetchesEverywhere', false],
-    [sss.blur, 'skipsEmptyTexels', true],
-    [sss.blur, 'lightCarriesDepth', true],
-    [sss.blur, 'groupsCarryDepth', true],
+    [sss._scenePass, 'depthPrepass', false],
+    [sss._blur, 'confineToSubsurface', true],
+    [sss._composePass, 'writesDepth', true],
+    [sss._composePass, 'fetchesEverywhere', false],
+    [sss._blur, 'skipsEmptyTexels', true],
+    [sss._blur, 'lightCarriesDepth', true],
+    [sss._blur, 'groupsCarryDepth', true],
   ];
 
   it.each(switches.map(([owner, field, value]) => [field, owner, value]))('%s: defaults to the saving, takes booleans only', (field, owner, value) => {
@@ -27,20 +27,20 @@ describe('issue 19 switches', () => {
   });
 
   it('the groups\' carried depth reaches both blur passes', () => {
-    sss.blur.groupsCarryDepth = false;
-    expect([sss.blur.horizontalPass, sss.blur.verticalPass].map((p) => p.material.defines.SSS_GROUPS_CARRY_DEPTH)).toEqual([0, 0]);
-    sss.blur.groupsCarryDepth = true;
-    expect([sss.blur.horizontalPass, sss.blur.verticalPass].map((p) => p.material.defines.SSS_GROUPS_CARRY_DEPTH)).toEqual([1, 1]);
+    sss._blur.groupsCarryDepth = false;
+    expect([sss._blur.horizontalPass, sss._blur.verticalPass].map((p) => p.material.defines.SSS_GROUPS_CARRY_DEPTH)).toEqual([0, 0]);
+    sss._blur.groupsCarryDepth = true;
+    expect([sss._blur.horizontalPass, sss._blur.verticalPass].map((p) => p.material.defines.SSS_GROUPS_CARRY_DEPTH)).toEqual([1, 1]);
   });
 
   it('the compose\'s switches reach its material', () => {
-    sss.composePass.fetchesEverywhere = true;
-    expect(sss.composePass.material.defines.FETCH_EVERYWHERE).toBe(1);
-    sss.composePass.fetchesEverywhere = false;
-    sss.composePass.writesDepth = false;
-    sss.composePass.setClear(true);
-    expect(sss.composePass.material.depthWrite).toBe(false);
-    sss.composePass.writesDepth = true;
-    expect(sss.composePass.material.depthWrite).toBe(true);
+    sss._composePass.fetchesEverywhere = true;
+    expect(sss._composePass.material.defines.FETCH_EVERYWHERE).toBe(1);
+    sss._composePass.fetchesEverywhere = false;
+    sss._composePass.writesDepth = false;
+    sss._composePass.setClear(true);
+    expect(sss._composePass.material.depthWrite).toBe(false);
+    sss._composePass.writesDepth = true;
+    expect(sss._composePass.material.depthWrite).toBe(true);
   });
 });

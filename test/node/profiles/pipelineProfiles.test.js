@@ -3,7 +3,7 @@
 // channels the surface attachment has, as materials come and go and the pipeline's profile changes.
 import { describe, it, expect, afterEach } from 'vitest';
 import * as THREE from 'three';
-import * as SSS from '../../../src/index.js';
+import * as SSS from '../../harness/sss.js';
 import { createFixture } from '../../reliability/fixture.js';
 
 let t;
@@ -11,11 +11,11 @@ afterEach(() => t?.dispose());
 
 /** What the frame holds: { count: PROFILE_COUNT of both blur passes, channels: the surface's, slots and transmittance profiles by material }. */
 function frameOf(sss, materials) {
-  const counts = new Set([sss.horizontalPass, sss.verticalPass].map((pass) => pass.material.defines.PROFILE_COUNT));
+  const counts = new Set([sss._blur.horizontalPass, sss._blur.verticalPass].map((pass) => pass.material.defines.PROFILE_COUNT));
   expect(counts.size).toBe(1);
   return {
     count: [...counts][0],
-    channels: sss.scenePass.surfaceTexture.format === THREE.RGBAFormat ? 4 : 2,
+    channels: sss._scenePass.surfaceTexture.format === THREE.RGBAFormat ? 4 : 2,
     slots: materials.map((m) => sss.materials.get(m).hook.profileSlot),
     transmits: materials.map((m) => sss.materials.get(m).hook.transmittance.lookup.profile.name),
   };
@@ -74,20 +74,13 @@ describe('a pipeline with materials of several profiles', () => {
     expect(sss._otherLookups.size).toBe(1);
   });
 
-  it('names the call that would make a ninth profile, and the deprecated setKernel changes all or nothing', () => {
+  it('names the call that would make a ninth profile, and a refused setting changes nothing', () => {
     t = createFixture(THREE, SSS);
     const { sss } = t;
-    const warn = console.warn;
-    console.warn = () => {}; // setKernel's deprecation
-    try {
-      expect(() => sss.setKernel({ profile: 'milk', method: 'bogus' })).toThrow(/method/);
-      expect([sss.profile.name, sss.method]).toEqual(['skin', 'footprint']);
-      sss.makeSubsurface(new THREE.MeshStandardMaterial(), { profile: 'marble' });
-      expect(() => sss.setKernel({ profile: 'milk', method: 'dense' })).toThrow(RangeError);
-      expect([sss.profile.name, sss.method]).toEqual(['skin', 'footprint']);
-    } finally {
-      console.warn = warn;
-    }
+    expect(() => { sss.method = 'bogus'; }).toThrow(/method/);
+    expect(() => { sss.profile = 'jelly'; }).toThrow(/profile/);
+    expect([sss.profile.name, sss.method]).toEqual(['skin', 'footprint']);
+    sss.makeSubsurface(new THREE.MeshStandardMaterial(), { profile: 'marble' });
     for (const name of ['skin', 'milk', 'skinBurley']) sss.makeSubsurface(new THREE.MeshStandardMaterial(), { profile: name });
     for (let i = 0; i < 4; i++) sss.makeSubsurface(new THREE.MeshStandardMaterial(), { profile: SSS.burleyProfile({ name: `b${i}`, scatterDistanceMm: [1, 0.5, 0.3 + i / 10] }) });
     // Eight now (the fixture's material follows the pipeline's skin): a ninth by the pipeline's profile, or by a material.
