@@ -1,6 +1,6 @@
 // The options' one source (src/options.js's schema) and what derives from it: the defaults, the
 // checks, the typedefs the TypeScript declarations come from, the README's options table, and the
-// README's export table against the main entry, one for one.
+// README's API section against the main entry and the stages subpath, one for one.
 import { describe, it, expect } from 'vitest';
 import { readFileSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
@@ -58,10 +58,21 @@ describe('what derives from the schema', () => {
 
   it("the README's export table names every export of the main entry, and nothing else", () => {
     const readme = readFileSync(`${root}README.md`, 'utf8');
-    const section = readme.slice(readme.indexOf('### What the module exports'), readme.indexOf('#### Options'));
+    const section = readme.slice(readme.indexOf('## API'), readme.indexOf('\nTypes: ', readme.indexOf('## API')));
+    expect(section.length).toBeGreaterThan(200);
     const firstColumns = [...section.matchAll(/^\| ([^|]+) \|/gm)].map((m) => m[1]).filter((c) => c !== 'export' && !c.startsWith('---'));
     const named = firstColumns.flatMap((cell) => [...cell.matchAll(/`(\w+)`/g)].map((m) => m[1]));
     expect(new Set(named).size).toBe(named.length);
     expect(named.sort()).toEqual(Object.keys(mainEntry).sort());
+  });
+
+  it("the README's stages paragraph names every export of three-separable-sss/stages (src/stages.js), and nothing else", async () => {
+    const readme = readFileSync(`${root}README.md`, 'utf8');
+    const from = readme.indexOf('`three-separable-sss/stages`');
+    expect(from).toBeGreaterThan(0);
+    const named = [...readme.slice(from, readme.indexOf('\n\n', from)).matchAll(/`(\w+)`/g)].map((m) => m[1]);
+    const stages = await import('../../src/stages.js');
+    expect(new Set(named).size).toBe(named.length);
+    expect(named.sort()).toEqual(Object.keys(stages).sort());
   });
 });
