@@ -276,6 +276,7 @@ export class SubsurfaceScattering extends PassWithSettings {
     this._composePass.scatteredTexture = this.plan.blur ? this._blur.scatteredTarget.texture : this._scenePass.diffuseTexture;
     // The box bounds where the blur wrote; without the blur the diffuse is read everywhere, as before.
     this._composePass.setMaskBox(this.plan.blur ? this._scenePass.subsurfaceBox : null);
+    this._composePass.setScatteredShare(this.plan.blur ? this.plan.fade : 1); // the blur fading in (blurPlan.js)
     this._composePass.renderToScreen = this.renderToScreen;
     this._composePass.setClear(this.clear, this.clearDepth);
     const autoClear = renderer.autoClear;

@@ -18,6 +18,7 @@ uniform float splitX;          // pixels left of this column show the unblurred 
 uniform float debugDepthRange; // world units mapped to white in the depth view
 uniform float debugThicknessRangeMm; // millimetres mapped to white in the thickness view
 uniform highp ivec4 maskBox;   // MASK_FROM_SCATTERED: the subsurface pixels lie in [xy, zw) (device pixels)
+uniform float scatteredShare;   // the share of the scattered light shown, the rest unblurred (the blur fading in: plan.fade)
 
 varying vec2 vUv;
 
@@ -58,6 +59,8 @@ void main() {
 		bool subsurface = sssCarriesSurface( unscattered.a );
 		vec3 diffuse = ! subsurface ? vec3( 0.0 ) : gl_FragCoord.x < splitX ? unscattered.rgb : texelFetch( tScattered, pixel, 0 ).rgb;
 	#endif
+	// The blur fades in where it starts to move light (src/3-blur/blurPlan.js): no step when it starts.
+	if ( subsurface && scatteredShare < 1.0 && gl_FragCoord.x >= splitX ) diffuse = mix( texelFetch( tDiffuse, pixel, 0 ).rgb, diffuse, scatteredShare );
 	vec3 colour;
 	#if DEBUG_VIEW == DEBUG_VIEW_FINAL
 		colour = light.rgb + ( subsurface ? diffuse : vec3( 0.0 ) );

@@ -11,7 +11,7 @@ import { FloatType, NearestFilter, RGBAIntegerFormat, UnsignedIntType, WebGLRend
 import { computeKernel, kernelRadiusMm } from '../profiles/kernel.js';
 import { getProfile } from '../profiles/presets.js';
 import { AUTO_SAMPLES, METHOD_TABLE, PIPELINE_SCHEMA, checkOption } from '../options.js';
-import { blurModeOf, checkProfileCount, planBlur } from './blurPlan.js';
+import { blendKernels, blurModeOf, checkProfileCount, planBlur } from './blurPlan.js';
 import { booleanFields } from '../support/booleanFields.js';
 import { checkBoolean } from '../support/parameterChecks.js';
 import { setDefines } from '../support/glsl.js';
@@ -106,7 +106,7 @@ export class BlurStage {
     this.kernel = firstKernel;
     this._applySettings();
     /** The last frame's plan (see planBlur). */
-    this.lastPlan = { samples: this.kernel.length / 4, kernelPixels: 0, blur: false, passes: blurModeOf(method).passes, groups: 1, groupings: null };
+    this.lastPlan = { samples: this.kernel.length / 4, kernelPixels: 0, blur: false, fade: 0, tapBlend: null, passes: blurModeOf(method).passes, groups: 1, groupings: null };
   }
 
   /** @type {import('../options.js').Method} */
@@ -259,6 +259,20 @@ export class BlurStage {
     return kernels.get(key);
   }
 
+  /**
+   * The kernel of a plan for `profile`: its count's, or with tapBlend both counts' as one
+   * (blendKernels; the first slot's last one is kept while the blend is the same).
+   */
+  _kernelOfPlan(plan, profile = this._settings.profile) {
+    const blend = plan.tapBlend;
+    if (!blend) return this._kernelFor(plan.samples, profile);
+    const key = JSON.stringify(blend);
+    if (profile === this._settings.profile && this._blended?.key === key) return this._blended.kernel;
+    const kernel = blendKernels(this._kernelFor(blend.from, profile), this._kernelFor(blend.to, profile), blend.share);
+    if (profile === this._settings.profile) this._blended = { key, kernel };
+    return kernel;
+  }
+
   /** Every slot's kernel of `samples` taps (the first is `kernel`'s). */
   _slotKernels(samples) {
     return this.profileLookups.map((lookup) => this._kernelFor(samples, lookup.profile));
@@ -294,7 +308,8 @@ export class BlurStage {
    */
   plan(pixelsPerMm) {
     const plan = planBlur(this.planSettings, pixelsPerMm);
-    if (plan.samples !== this.kernel.length / 4) this._setPassKernels(this._kernelFor(plan.samples));
+    const kernel = this._kernelOfPlan(plan);
+    if (kernel !== this.kernel) this._setPassKernels(kernel, plan);
     this.lastPlan = plan;
     return plan;
   }
@@ -479,10 +494,11 @@ export class BlurStage {
     this._setPassKernels(this.kernel);
   }
 
-  /** @param {Float32Array} kernel */
-  _setPassKernels(kernel) {
+  /** @param {Float32Array} kernel @param {import('./blurPlan.js').BlurPlan} [plan] the plan it is for (a tapBlend's slots blend too) */
+  _setPassKernels(kernel, plan) {
     const capacity = blurModeOf(this.method).tapCapacity(kernel.length / 4, this.autoSamples);
-    const slotKernels = passModeOf(this.method) === 'taps' ? this._slotKernels(kernel.length / 4) : [kernel]; // footprints read the tables
+    const slotKernels = passModeOf(this.method) !== 'taps' ? [kernel] // footprints read the tables
+      : plan?.tapBlend ? this.profileLookups.map((lookup) => this._kernelOfPlan(plan, lookup.profile)) : this._slotKernels(kernel.length / 4);
     for (const pass of [this.horizontalPass, this.verticalPass]) pass.setKernel(kernel, capacity, slotKernels);
     this.kernel = kernel;
   }

@@ -6,7 +6,34 @@
 import { AUTO_REACH, AUTO_SAMPLES, METHOD_TABLE } from '../options.js';
 import { AUTO_MAX_SAMPLES } from '../profiles/footprints.js';
 import { MIN_KERNEL_PIXELS } from './samplingModel.js';
-import { MAX_KERNEL_GROUPS, kernelGroupsAt } from './kernelGroups.js';
+import { MAX_KERNEL_GROUPS, fadedGrouping, groupingStepEnd, kernelGroupsAt } from './kernelGroups.js';
+
+// Stable under motion: where the plan would change discretely with the scale (the 'auto' groups
+// and fixed-tap counts, the blur skipped), it ramps over a range of scales instead, so a slow zoom
+// or dolly never changes the whole scattering in one frame. Each ramp lies below the change: the
+// image there is at least as accurate as with the plan below it, and costs the plan above it.
+
+/** The scales a plan change ramps over, as a ratio (a quarter octave: inside 'auto''s steps). */
+export const PLAN_RAMP = 2 ** (1 / 4);
+
+/**
+ * The blur fades in over the reaches from MIN_KERNEL_PIXELS to this, pixels: the compose shows
+ * plan.fade of the scattered light and the rest unblurred, so the skip below half a pixel is no step.
+ */
+export const FADE_IN_PIXELS = 1;
+
+/** A faded grouping's share is stepped in 1/GROUP_SHARE_STEPS (each step refills the blur's fraction table). */
+export const GROUP_SHARE_STEPS = 64;
+
+/**
+ * The share of a ramp ending at `end` over `ratio` of scales: 0 up to end / ratio, 1 from end on,
+ * linear in log(x) between.
+ * @param {number} x @param {number} end @param {number} ratio > 1 @returns {number}
+ */
+export function rampShare(x, end, ratio) {
+  if (!(x > end / ratio)) return 0;
+  return x >= end ? 1 : Math.log((x * ratio) / end) / Math.log(ratio);
+}
 
 /**
  * 'auto' taps of the fixed-tap methods: the fewest of AUTO_SAMPLES whose (samples - 3) / 2
@@ -17,6 +44,41 @@ import { MAX_KERNEL_GROUPS, kernelGroupsAt } from './kernelGroups.js';
  */
 export function autoSampleCount(radiusPx) {
   return AUTO_SAMPLES.find((n) => (n - 3) / 2 >= AUTO_REACH * radiusPx) ?? AUTO_SAMPLES[AUTO_SAMPLES.length - 1];
+}
+
+/**
+ * 'auto' fixed taps just below the radius where autoSampleCount takes the next count: both
+ * kernels, the next one at `share` (rampShare over PLAN_RAMP), as one kernel of their taps
+ * (blendKernels); null elsewhere, and where the two exceed the taps the blur is compiled for.
+ * @param {number} radiusPx @returns {{ from: number, to: number, share: number }|null}
+ */
+export function autoTapBlend(radiusPx) {
+  const from = autoSampleCount(radiusPx);
+  const to = AUTO_SAMPLES[AUTO_SAMPLES.indexOf(from) + 1];
+  if (to === undefined || from + to - 1 > AUTO_SAMPLES[AUTO_SAMPLES.length - 1]) return null;
+  const share = rampShare(radiusPx, (from - 3) / 2 / AUTO_REACH, PLAN_RAMP);
+  return share > 0 ? { from, to, share } : null;
+}
+
+/**
+ * Two kernels of computeKernel's layout as one: every tap of both, `a`'s weights times 1 − share
+ * and `b`'s times share, one centre. Without dropped taps the blur answers exactly
+ * (1 − share) · a's blur + share · b's.
+ * @param {Float32Array} a @param {Float32Array} b @param {number} share
+ * @returns {Float32Array} (a.length + b.length) / 4 − 1 taps
+ */
+export function blendKernels(a, b, share) {
+  const out = new Float32Array(a.length + b.length - 4);
+  for (let c = 0; c < 3; c++) out[c] = (1 - share) * a[c] + share * b[c];
+  const add = (kernel, scale, at) => {
+    for (let i = 4; i < kernel.length; i += 4) {
+      for (let c = 0; c < 3; c++) out[at + i - 4 + c] = scale * kernel[i + c];
+      out[at + i - 1] = kernel[i + 3];
+    }
+  };
+  add(a, 1 - share, 4);
+  add(b, share, a.length);
+  return out;
 }
 
 /**
@@ -45,9 +107,15 @@ export function autoSampleCount(radiusPx) {
 export function frameGroupings(settings, pixelsPerMm) {
   const setting = settings.kernelGroups ?? 1;
   if (setting === 1) return null; // one kernel (also a planner that names no groups)
-  if (setting === 'auto' && settings.profiles.every((profile) => kernelGroupsAt(profile, pixelsPerMm, 'auto').count === 1)) return null;
   const count = setting === 'auto' ? MAX_KERNEL_GROUPS : setting;
-  return settings.profiles.map((profile) => kernelGroupsAt(profile, pixelsPerMm, count));
+  const groupsAt = (scale) => settings.profiles.map((profile) => kernelGroupsAt(profile, scale, count));
+  const oneKernelAt = (scale) => settings.profiles.every((profile) => kernelGroupsAt(profile, scale, 'auto').count === 1);
+  if (setting !== 'auto' || !oneKernelAt(pixelsPerMm)) return groupsAt(pixelsPerMm);
+  // Just below the step where one kernel leaves the budget, the groups fade in (fadedGrouping).
+  const next = groupingStepEnd(pixelsPerMm) * (1 + 1e-9); // inside the next step
+  if (oneKernelAt(next)) return null;
+  const share = Math.round(rampShare(pixelsPerMm, next, PLAN_RAMP) * GROUP_SHARE_STEPS) / GROUP_SHARE_STEPS;
+  return share > 0 ? groupsAt(next).map((grouping) => fadedGrouping(grouping, share)) : null;
 }
 
 /**
@@ -57,6 +125,7 @@ export function frameGroupings(settings, pixelsPerMm) {
  *   by a uniform below it, never by a recompile): the kernel's count for 'footprint' (its budget),
  *   the largest 'auto' count for fixed taps;
  * - autoSamples(radiusPx): the taps 'auto' takes for the on-screen radius of the marginal's 99 %;
+ * - tapBlend(radiusPx) (fixed taps): 'auto''s ramp between two counts there (autoTapBlend), or null;
  * - reachMm(settings, samples): how far the blur reaches, mm (below half a pixel nothing moves);
  * - groupings(settings, pixelsPerMm): the isotropic blur's groups per slot (frameGroupings), or
  *   null where the mode blurs with one kernel (fixed taps) or is isotropic already (dense).
@@ -75,6 +144,7 @@ export const BLUR_MODES = Object.freeze({
   taps: Object.freeze({
     passes: 'separable',
     autoSamples: autoSampleCount,
+    tapBlend: autoTapBlend,
     tapCapacity: (samples, auto) => (auto ? AUTO_SAMPLES[AUTO_SAMPLES.length - 1] : samples),
     reachMm: (settings, samples) => reachOfTaps(settings, samples),
     groupings: () => null,
@@ -115,9 +185,13 @@ export function blurModeOf(method) {
 /**
  * The plan of one frame's stage 3.
  * @typedef {object} BlurPlan
- * @property {number} samples the taps this frame (the budget for 'footprint')
+ * @property {number} samples the taps this frame (the budget for 'footprint'; both kernels' with tapBlend)
+ * @property {{ from: number, to: number, share: number }|null} tapBlend 'auto' fixed taps between two
+ *   counts: the kernel is blendKernels of theirs (autoTapBlend)
  * @property {number} kernelPixels the largest on-screen reach of the kernel, pixels
  * @property {boolean} blur whether the blur stage runs (not below half a pixel, not switched off)
+ * @property {number} fade the share of the blurred light the compose shows, the rest unblurred:
+ *   rampShare of kernelPixels up to FADE_IN_PIXELS (0 where the blur does not run)
  * @property {'separable'|'dense'} passes which passes run
  * @property {number} groups the isotropic blur's groups holding light this frame (1: one kernel)
  * @property {ReadonlyArray<object>|null} groupings their kernelGroups per slot (null: one kernel)
@@ -131,11 +205,14 @@ export function blurModeOf(method) {
  */
 export function planBlur(settings, pixelsPerMm) {
   const mode = blurModeOf(settings.method);
-  const samples = settings.samples === 'auto' ? mode.autoSamples(settings.marginalRadiusMm * pixelsPerMm) : settings.samples;
-  const kernelPixels = mode.reachMm(settings, samples) * pixelsPerMm;
+  const radiusPx = settings.marginalRadiusMm * pixelsPerMm;
+  const tapBlend = settings.samples === 'auto' ? mode.tapBlend?.(radiusPx) ?? null : null;
+  const counts = tapBlend ? [tapBlend.from, tapBlend.to] : [settings.samples === 'auto' ? mode.autoSamples(radiusPx) : settings.samples];
+  const kernelPixels = Math.max(...counts.map((n) => mode.reachMm(settings, n))) * pixelsPerMm;
   const groupings = mode.groupings(settings, pixelsPerMm);
+  const fade = settings.scattering ? rampShare(kernelPixels, FADE_IN_PIXELS, FADE_IN_PIXELS / MIN_KERNEL_PIXELS) : 0;
   return {
-    samples, kernelPixels, blur: settings.scattering && kernelPixels >= MIN_KERNEL_PIXELS, passes: mode.passes,
+    samples: tapBlend ? tapBlend.from + tapBlend.to - 1 : counts[0], tapBlend, kernelPixels, blur: fade > 0, fade, passes: mode.passes,
     groups: groupings ? Math.max(...groupings.map((g) => g.count)) : 1, groupings,
   };
 }

@@ -283,6 +283,19 @@ export function checkKernelGroups(value, name = 'kernelGroups') {
 /** Footprint table rows per cached scale step (8 rows an octave). */
 const ROWS_PER_STEP = 4;
 
+/** The footprint row that names `pxPerMm`'s cached step (its upper end, rounded up). */
+const stepRowOf = (pxPerMm) => Math.ceil(footprintRowOf(Math.max(pxPerMm, Number.MIN_VALUE)) / ROWS_PER_STEP) * ROWS_PER_STEP;
+
+/**
+ * The scale where the cached step holding `pxPerMm` ends: kernelGroupsAt gives one grouping below
+ * it (down to the step's start) and the next step's from it on.
+ * @param {number} pxPerMm @returns {number}
+ */
+export function groupingStepEnd(pxPerMm) {
+  const row = stepRowOf(pxPerMm);
+  return row >= FOOTPRINT_ROWS - 1 ? Infinity : footprintRowScale(row + 0.5); // footprintRowOf rounds at half rows
+}
+
 /** profile → `${footprint row}/${setting}` → the grouping there. */
 const groupingsAt = new WeakMap();
 
@@ -298,7 +311,7 @@ const groupingsAt = new WeakMap();
 export function kernelGroupsAt(profile, pxPerMm, setting = 'auto') {
   checkKernelGroups(setting);
   // Half-octave steps of the footprint table's rows, rounded up: a zoom recomputes rarely.
-  const row = Math.ceil(footprintRowOf(Math.max(pxPerMm, Number.MIN_VALUE)) / ROWS_PER_STEP) * ROWS_PER_STEP;
+  const row = stepRowOf(pxPerMm);
   let byRow = groupingsAt.get(profile);
   if (!byRow) groupingsAt.set(profile, (byRow = new Map()));
   const key = `${row}/${setting}`;
@@ -342,8 +355,9 @@ export function groupEnergies({ gaussians, members }) {
  *   grouping's count hold 0. Where no group has energy (past float range) the widest takes it all.
  */
 export function footprintGroupFractions(grouping, { data, columns }) {
-  const { gaussians, members } = grouping;
+  const { gaussians, members, share = 1 } = grouping;
   const count = members[0].length;
+  const shares = groupEnergies(grouping); // a faded grouping's (fadedGrouping) split leans to these
   const scales = gaussians.map((g) => 1 / Math.sqrt(2 * g.varianceMm2));
   const out = new Float32Array(FOOTPRINT_ROWS * (columns + 1) * MAX_KERNEL_GROUPS * 3);
   const energies = new Float64Array(count);
@@ -358,7 +372,10 @@ export function footprintGroupFractions(grouping, { data, columns }) {
         total += energies[g];
       }
       const base = (row * (columns + 1) + column) * MAX_KERNEL_GROUPS;
-      for (let g = 0; g < count; g++) out[(base + g) * 3 + c] = total > 0 ? energies[g] / total : (g === count - 1 ? 1 : 0);
+      for (let g = 0; g < count; g++) {
+        const own = total > 0 ? energies[g] / total : (g === count - 1 ? 1 : 0);
+        out[(base + g) * 3 + c] = share * own + (1 - share) * shares[g][c];
+      }
     }
   };
   for (let row = 0; row < FOOTPRINT_ROWS; row++) {
@@ -375,4 +392,23 @@ export function footprintGroupFractions(grouping, { data, columns }) {
     }
   }
   return out;
+}
+
+/** grouping → share → its fadedGrouping. */
+const fadedGroupings = new WeakMap();
+
+/**
+ * `grouping` faded towards one kernel: each footprint's split between the groups is `share` of
+ * its own and 1 − share of the groups' energy shares (groupEnergies). At share 0 every footprint
+ * splits alike, so each group's blur is that share of the one-kernel blur and the groups sum to it
+ * exactly: a plan changing between one kernel and groups (kernelGroups 'auto') ramps the share
+ * instead of switching (src/3-blur/blurPlan.js). Cached per share (the plan steps it).
+ * @param {ReturnType<typeof kernelGroups>} grouping @param {number} share in [0, 1]
+ */
+export function fadedGrouping(grouping, share) {
+  if (share >= 1) return grouping;
+  let byShare = fadedGroupings.get(grouping);
+  if (!byShare) fadedGroupings.set(grouping, (byShare = new Map()));
+  if (!byShare.has(share)) byShare.set(share, Object.freeze({ ...grouping, share }));
+  return byShare.get(share);
 }

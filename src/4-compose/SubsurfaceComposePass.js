@@ -48,6 +48,7 @@ export class SubsurfaceComposePass extends ShaderPass {
         tDepth: { value: null }, farDepth: { value: 1 },
         splitX: { value: 0 }, debugDepthRange: { value: PIPELINE_DEFAULTS.debugDepthRange }, debugThicknessRangeMm: { value: PIPELINE_DEFAULTS.debugThicknessRangeMm },
         maskBox: { value: new Vector4(0, 0, 0x7fffffff, 0x7fffffff) },
+        scatteredShare: { value: 1 },
       },
       vertexShader,
       fragmentShader,
@@ -150,6 +151,15 @@ export class SubsurfaceComposePass extends ShaderPass {
   setMaskBox(box) {
     if (box === null) this.uniforms.maskBox.value.set(0, 0, 0x7fffffff, 0x7fffffff);
     else this.uniforms.maskBox.value.set(box.x, box.y, box.x + box.width, box.y + box.height);
+  }
+
+  /**
+   * The share of the scattered light shown on subsurface pixels, the rest the unblurred light (1:
+   * the scattered alone; the orchestrator gives the plan's fade, src/3-blur/blurPlan.js).
+   * @param {number} share in [0, 1]
+   */
+  setScatteredShare(share) {
+    this.uniforms.scatteredShare.value = checkNumber('scatteredShare', share, { min: 0, max: 1 });
   }
 
   render(renderer, writeBuffer, readBuffer, deltaTime, maskActive) {

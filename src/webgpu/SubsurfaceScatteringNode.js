@@ -91,13 +91,13 @@ export class SubsurfaceScatteringNode extends NodeWithSettings {
     this._uniforms = {
       kernelRadiusMm: uniform(0), strength: uniform(new Vector3()), projectionScale: uniform(new Vector2(1, 1)),
       resolution: uniform(new Vector2(1, 1)), depthFalloff: uniform(1), perspective: uniform(1), mmToWorld: uniform(1e-3),
-      marginalRangeMm: uniform(1), debugView: debugViewUniform(), debugDepthRange: uniform(1), debugThicknessRangeMm: uniform(1),
+      marginalRangeMm: uniform(1), debugView: debugViewUniform(), debugDepthRange: uniform(1), debugThicknessRangeMm: uniform(1), scatteredShare: uniform(1),
     };
     /** Stage 1 and the materials' transmittance uniforms, before the scene pass (null without a light). */
     this._lightStage = o.light === null ? null : new LightStageNode(this, o.light, o.lightDepthSize);
     for (const name of ['worldUnitInMm', 'samples', 'strength', 'debugView', 'debugDepthRange', 'debugThicknessRangeMm']) this._applySetting(name, o[name]);
     /** What the last frame ran: { samples, kernelPixels, blur, passes, groups, groupings } (see src/3-blur/blurPlan.js). */
-    this.plan = { samples: 0, kernelPixels: 0, blur: false, passes: 'separable', groups: 1, groupings: null };
+    this.plan = { samples: 0, tapBlend: null, kernelPixels: 0, blur: false, fade: 0, passes: 'separable', groups: 1, groupings: null };
 
     // The surface needs the 32-bit mantissa (mm differences at metres); the light is half float.
     scenePass.getTexture(ATTACHMENT_NAMES.SURFACE).type = FloatType;
@@ -276,6 +276,7 @@ export class SubsurfaceScatteringNode extends NodeWithSettings {
     scenePass.setSize(_size.width, _size.height);
     const { width, height } = scenePass.renderTarget;
     this.plan = this._planFrame(subsurfaceMeshesOf(scene).meshes, camera, width, height);
+    this._uniforms.scatteredShare.value = this.plan.blur ? this.plan.fade : 1; // the blur fading in (blurPlan.js)
     if (this.kernelGroups === 1) this._freeGroupTarget(); // back to one kernel: its 8 B per pixel and group go
     const diffuse = scenePass.getTexture(ATTACHMENT_NAMES.DIFFUSE);
     if (!this.plan.blur) {
@@ -328,6 +329,7 @@ export class SubsurfaceScatteringNode extends NodeWithSettings {
       view: this._uniforms.debugView,
       depthRange: this._uniforms.debugDepthRange,
       thicknessRangeMm: this._uniforms.debugThicknessRangeMm,
+      share: this._uniforms.scatteredShare,
     });
   }
 

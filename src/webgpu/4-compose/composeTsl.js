@@ -24,14 +24,16 @@ const is = (u, view) => u.equal(DEBUG_VIEWS.indexOf(view));
  * @param {object} o.view debugViewUniform()
  * @param {object} o.depthRange world units mapped to white in the depth view (a float uniform)
  * @param {object} o.thicknessRangeMm profile mm mapped to white in the thickness view (a float uniform)
+ * @param {object} o.share the share of the scattered light shown, the rest unblurred (a float
+ *   uniform: the blur fading in, src/3-blur/blurPlan.js)
  */
-export function composeNode({ colour, unscattered, scattered, surface, view, depthRange, thicknessRangeMm }) {
+export function composeNode({ colour, unscattered, scattered, surface, view, depthRange, thicknessRangeMm, share }) {
   return Fn(() => {
     const pixel = ivec2(screenCoordinate.xy).toVar();
     const light = textureLoad(colour, pixel).toVar();
     const before = textureLoad(unscattered, pixel).toVar();
     const subsurface = before.a.greaterThan(0).toVar();
-    const diffuse = select(subsurface, textureLoad(scattered, pixel).rgb, vec3(0)).toVar();
+    const diffuse = select(subsurface, before.rgb.mix(textureLoad(scattered, pixel).rgb, share), vec3(0)).toVar();
     const result = light.rgb.add(diffuse).toVar();
     If(is(view, DEBUG_VIEW.DIFFUSE), () => { result.assign(diffuse); });
     If(is(view, DEBUG_VIEW.SPECULAR), () => { result.assign(select(subsurface, light.rgb, vec3(0))); });

@@ -21,13 +21,13 @@ describe('planBlur', () => {
   });
 
   it("'footprint': the frame keeps the budget (per pixel the table chooses) and reaches the marginal's 99 % radius", () => {
-    expect(planBlur({ ...base, method: 'footprint', samples: 'auto' }, 2)).toEqual({ samples: AUTO_MAX_SAMPLES, kernelPixels: 6, blur: true, passes: 'separable', ...oneKernel });
+    expect(planBlur({ ...base, method: 'footprint', samples: 'auto' }, 2)).toEqual({ samples: AUTO_MAX_SAMPLES, tapBlend: null, kernelPixels: 6, blur: true, fade: 1, passes: 'separable', ...oneKernel });
     expect(planBlur({ ...base, method: 'footprint', samples: 9 }, 2).samples).toBe(9);
   });
 
   it('fixed taps reach their outermost tap; below half a pixel, or switched off, nothing runs', () => {
-    expect(planBlur({ ...base, method: 'marginal', samples: 17 }, 0.1)).toEqual({ samples: 17, kernelPixels: 0.4, blur: false, passes: 'separable', ...oneKernel });
-    expect(planBlur({ ...base, method: 'marginal', samples: 17 }, 0.125).blur).toBe(true); // exactly 0.5 px
+    expect(planBlur({ ...base, method: 'marginal', samples: 17 }, 0.1)).toEqual({ samples: 17, tapBlend: null, kernelPixels: 0.4, blur: false, fade: 0, passes: 'separable', ...oneKernel });
+    expect(planBlur({ ...base, method: 'marginal', samples: 17 }, 0.125)).toMatchObject({ blur: false, fade: 0 }); // exactly 0.5 px: the fade starts
     expect(planBlur({ ...base, method: 'reference', samples: 25 }, 0).blur).toBe(false); // nothing drawn
     expect(planBlur({ ...base, method: 'marginal', samples: 17, scattering: false }, 100).blur).toBe(false);
     expect(() => planBlur({ ...base, method: 'marginal', samples: 9 }, 1)).toThrow(/no kernel reach for 9 taps/);
@@ -36,7 +36,7 @@ describe('planBlur', () => {
   it("'auto' fixed taps: the fewest of AUTO_SAMPLES whose (n - 3) / 2 pixels per side reach AUTO_REACH of the radius", () => {
     const reach = Object.fromEntries(AUTO_SAMPLES.map((n) => [n, n / 10]));
     // 3 mm at 2 px/mm: 6 px; 0.92 × 6 = 5.52 px per side: (13 - 3) / 2 = 5 is short, (17 - 3) / 2 = 7 reaches.
-    expect(planBlur({ ...base, kernelReachMm: reach, method: 'marginal', samples: 'auto' }, 2)).toEqual({ samples: 17, kernelPixels: 3.4, blur: true, passes: 'separable', ...oneKernel });
+    expect(planBlur({ ...base, kernelReachMm: reach, method: 'marginal', samples: 'auto' }, 2)).toEqual({ samples: 17, tapBlend: null, kernelPixels: 3.4, blur: true, fade: 1, passes: 'separable', ...oneKernel });
     expect(autoSampleCount(6)).toBe(17);
     expect(autoSampleCount(1e6)).toBe(63);
     for (const n of AUTO_SAMPLES) expect(autoSampleCount((((n - 3) / 2) / AUTO_REACH) * (1 - 1e-9))).toBe(n);
