@@ -5,7 +5,7 @@
 // by name) are a uniform here, so switching one rebuilds nothing; the thickness and transmittance
 // views read what the materials wrote into the diffuse attachment instead of the light (the node
 // tells them: src/webgpu/2-scene-split/subsurfaceNodeMaterial.js).
-import { Fn, If, float, ivec2, screenCoordinate, select, textureLoad, uniform, vec3, vec4 } from 'three/tsl';
+import { Fn, If, float, ivec2, mix, screenCoordinate, select, textureLoad, uniform, vec3, vec4 } from 'three/tsl';
 import { DEBUG_VIEW, DEBUG_VIEWS } from '../../4-compose/debugViews.js';
 import { finite3 } from '../3-blur/surfaceTsl.js';
 
@@ -33,7 +33,7 @@ export function composeNode({ colour, unscattered, scattered, surface, view, dep
     const light = textureLoad(colour, pixel).toVar();
     const before = textureLoad(unscattered, pixel).toVar();
     const subsurface = before.a.greaterThan(0).toVar();
-    const diffuse = select(subsurface, before.rgb.mix(textureLoad(scattered, pixel).rgb, share), vec3(0)).toVar();
+    const diffuse = select(subsurface, mix(before.rgb, textureLoad(scattered, pixel).rgb, share), vec3(0)).toVar();
     const result = light.rgb.add(diffuse).toVar();
     If(is(view, DEBUG_VIEW.DIFFUSE), () => { result.assign(diffuse); });
     If(is(view, DEBUG_VIEW.SPECULAR), () => { result.assign(select(subsurface, light.rgb, vec3(0))); });
