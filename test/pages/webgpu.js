@@ -9,6 +9,8 @@ import { flatScene } from './flatScene.js';
 import { HEAD_WORLD_UNIT_IN_MM, setLightDirection } from '/demo/headScene.js';
 import { headRig } from './headRig.js';
 import './lab.js'; // window.lab: the WebGL pipeline's side of the comparisons
+import { estimatePixelsPerMm } from '/src/framePlan.js';
+import { distanceForScale, dollyDirection, placeOnDolly, scatteringSignal, dollyDepartures } from './dolly.js';
 
 /** A WebGPURenderer on an offscreen canvas of `width` × `height` device pixels, initialised. */
 async function createRenderer(width, height, { backend = 'webgpu', ...parameters } = {}) {
@@ -369,5 +371,66 @@ async function labScenePlain({ backend = 'webgpu', width = 96, height = 54, scen
   return image;
 }
 
-window.wgpu = { THREE, NODE, pass, createRenderer, readFloats, subsurfacePipeline, flat, disposeFlatRig, head, disposal, plainDraw, debugViews, labScene, labScenePlain, lightDepthCards };
+/** The head for the stability test (test/browser/webgpu/webgpuStability.test.js): the node, float, one dolly (dolly.js). */
+let dollyRig = null;
+
+async function dollyOpen({ width, height, fovDeg, lightAzimuthDeg = 30, backend = 'webgpu', sss = {} }) {
+  const key = JSON.stringify([width, height, lightAzimuthDeg, backend, sss]);
+  if (dollyRig?.key === key) { // the same node, zoomed: nothing compiles again
+    dollyRig.rig.camera.fov = fovDeg;
+    dollyRig.rig.camera.updateProjectionMatrix();
+    return { isStandIn: dollyRig.rig.isStandIn };
+  }
+  dollyClose();
+  const rig = await headRig(width / height, fovDeg);
+  setLightDirection(rig, lightAzimuthDeg, 25);
+  rig.camera.far = 2000; // the dolly goes far
+  rig.camera.updateProjectionMatrix();
+  const renderer = await createRenderer(width, height, { backend });
+  rig.head.material = NODE.subsurfaceMaterial(rig.head.material, { widthMm: 1 });
+  const built = subsurfacePipeline(renderer, rig.scene, rig.camera, { type: THREE.FloatType, sss: { worldUnitInMm: HEAD_WORLD_UNIT_IN_MM, light: rig.light, ...sss } });
+  const target = new THREE.RenderTarget(width, height, { type: THREE.FloatType });
+  dollyRig = { key, rig, renderer, built, target, direction: dollyDirection(rig.camera), width, height };
+  return { isStandIn: rig.isStandIn };
+}
+
+/** The node's plan's scale at `distance` (its own estimate: the head's box, widthMm 1). */
+function dollyScaleAt(distance) {
+  const { rig, direction, width, height } = dollyRig;
+  placeOnDolly(rig.camera, direction, distance);
+  return estimatePixelsPerMm([rig.head], rig.camera, { width, height }, () => 1 / HEAD_WORLD_UNIT_IN_MM);
+}
+
+/** Frames at each of `pixelsPerMm` (dolly.js's dollyDepartures over them) and each frame's plan. */
+async function dollyFrames(scales) {
+  const { rig, renderer, built, target, direction } = dollyRig;
+  const frames = [];
+  for (const pixelsPerMm of scales) {
+    placeOnDolly(rig.camera, direction, distanceForScale(dollyScaleAt, pixelsPerMm));
+    renderer.setRenderTarget(target);
+    built.pipeline.render();
+    renderer.setRenderTarget(null);
+    const split = built.scenePass.renderTarget;
+    const signal = scatteringSignal(await readFloats(renderer, target), await readFloats(renderer, split, NODE.ATTACHMENT_NAMES.COLOR), await readFloats(renderer, split, NODE.ATTACHMENT_NAMES.DIFFUSE));
+    const { groupings, ...plan } = built.node.plan;
+    frames.push({ ...signal, plan });
+  }
+  return { ...dollyDepartures(frames), plans: frames.map((f) => f.plan) };
+}
+
+function dollyClose() {
+  if (!dollyRig) return;
+  const { renderer, built, target } = dollyRig;
+  built.node.dispose();
+  built.pipeline.dispose();
+  built.scenePass.dispose();
+  target.dispose();
+  renderer.dispose();
+  dollyRig = null;
+}
+
+window.wgpu = {
+  THREE, NODE, pass, createRenderer, readFloats, subsurfacePipeline, flat, disposeFlatRig, head, disposal, plainDraw, debugViews, labScene, labScenePlain, lightDepthCards,
+  dollyOpen, dollyFrames, dollyClose,
+};
 window.testReady = true;
