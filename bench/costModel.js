@@ -23,7 +23,7 @@ export const TARGETS = Object.freeze([
   { name: 'diffuse (multi-target 1)', format: 'rgba16f', carriedFormat: 'rgba32f', multisampled: true, carriedWithMsaa: false },
   { name: 'surface (multi-target 2)', format: 'rg32f', multisampled: true },
   { name: 'depth (multi-target)', format: 'depth24', multisampled: true },
-  // RGBA32F while it carries the depth (BlurStage.lightCarriesDepth, the default), else the pipeline's type.
+  // RGBA32F: it carries the depth to the vertical pass.
   { name: 'horizontal blur', format: 'rgba16f', carriedFormat: 'rgba32f', multisampled: false },
   { name: 'horizontal blur, isotropic groups (two attachments; built when groups are possible)', format: 'rgba32ui', attachments: 2, multisampled: false, groups: true },
   { name: 'scattered light', format: 'rgba16f', multisampled: false },

@@ -181,7 +181,7 @@ async function autoTaps() {
       max = Math.max(max, taps);
       min = Math.min(min, taps);
       // Footprints one pixel wide, snapped as the shader snaps them: their two taps sit on texel
-      // centres (one texel fetched each with blur.skipsEmptyTexels).
+      // centres (one texel fetched each).
       for (let k = 0, lastEdge = 0; k < (taps - 1) / 2; k++) {
         const edgeMm = data[2 * (row * columns + k)];
         if (!Number.isFinite(edgeMm)) break; // the tail

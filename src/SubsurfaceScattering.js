@@ -99,11 +99,6 @@ export class SubsurfaceScattering extends Pass {
     this.clear = true;
     /** As RenderPass: with clear false, true ignores the target's earlier depth. */
     this.clearDepth = false;
-    /**
-     * Documented-internal switch (the bench turns it off for one measure: what the skip saves):
-     * the light depth pass is skipped while the light reaches no subsurface mesh from behind.
-     */
-    this.skipsUnreadLightDepth = true;
     this._clearColor = null;
     this._clearAlpha = null;
     this._scene = o.scene;
@@ -128,7 +123,6 @@ export class SubsurfaceScattering extends Pass {
     // Stages 2, 3 and 4.
     /** @internal */
     this.scenePass = new SubsurfaceScenePass(o.scene, o.camera, { type: o.type, owner: this });
-    this.scenePass.diffuseCarriesDepth = true; // without MSAA: the blur's taps read light and depth in one fetch
     /** @internal */
     this.blur = new BlurStage({
       type: o.type, profileLookup: this.profileLookup, method: o.method, samples: o.samples, strength: o.strength, falloff: o.falloff, kernelGroups: o.kernelGroups,
@@ -145,7 +139,6 @@ export class SubsurfaceScattering extends Pass {
       scatteredTexture: this.blur.scatteredTarget.texture,
       depthTexture: this.scenePass.depthTexture,
     });
-    this.composePass.maskFromScattered = true; // its blur writes the mask into the scattered light's alpha
     this._debug = { view: 'final', depthRange: 100, thicknessRangeMm: 10 };
     /** @internal The materials made subsurface through this pipeline (see makeSubsurface; `materials` is the public view). */
     this.subsurfaceMaterials = new PipelineMaterials(this, () => ({
@@ -390,7 +383,7 @@ export class SubsurfaceScattering extends Pass {
     checks.end();
     // 1. Light depth: linear depth seen from the light, for transmittance (not for a light that is
     //    off, nor one that reaches no subsurface mesh from behind: its map would go unread).
-    if (lightWorks && isShining(this.lightDepth.light, scene, camera) && (!this.skipsUnreadLightDepth || this._transmits(scene, camera))) {
+    if (lightWorks && isShining(this.lightDepth.light, scene, camera) && this._transmits(scene, camera)) {
       this._stage('lightDepth', () => this.lightDepth.render(renderer, scene));
     } else {
       this.lightDepth?.invalidate();
@@ -431,7 +424,6 @@ export class SubsurfaceScattering extends Pass {
    * @param {import('three').WebGLRenderer} renderer
    */
   renderScattering(renderer) {
-    this.blur.diffuseCarriesDepth = this.scenePass.diffuseHoldsDepth; // its layout, as MSAA and the switch left it
     this.blur.render(renderer, this.camera, (stage, draw) => this._stage(stage, draw), this.plan, this.scenePass.subsurfaceBox);
   }
 
@@ -667,8 +659,8 @@ export class SubsurfaceScattering extends Pass {
   }
 }
 
-// enabled, needsSwap, clear and renderToScreen (three's Pass fields), clearDepth and skipsUnreadLightDepth: booleans only.
-booleanFields(SubsurfaceScattering.prototype, [...PASS_BOOLEANS, 'clearDepth', 'skipsUnreadLightDepth']);
+// enabled, needsSwap, clear and renderToScreen (three's Pass fields) and clearDepth: booleans only.
+booleanFields(SubsurfaceScattering.prototype, [...PASS_BOOLEANS, 'clearDepth']);
 // 0.1's `enabled = false` turned the blur off; now it skips the pass. Said once where it freezes the frame.
 warnWhenDisabledFreezes(SubsurfaceScattering.prototype, 'SubsurfaceScattering: enabled is false and nothing else draws its ' +
   'scene, so the composer shows the last frame it drew, frozen (enabled = false skips the pass, as for any pass). To turn ' +

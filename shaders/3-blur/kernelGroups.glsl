@@ -13,15 +13,15 @@
 //   tGroups0: rgb = packHalf2x16(group 1, group 2) of that channel, a = the coverage's bits;
 //   tGroups1: rgb = packHalf2x16(group 3, group 4) of that channel, a = the coverage's bits again
 //             (SSS_GROUPS > 2 only; the footprints past groups 1 and 2's reach read it alone).
-// With SSS_GROUP_DEPTH (SSS_GROUPS_CARRY_DEPTH without MSAA, where the coverage is 1 on the mask
-// and 0 off it) both alphas carry the centre's linear depth instead, as the one-kernel hand-off
-// does (shaders/common/carriedDepth.glsl: 0 off the mask): the vertical pass's taps then read no
-// surface texel (BlurStage.groupsCarryDepth).
+// With SSS_GROUP_DEPTH (without MSAA, where the coverage is 1 on the mask and 0 off it) both
+// alphas carry the centre's linear depth instead, as the one-kernel hand-off does
+// (shaders/common/carriedDepth.glsl: 0 off the mask): the vertical pass's taps then read no
+// surface texel with one profile.
 // The groups are four named vec3s (unused ones compiled out), never an array, and SSS_GROUPS is a
 // define with one program per count (SubsurfaceBlurPass): on SwiftShader an array of groups measured
 // 9x the one-kernel blur's time, and a uniform count's branches another 1.3x.
 
-#if SSS_GROUPS_CARRY_DEPTH == 1 && SSS_COVERAGE == 0
+#if SSS_COVERAGE == 0
 	#define SSS_GROUP_DEPTH 1
 #else
 	#define SSS_GROUP_DEPTH 0

@@ -8,8 +8,8 @@
 // one kernel; 2..4: the isotropic blur's groups, 'footprint' only, shaders/3-blur/kernelGroups.glsl:
 // the horizontal pass then writes the groups, the vertical one sums them), SSS_LIGHT_DEPTH (1: the
 // light read carries the depth in its alpha, one fetch per tap instead of two:
-// shaders/common/surfaceSample.glsl), SSS_WRITES_DEPTH (1, one kernel: the horizontal pass writes
-// its light that way for the vertical one) and KERNEL_MODE:
+// shaders/common/surfaceSample.glsl; the horizontal pass of one kernel writes its light that way
+// for the vertical one) and KERNEL_MODE:
 //   KERNEL_MODE_TAPS: fixed weights and offsets (computeKernel's reference or marginal kernel);
 //   KERNEL_MODE_FOOTPRINT: per pixel, footprints of whole pixels from the FootprintTable, weighted
 //     by the profile marginal's exact energy from the ProfileLookup.
@@ -112,8 +112,8 @@ float sssLinearTap( const in float offsetPx, const in ivec2 pixel, const in floa
 	float weight0 = ( 1.0 - fraction ) * sssTapWeight( texel0, centreDepth + slope * float( texel0[ AXIS ] - pixel[ AXIS ] ), centre, colour0 );
 	float weight1 = 0.0;
 	// A tap on a texel centre (every footprint one pixel wide: most of them at small scales) weighs
-	// its second texel 0: not fetching it gives the same sums (SSS_SKIP_EMPTY_TEXELS 0: fetched).
-	if ( SSS_SKIP_EMPTY_TEXELS == 0 || fraction > 0.0 ) weight1 = fraction * sssTapWeight( texel1, centreDepth + slope * float( texel1[ AXIS ] - pixel[ AXIS ] ), centre, colour1 );
+	// its second texel 0: not fetching it gives the same sums.
+	if ( fraction > 0.0 ) weight1 = fraction * sssTapWeight( texel1, centreDepth + slope * float( texel1[ AXIS ] - pixel[ AXIS ] ), centre, colour1 );
 	light = colour0 * weight0 + colour1 * weight1;
 	return weight0 + weight1;
 }
@@ -186,7 +186,7 @@ void addTap( const in float offsetPx, const in vec3 weight, const in ivec2 pixel
 			light2 = light3 = vec3( 0.0 );
 			if ( ! sssTapTexels( offsetPx, pixel, texel0, texel1, fraction ) ) return 0.0;
 			float kept = sssAddFarTexel( texel0, 1.0 - fraction, centreDepth + slope * float( texel0[ AXIS ] - pixel[ AXIS ] ), centre2, centre3, light2, light3 );
-			if ( SSS_SKIP_EMPTY_TEXELS == 0 || fraction > 0.0 ) kept += sssAddFarTexel( texel1, fraction, centreDepth + slope * float( texel1[ AXIS ] - pixel[ AXIS ] ), centre2, centre3, light2, light3 );
+			if ( fraction > 0.0 ) kept += sssAddFarTexel( texel1, fraction, centreDepth + slope * float( texel1[ AXIS ] - pixel[ AXIS ] ), centre2, centre3, light2, light3 );
 			return kept;
 		}
 	#endif
@@ -201,7 +201,7 @@ void addTap( const in float offsetPx, const in vec3 weight, const in ivec2 pixel
 		if ( ! sssTapTexels( offsetPx, pixel, texel0, texel1, fraction ) ) return 0.0;
 		float kept = sssAddGroupTexel( texel0, 1.0 - fraction, centreDepth + slope * float( texel0[ AXIS ] - pixel[ AXIS ] ), centre0, centre1, centre2, centre3, light0, light1, light2, light3 );
 		// A tap on a texel centre weighs its second texel 0 (as sssLinearTap).
-		if ( SSS_SKIP_EMPTY_TEXELS == 0 || fraction > 0.0 ) kept += sssAddGroupTexel( texel1, fraction, centreDepth + slope * float( texel1[ AXIS ] - pixel[ AXIS ] ), centre0, centre1, centre2, centre3, light0, light1, light2, light3 );
+		if ( fraction > 0.0 ) kept += sssAddGroupTexel( texel1, fraction, centreDepth + slope * float( texel1[ AXIS ] - pixel[ AXIS ] ), centre0, centre1, centre2, centre3, light0, light1, light2, light3 );
 		return kept;
 	}
 #endif
@@ -251,10 +251,11 @@ float sssAxisStep( const in ivec2 pixel, const in vec2 surface, out float slope 
 #endif
 
 #if SSS_GROUPS == 1
-// A subsurface pixel's result: premultiplied by its coverage (sssCovered) or, from the horizontal
-// pass with SSS_WRITES_DEPTH, as it is with the centre's depth in the alpha (surfaceSample.glsl).
+// A subsurface pixel's result: from the horizontal pass as it is with the centre's depth in the
+// alpha (carriedDepth.glsl: the vertical taps fetch one texel, not two), from the vertical one
+// premultiplied by its coverage (sssCovered), as the compose reads it.
 vec4 sssBlurOutput( const in vec3 colour, const in float coverage, const in float depth ) {
-	#if SSS_WRITES_DEPTH == 1
+	#if AXIS == 0
 		return vec4( colour, sssCarriedDepth( depth ) );
 	#else
 		return sssCovered( colour, coverage );

@@ -12,15 +12,11 @@ import { computeKernel, kernelRadiusMm } from '../profiles/kernel.js';
 import { getProfile } from '../profiles/presets.js';
 import { AUTO_SAMPLES, METHOD_TABLE, PIPELINE_SCHEMA, checkOption } from '../options.js';
 import { blurModeOf, checkProfileCount, planBlur } from './blurPlan.js';
-import { booleanFields } from '../support/booleanFields.js';
-import { checkBoolean } from '../support/parameterChecks.js';
-import { setDefines } from '../support/glsl.js';
 import { SubsurfaceBlurPass } from './SubsurfaceBlurPass.js';
 import { DenseSubsurfacePass } from './DenseSubsurfacePass.js';
 import { KernelGroupTable } from './KernelGroupTable.js';
 import { MAX_KERNEL_GROUPS, checkKernelGroups, kernelGroupsAt } from './kernelGroups.js';
 import { tableOf } from '../profiles/FootprintTable.js';
-import { setTextureType } from '../support/textureType.js';
 
 const TRANSPARENT_BLACK = new Float32Array(4);
 const ZERO_UINTS = new Uint32Array(4);
@@ -52,8 +48,7 @@ const KERNEL_SETTINGS = Object.freeze(['method', 'samples', 'strength', 'falloff
 export class BlurStage {
   /**
    * @param {object} options
-   * @param {number} options.type HalfFloatType or FloatType for the scattered light (and the
-   *   horizontal pass's output when it does not carry the depth: then 32-bit float)
+   * @param {number} options.type HalfFloatType or FloatType for the scattered light
    * @param {import('../profiles/ProfileLookup.js').ProfileLookup} options.profileLookup the first
    *   profile's tables (setProfiles gives the frame's profiles)
    * @param {import('../options.js').Method} options.method
@@ -73,9 +68,8 @@ export class BlurStage {
     this._settings = { profile: profileLookup.profile, method: checkOption(PIPELINE_SCHEMA, 'method', method), samples, strength, falloff };
     this._kernels = new WeakMap(); // profile → computed kernels by their arguments: 'auto' switches between a few
     this._surface = surface;
-    this._type = type;
     // Nearest: the passes fetch texels, and a 32-bit float target stays complete without float filtering.
-    this._blurTarget = new WebGLRenderTarget(1, 1, { type: FloatType, depthBuffer: false, minFilter: NearestFilter, magFilter: NearestFilter }); // it carries the depth (lightCarriesDepth)
+    this._blurTarget = new WebGLRenderTarget(1, 1, { type: FloatType, depthBuffer: false, minFilter: NearestFilter, magFilter: NearestFilter }); // 32 bits: it carries the depth
     this._blurTarget.texture.name = 'subsurface.horizontal';
     this._kernelGroups = checkKernelGroups(kernelGroups);
     this._checkGroupsMethod(method, this._kernelGroups);
@@ -93,14 +87,7 @@ export class BlurStage {
     this._densePass = null; // built when first asked for
     this._size = { width: 1, height: 1 };
     this._multisampled = false;
-    /**
-     * Documented-internal switch (issue 19; the bench undoes it for one measure): the passes are
-     * scissored to the subsurface pixels' screen box (render's `box`). false: the whole frame.
-     */
-    this.confineToSubsurface = true;
-    this._skipsEmptyTexels = true;
-    this.lightCarriesDepth = true;
-    this.groupsCarryDepth = true;
+    this._applyCarriedDepth();
     this._scissorKey = null; // the box the targets were last scissored to ('full' or x,y,w,h)
     /** The kernel the separable passes hold (computeKernel's layout). */
     this.kernel = firstKernel;
@@ -125,73 +112,16 @@ export class BlurStage {
   }
 
   /**
-   * Documented-internal switch (issue 19; the bench undoes it for one measure): true (default)
-   * fetches only the texels a tap weighs (a tap on a texel centre weighs one, not two); false
-   * fetches both, as before. The sums, and so the image, are the same.
-   * @type {boolean}
+   * Which light carries the depth in its alpha (shaders/common/carriedDepth.glsl): the
+   * multi-target's diffuse without MSAA (with it the alpha is the coverage:
+   * src/2-scene-split/subsurfaceTarget.js), read by the horizontal pass and the dense reference; and
+   * the horizontal pass's output always, read by the vertical pass (with MSAA the coverage then
+   * comes from the multi-target's diffuse).
    */
-  get skipsEmptyTexels() { return this._skipsEmptyTexels; }
-
-  set skipsEmptyTexels(enabled) {
-    this._skipsEmptyTexels = checkBoolean('BlurStage.skipsEmptyTexels', enabled);
-    for (const pass of [this.horizontalPass, this.verticalPass]) setDefines(pass.material, { SSS_SKIP_EMPTY_TEXELS: enabled ? 1 : 0 });
-  }
-
-  /**
-   * Documented-internal switch (issue 19; the bench undoes it for one measure): true (default)
-   * hands the depth from the horizontal pass to the vertical one in the light's alpha (a 32-bit
-   * float target), so each vertical tap fetches one texel instead of two (light, surface);
-   * false: the horizontal target in the pipeline's `type`, premultiplied by the coverage, as before.
-   * With a float `type` and no MSAA the image is the same to the bit (with MSAA to about an ulp:
-   * light × coverage / coverage); with a half-float `type` the light between the passes now
-   * keeps 32 bits instead of 16. Several profiles still fetch the surface per tap (the slot).
-   * @type {boolean}
-   */
-  get lightCarriesDepth() { return this.horizontalPass.writesDepth; }
-
-  set lightCarriesDepth(enabled) {
-    checkBoolean('BlurStage.lightCarriesDepth', enabled);
-    if (enabled === this.lightCarriesDepth) return;
-    this.horizontalPass.setWritesDepth(enabled);
-    this._applyCoverage();
-    if (setTextureType(this._blurTarget, this._blurTarget.texture, enabled ? FloatType : this._type)) this._scissorKey = null; // cleared again
-  }
-
-  /**
-   * Documented-internal switch (issue 20's cost; the bench undoes it for one measure): true
-   * (default) has the isotropic blur's groups carry the depth between the passes without MSAA (the
-   * group target's alphas hold it instead of the coverage, which is 1 on the mask there), so a
-   * vertical tap reads the groups' texels and, with one profile, no surface texel (several still
-   * read it for the slot); false reads the surface, as before.
-   * With MSAA the coverage is needed and the surface is read either way. The same image.
-   * @type {boolean}
-   */
-  get groupsCarryDepth() { return this.horizontalPass.groupsCarryDepth; }
-
-  set groupsCarryDepth(enabled) {
-    checkBoolean('BlurStage.groupsCarryDepth', enabled);
-    for (const pass of [this.horizontalPass, this.verticalPass]) pass.setGroupsCarryDepth(enabled);
-  }
-
-  /**
-   * Whether the multi-target's diffuse alpha is the depth (SubsurfaceScenePass.diffuseHoldsDepth,
-   * which the orchestrator hands on every frame): the horizontal pass and the dense reference then
-   * read light and depth in one fetch per tap.
-   * @type {boolean}
-   */
-  get diffuseCarriesDepth() { return this.horizontalPass.lightCarriesDepth; }
-
-  set diffuseCarriesDepth(enabled) {
-    checkBoolean('BlurStage.diffuseCarriesDepth', enabled);
-    if (enabled === this.diffuseCarriesDepth) return;
-    this.horizontalPass.setLightCarriesDepth(enabled);
-    this._densePass?.setLightCarriesDepth(enabled);
-  }
-
-  /** The vertical pass reads a carried depth (lightCarriesDepth), with MSAA the coverage from the multi-target's diffuse. */
-  _applyCoverage() {
-    const carried = this.lightCarriesDepth;
-    this.verticalPass.setLightCarriesDepth(carried, carried && this._multisampled ? this._surface.diffuseTexture : null);
+  _applyCarriedDepth() {
+    this.horizontalPass.setLightCarriesDepth(!this._multisampled);
+    this._densePass?.setLightCarriesDepth(!this._multisampled);
+    this.verticalPass.setLightCarriesDepth(true, this._multisampled ? this._surface.diffuseTexture : null);
   }
 
   /**
@@ -228,7 +158,7 @@ export class BlurStage {
       this._densePass = new DenseSubsurfacePass({ ...this._surface, profile: this._settings.profile, maxRadiusPx: DENSE_MAX_RADIUS_PX });
       this._densePass.setSize(this._size.width, this._size.height);
       this._densePass.setMultisampled(this._multisampled);
-      this._densePass.setLightCarriesDepth(this.diffuseCarriesDepth);
+      this._densePass.setLightCarriesDepth(!this._multisampled);
     }
     return this._densePass;
   }
@@ -313,7 +243,7 @@ export class BlurStage {
     if (this.groupCapacity > 1) this._ensureGroupTarget();
     else if (this._groupTarget) this._freeGroupTarget(); // back to one kernel: its 32 B per pixel go
     // The scissor's clears (when the box moved) are timed with the first pass.
-    const scissored = () => this._scissor(renderer, this.confineToSubsurface ? box : null);
+    const scissored = () => this._scissor(renderer, box);
     if (plan.passes === 'dense') {
       timed('dense', () => { scissored(); this.densePass.render(renderer, this.scatteredTarget, null); });
     } else {
@@ -518,7 +448,7 @@ export class BlurStage {
   setMultisampled(multisampled) {
     for (const pass of this.surfacePasses) pass.setMultisampled(multisampled);
     this._multisampled = multisampled;
-    this._applyCoverage();
+    this._applyCarriedDepth();
   }
 
   /** @param {number} width device pixels @param {number} height device pixels */
@@ -539,5 +469,3 @@ export class BlurStage {
     this.scatteredTarget.dispose();
   }
 }
-
-booleanFields(BlurStage.prototype, ['confineToSubsurface']);

@@ -92,7 +92,7 @@ export class SubsurfaceBlurPass extends SurfacePass {
       name: `SubsurfaceBlurPass(${direction})`,
       fragmentShader: blurGlsl,
       chunks: CHUNKS,
-      defines: { AXIS: DIRECTIONS.indexOf(direction), SAMPLES: 1, SSS_SKIP_EMPTY_TEXELS: 1, SSS_WRITES_DEPTH: 0, SSS_GROUPS_CARRY_DEPTH: 0, SSS_GROUPS: 1, SSS_MAX_GROUPS: MAX_KERNEL_GROUPS, ...FOOTPRINT_DEFINES, ...enumDefines('KERNEL_MODE', KERNEL_MODES, mode) },
+      defines: { AXIS: DIRECTIONS.indexOf(direction), SAMPLES: 1, SSS_GROUPS: 1, SSS_MAX_GROUPS: MAX_KERNEL_GROUPS, ...FOOTPRINT_DEFINES, ...enumDefines('KERNEL_MODE', KERNEL_MODES, mode) },
       uniforms: {
         kernel: { value: new Float32Array(4) },
         tapCount: { value: 1 },
@@ -115,10 +115,11 @@ export class SubsurfaceBlurPass extends SurfacePass {
     this.material.glslVersion = GLSL3;
     /** This frame's groups (setGroupFrame): 1 blurs with `material`, more with its variant for that count. */
     this.groups = 1;
-    /** Whether the pass writes its light with the depth in the alpha (setWritesDepth). */
-    this.writesDepth = false;
     this._groupMaterials = new Map(); // count → the material compiled with SSS_GROUPS count
     this.direction = direction;
+    // One kernel's horizontal pass writes its light with the depth in the alpha (a 32-bit float
+    // target), so the vertical pass reads it as carried light (setLightCarriesDepth's coverage with MSAA).
+    if (direction === 'vertical') this.setLightCarriesDepth(true);
     this.mode = mode;
     /** The footprint allocation for the profile and the kernel's tap count ('footprint' mode). */
     this.footprintTable = profileLookup ? new FootprintTable(profileLookup) : null;
@@ -155,34 +156,6 @@ export class SubsurfaceBlurPass extends SurfacePass {
     this.uniforms.tGroups1.value = groups[1] ?? null;
   }
 
-  /**
-   * Whether the pass writes its light with the depth in the alpha (one kernel; the horizontal pass
-   * for a vertical one with setLightCarriesDepth): the light with the coverage divided out and the
-   * centre's linear depth as shaders/common/carriedDepth.glsl says, into a 32-bit float target.
-   * Off (the default): premultiplied by the coverage, the mask in the alpha. The groups' variants
-   * write their own target either way.
-   * @param {boolean} enabled
-   */
-  setWritesDepth(enabled) {
-    checkBoolean('SubsurfaceBlurPass.setWritesDepth enabled', enabled);
-    setDefines(this.material, { SSS_WRITES_DEPTH: enabled ? 1 : 0 });
-    this.writesDepth = enabled;
-  }
-
-  /**
-   * The isotropic blur's groups (SSS_GROUPS > 1) without MSAA: whether the group target's alphas
-   * carry the centre's depth instead of the coverage (shaders/3-blur/kernelGroups.glsl), so the
-   * vertical pass's taps read no surface texel. Both passes must agree (BlurStage sets them).
-   * @param {boolean} enabled
-   */
-  setGroupsCarryDepth(enabled) {
-    checkBoolean('SubsurfaceBlurPass.setGroupsCarryDepth enabled', enabled);
-    setDefines(this.material, { SSS_GROUPS_CARRY_DEPTH: enabled ? 1 : 0 });
-  }
-
-  /** Whether the groups carry the depth (setGroupsCarryDepth). */
-  get groupsCarryDepth() { return this.material.defines.SSS_GROUPS_CARRY_DEPTH === 1; }
-
   /** The material of this frame's groups: `material`, or its variant for the count (defines synced, uniforms shared). */
   _groupMaterial() {
     if (this.groups === 1) return this.material;
@@ -194,8 +167,8 @@ export class SubsurfaceBlurPass extends SurfacePass {
       variant = new ShaderMaterial({ name, vertexShader, fragmentShader, glslVersion, uniforms, defines: { ...this.material.defines } });
       this._groupMaterials.set(this.groups, variant);
     }
-    // The groups have their own target: the vertical pass reads them, not a carried depth.
-    setDefines(variant, { ...this.material.defines, SSS_GROUPS: this.groups, SSS_WRITES_DEPTH: 0, ...(this.direction === 'vertical' ? { SSS_LIGHT_DEPTH: 0 } : {}) });
+    // The groups have their own target: the vertical pass reads them, not the carried light.
+    setDefines(variant, { ...this.material.defines, SSS_GROUPS: this.groups, ...(this.direction === 'vertical' ? { SSS_LIGHT_DEPTH: 0 } : {}) });
     return variant;
   }
 

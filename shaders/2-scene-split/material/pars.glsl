@@ -6,7 +6,6 @@ layout( location = SSS_DIFFUSE_LOCATION ) out highp vec4 sssDiffuseOutput; // di
 layout( location = SSS_SURFACE_LOCATION ) out highp vec4 sssSurfaceOutput; // r: linear view depth, g: world units per profile mm, b: profile slot
 
 uniform bool sssSplit;       // true only while drawn into the multi-target's split call
-uniform bool sssDepthOnly;   // true in the scene pass's first call: lay down depth, shade nothing
 uniform float sssWidthWorld; // widthMm / worldUnitInMm: world units per profile millimetre
 uniform float sssWidthScale; // 0..1, scales the width (0 = no scattering, the light kept)
 uniform int sssDebugOutput;  // what the diffuse attachment holds: SSS_OUTPUT_DIFFUSE, _TRANSMITTANCE or _THICKNESS (mm)

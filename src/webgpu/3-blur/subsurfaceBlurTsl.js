@@ -84,8 +84,7 @@ export function subsurfaceBlurNode(o) {
       const offset1 = float(at1.sub(along(pixel, axis)));
       const tap0 = tapWeight(withAlong(pixel, axis, at0), centreDepth.add(slope.mul(offset0)), centres);
       const weight0 = fraction.oneMinus().mul(tap0.weight).toVar();
-      // A tap on a texel centre weighs its second texel 0: not fetched (subsurfaceBlur.frag.glsl's
-      // SSS_SKIP_EMPTY_TEXELS; the same sums).
+      // A tap on a texel centre weighs its second texel 0: not fetched (the same sums).
       const weight1 = float(0).toVar();
       const colours1 = lights.map(() => vec3(0).toVar());
       If(fraction.greaterThan(0), () => {
