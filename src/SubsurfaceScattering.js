@@ -38,7 +38,6 @@ import { PipelineMaterials } from './2-scene-split/PipelineMaterials.js';
 import { checkTransmittanceSwitch, isShining, lightReachesFromBehind } from './2-scene-split/transmittanceModel.js';
 import { SubsurfaceScenePass } from './2-scene-split/SubsurfaceScenePass.js';
 import { BlurStage } from './3-blur/BlurStage.js';
-import { checkProfileCount } from './3-blur/blurPlan.js';
 import { SubsurfaceComposePass } from './4-compose/SubsurfaceComposePass.js';
 import { materialOutputOf } from './4-compose/debugViews.js';
 
@@ -54,7 +53,7 @@ export { MIN_KERNEL_PIXELS } from './3-blur/samplingModel.js';
  * @property {import('three').SpotLight|import('three').DirectionalLight|null} [light=null] the light shining through thin parts (transmittance); null: no transmittance
  * @property {number} [worldUnitInMm=1000] millimetres per world unit (three.js: metres, 1000)
  * @property {import('./options.js').ProfileName|object} [profile='skin'] a preset's name ('skin', 'skinBurley', 'marble', 'milk') or a profile object (burleyProfile, dipoleProfile, gaussianSumProfile)
- * @property {import('./options.js').Method} [method='footprint'] how the blur weighs its taps: 'footprint', 'marginal', 'reference' or 'dense' (METHOD_TABLE)
+ * @property {import('./options.js').Method} [method='footprint'] how the blur weighs its taps: 'footprint', 'marginal' or 'reference' (METHOD_TABLE)
  * @property {number|'auto'} [samples='auto'] taps per direction, odd, 3..63 (a budget for 'footprint'); 'auto': as few as the on-screen scale needs
  * @property {number|'auto'} [kernelGroups=1] method 'footprint': 1, one separable kernel (exact along the screen axes only; the fast blur); 'auto' or 2..4: the profile's Gaussians blurred in groups, the same in every direction, at 1.7 (two groups) to 3 (four) times the blur's time on SwiftShader ('auto': one group where one is within the isotropy budget, a far head, else 4)
  * @property {number[]} [strength] RGB, 0..1: mix with no scattering (the reference model)
@@ -75,7 +74,7 @@ export { MIN_KERNEL_PIXELS } from './3-blur/samplingModel.js';
  * @property {boolean} [transmittance=true] light through thin parts (with the pipeline's light)
  * @property {number} [translucency=0] 0..1 (exclusive): light through regardless of thickness
  * @property {number} [shrinkMm=0.6] how far the light depth lookup moves inwards, mm (0..1000)
- * @property {import('./options.js').ProfileName|object|null} [profile] this material's diffusion profile, as the pipeline's `profile` (left out: as before, at first the pipeline's; null: back to the pipeline's); up to 8 per pipeline, not with method 'dense'
+ * @property {import('./options.js').ProfileName|object|null} [profile] this material's diffusion profile, as the pipeline's `profile` (left out: as before, at first the pipeline's; null: back to the pipeline's); up to 8 per pipeline
  * @property {number} [strength] widthScale's old name
  */
 // </options-typedef>
@@ -520,7 +519,7 @@ export class SubsurfaceScattering extends Pass {
    * @private
    */
   _checkProfiles(method, profiles, fallback, caller) {
-    checkProfileCount(method, profileSlots(profiles, fallback, caller).profiles.length);
+    this.blur.checkProfileCount(method, profileSlots(profiles, fallback, caller).profiles.length);
   }
 
   /**
@@ -583,7 +582,7 @@ export class SubsurfaceScattering extends Pass {
   get horizontalPass() { return this.blur.horizontalPass; }
   /** @internal */
   get verticalPass() { return this.blur.verticalPass; }
-  /** @internal The dense 2D reference (method 'dense'), built on first use. */
+  /** @internal The dense 2D reference (internals' useDenseReference), built on first use. */
   get densePass() { return this.blur.densePass; }
   /** @internal The last frame's scattered diffuse light. */
   get scatteredTarget() { return this.blur.scatteredTarget; }

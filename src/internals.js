@@ -11,7 +11,7 @@ export {
 export { planBlur, autoSampleCount, BLUR_MODES } from './3-blur/blurPlan.js';
 export { planFrame, estimatePixelsPerMm, nearestViewDepth } from './framePlan.js';
 export { MIN_KERNEL_PIXELS } from './3-blur/samplingModel.js';
-export { BlurStage } from './3-blur/BlurStage.js';
+export { BlurStage, useDenseReference } from './3-blur/BlurStage.js';
 
 // Stage 2's draw phases and stage 3's modes.
 export { DRAW_PHASES } from './2-scene-split/subsurfaceTarget.js';

@@ -16,27 +16,25 @@ import {
 /**
  * How the blur weighs its taps, and what each method needs:
  * - kernel: which computeKernel method builds the separable passes' taps ('marginal' or 'reference');
- * - blur: the blur stage's mode ('footprint' or 'taps' of SubsurfaceBlurPass, or 'dense' for
- *   DenseSubsurfacePass instead of the two separable passes); src/3-blur/blurPlan.js dispatches on it;
+ * - blur: the mode of SubsurfaceBlurPass ('footprint' or 'taps'); src/3-blur/blurPlan.js dispatches on it;
  * - profiles: how many profiles (materials' `profile`) it blurs in one frame: 'footprint' reads each
  *   pixel's own tables, 'marginal' its own kernel; 'reference' blurs every profile with its built-in
- *   kernel (the profile drives transmittance only); 'dense' holds one profile's table.
+ *   kernel (the profile drives transmittance only).
  * 'footprint' (default): per pixel, footprints of whole pixels weighed exactly (the sampling model,
  * item 8, in docs/ARCHITECTURE.md, "Stage 3: the sampling model"); 'marginal' and 'reference':
- * computeKernel's fixed taps ('reference' is Jimenez 2012's kernel, its profile built in); 'dense':
- * the brute-force 2D reference, for validation only (its cost grows with the square of the
- * on-screen radius).
+ * computeKernel's fixed taps ('reference' is Jimenez 2012's kernel, its profile built in). The dense
+ * 2D reference the tests and the bench validate them against is no method: internals'
+ * useDenseReference.
  */
 export const METHOD_TABLE = Object.freeze({
   footprint: Object.freeze({ kernel: 'marginal', blur: 'footprint', profiles: MAX_PROFILES }),
   marginal: Object.freeze({ kernel: 'marginal', blur: 'taps', profiles: MAX_PROFILES }),
   reference: Object.freeze({ kernel: 'reference', blur: 'taps', profiles: MAX_PROFILES }),
-  dense: Object.freeze({ kernel: 'marginal', blur: 'dense', profiles: 1 }), // the kernel only waits for a switch back
 });
 
 /**
  * How the blur weighs its taps (METHOD_TABLE).
- * @typedef {'footprint'|'marginal'|'reference'|'dense'} Method
+ * @typedef {'footprint'|'marginal'|'reference'} Method
  */
 /**
  * What a tap on another surface does (FOLLOW_SURFACE_MODES).
@@ -163,7 +161,7 @@ export const PIPELINE_SCHEMA = Object.freeze({
   },
   method: {
     default: 'footprint', type: "import('./options.js').Method",
-    doc: "how the blur weighs its taps: 'footprint', 'marginal', 'reference' or 'dense' (METHOD_TABLE)",
+    doc: "how the blur weighs its taps: 'footprint', 'marginal' or 'reference' (METHOD_TABLE)",
     check: (value, name) => checkOneOf(name, value, METHODS),
   },
   samples: {
@@ -245,7 +243,7 @@ export const MATERIAL_SCHEMA = Object.freeze({
   },
   profile: {
     default: undefined, type: "import('./options.js').ProfileName|object|null",
-    doc: `this material's diffusion profile, as the pipeline's \`profile\` (left out: as before, at first the pipeline's; null: back to the pipeline's); up to ${MAX_PROFILES} per pipeline, not with method 'dense'`,
+    doc: `this material's diffusion profile, as the pipeline's \`profile\` (left out: as before, at first the pipeline's; null: back to the pipeline's); up to ${MAX_PROFILES} per pipeline`,
     // null: the pipeline's again (a rebind keeps what it leaves out, so undefined cannot say it).
     check: (value) => (value === null ? undefined : checkProfile(value)),
   },

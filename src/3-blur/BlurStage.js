@@ -1,6 +1,7 @@
 // Stage 3 as the orchestrator runs it: the blur's settings (method, taps, profile, strength,
 // falloff, on or off), its plan for each frame (planBlur, pure, from these settings and the
-// scene's scale), the two separable passes and the dense reference they can be swapped for, and
+// scene's scale), the two separable passes and the dense reference the tests and the bench swap
+// them for (useDenseReference), and
 // the two targets they write (the horizontal pass's output, then the scattered light). One owner:
 // the orchestrator's frame calls `blur.plan(pixelsPerMm)` then `blur.render()`, and its setters
 // forward here. Which method does what is BLUR_MODES's (src/3-blur/blurPlan.js) and METHOD_TABLE's.
@@ -36,7 +37,7 @@ function createGroupTarget() {
   return target;
 }
 
-/** The dense reference's loop bound, pixels of radius (method 'dense' is for validation). */
+/** The dense reference's loop bound, pixels of radius (it is for validation). */
 const DENSE_MAX_RADIUS_PX = 256;
 
 /** What the two separable passes run for a method: footprints snapped to pixels, or fixed taps. */
@@ -85,6 +86,7 @@ export class BlurStage {
     this.horizontalPass = new SubsurfaceBlurPass({ ...blur, direction: 'horizontal' });
     this.verticalPass = new SubsurfaceBlurPass({ ...blur, direction: 'vertical', diffuseTexture: this._blurTarget.texture });
     this._densePass = null; // built when first asked for
+    this._dense = false; // the dense reference runs instead of the separable passes (useDenseReference)
     this._size = { width: 1, height: 1 };
     this._multisampled = false;
     this._applyCarriedDepth();
@@ -152,7 +154,7 @@ export class BlurStage {
     return METHOD_TABLE[this.method].blur === 'footprint' && this._kernelGroups !== 1 ? MAX_KERNEL_GROUPS : 1;
   }
 
-  /** The dense 2D reference (method 'dense'), built on first use. */
+  /** The dense 2D reference (useDenseReference), built on first use. */
   get densePass() {
     if (!this._densePass) {
       this._densePass = new DenseSubsurfacePass({ ...this._surface, profile: this._settings.profile, maxRadiusPx: DENSE_MAX_RADIUS_PX });
@@ -209,7 +211,8 @@ export class BlurStage {
       samples: this.samples,
       scattering: this.scattering,
       marginalRadiusMm: Math.max(...this.profileLookups.map((lookup) => lookup.marginalRadiusMm)),
-      denseRadiusMm: blurModeOf(this.method).passes === 'dense' ? this.densePass.radiusMm : 0,
+      dense: this._dense,
+      denseRadiusMm: this._dense ? this.densePass.radiusMm : 0,
       kernelReachMm,
       kernelGroups: this.groupCapacity > 1 ? this._kernelGroups : 1,
       profiles: this.profileLookups.map((lookup) => lookup.profile),
@@ -224,7 +227,7 @@ export class BlurStage {
    */
   plan(pixelsPerMm) {
     const plan = planBlur(this.planSettings, pixelsPerMm);
-    if (plan.samples !== this.kernel.length / 4) this._setPassKernels(this._kernelFor(plan.samples));
+    if (plan.passes === 'separable' && plan.samples !== this.kernel.length / 4) this._setPassKernels(this._kernelFor(plan.samples));
     this.lastPlan = plan;
     return plan;
   }
@@ -356,7 +359,7 @@ export class BlurStage {
    * @param {readonly import('../profiles/ProfileLookup.js').ProfileLookup[]} lookups one or more
    */
   setProfiles(lookups) {
-    checkProfileCount(this.method, lookups.length);
+    this.checkProfileCount(this.method, lookups.length);
     const first = lookups[0];
     this.profileLookups = [...lookups];
     this.profileLookup = first;
@@ -376,9 +379,28 @@ export class BlurStage {
       if (options[name] === undefined) continue;
       next[name] = checkOption(PIPELINE_SCHEMA, name, options[name]);
     }
-    checkProfileCount(next.method, this.profileLookups.length);
+    this.checkProfileCount(next.method, this.profileLookups.length);
     this._checkGroupsMethod(next.method, this._kernelGroups);
     this._settingsChanged(next);
+  }
+
+  /**
+   * Refuses `count` profiles in one frame that `method` (or the dense reference, while it runs)
+   * cannot blur: checkProfileCount's RangeError.
+   * @param {import('../options.js').Method} method @param {number} count
+   */
+  checkProfileCount(method, count) {
+    checkProfileCount(method, count, this._dense);
+  }
+
+  /**
+   * Validation only: true runs the dense 2D reference (DenseSubsurfacePass) instead of the
+   * separable passes, false the passes again; a RangeError (nothing changed) with several profiles.
+   * @param {boolean} enabled
+   */
+  setDenseReference(enabled) {
+    checkProfileCount(this.method, this.profileLookups.length, enabled);
+    this._dense = enabled;
   }
 
   /** Takes `next` settings: the kernel first (a setting computeKernel refuses leaves the stage as it was), then the passes. */
@@ -468,4 +490,19 @@ export class BlurStage {
     this._groupTable.dispose();
     this.scatteredTarget.dispose();
   }
+}
+
+/**
+ * Validation only (the tests and the bench, through three-separable-sss/internals): has `pipeline`
+ * blur with the dense 2D reference, a brute-force 2D convolution with its one profile whose cost
+ * grows with the square of the on-screen radius, instead of its separable passes; `enabled` false
+ * puts the passes back. A RangeError (nothing changed) while its materials use several profiles.
+ * @param {{ blur: BlurStage }} pipeline a SubsurfaceScattering
+ * @param {boolean} [enabled=true]
+ * @returns {DenseSubsurfacePass|null} the dense pass (its coverage, radius), or null when disabled
+ */
+export function useDenseReference(pipeline, enabled = true) {
+  if (typeof enabled !== 'boolean') throw new TypeError(`useDenseReference: enabled must be a boolean, got ${typeof enabled}`);
+  pipeline.blur.setDenseReference(enabled);
+  return enabled ? pipeline.blur.densePass : null;
 }

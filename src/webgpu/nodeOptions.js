@@ -4,7 +4,7 @@
 import { METHODS, PIPELINE_DEFAULTS } from '../options.js';
 import { checkOneOf } from '../support/parameterChecks.js';
 
-/** The methods the node has: the WebGL path's default ('footprint'; the others are for validation there). */
+/** The methods the node has: the WebGL path's default ('footprint'). */
 export const NODE_METHODS = Object.freeze(['footprint']);
 
 /** What subsurfaceScattering(scenePass, { ... }) accepts, with its defaults (the WebGL pipeline's). */

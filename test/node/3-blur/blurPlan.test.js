@@ -42,8 +42,8 @@ describe('planBlur', () => {
     for (const n of AUTO_SAMPLES) expect(autoSampleCount((((n - 3) / 2) / AUTO_REACH) * (1 - 1e-9))).toBe(n);
   });
 
-  it("'dense' runs the dense pass and reaches its own radius", () => {
-    expect(planBlur({ ...base, method: 'dense', samples: 'auto' }, 2)).toMatchObject({ kernelPixels: 14, blur: true, passes: 'dense' });
+  it('the dense reference runs the dense pass, whatever the method, and reaches its own radius', () => {
+    for (const method of METHODS) expect(planBlur({ ...base, method, dense: true, samples: 'auto' }, 2)).toMatchObject({ kernelPixels: 14, blur: true, passes: 'dense' });
   });
 
   it("the fixed-tap modes are compiled for the largest 'auto' count, so a change of count is a uniform change", () => {
@@ -69,8 +69,8 @@ describe('planBlur', () => {
     expect(near.groupings.map((g) => g.count)).toEqual([MAX_KERNEL_GROUPS, MAX_KERNEL_GROUPS]); // marble has four Gaussians
     expect(planBlur({ ...grouped, kernelGroups: 1 }, 5)).toMatchObject(oneKernel);
     expect(planBlur({ ...grouped, kernelGroups: 2 }, 5).groups).toBe(2);
-    for (const method of ['marginal', 'dense']) {
-      expect(planBlur({ ...grouped, method, samples: 17 }, 5)).toMatchObject(oneKernel);
+    for (const setting of [{ method: 'marginal' }, { dense: true }]) {
+      expect(planBlur({ ...grouped, ...setting, samples: 17 }, 5)).toMatchObject(oneKernel);
     }
   });
 });

@@ -4,6 +4,7 @@
 import { describe, it, expect, afterEach } from 'vitest';
 import * as THREE from 'three';
 import * as SSS from '../../../src/index.js';
+import { useDenseReference } from '../../../src/internals.js';
 import { createFixture } from '../../reliability/fixture.js';
 
 let t;
@@ -46,13 +47,13 @@ describe('a pipeline with materials of several profiles', () => {
     expect(frameOf(sss, [plain, named])).toEqual({ count: 1, channels: 2, slots: [0, 0], transmits: ['marble', 'marble'] });
   });
 
-  it("refuses what method 'dense' cannot blur and leaves the pipeline as it was", () => {
+  it('refuses what the dense reference cannot blur and leaves the pipeline as it was', () => {
     t = createFixture(THREE, SSS);
     const { sss, material: plain } = t;
     const named = new THREE.MeshStandardMaterial();
     sss.makeSubsurface(named, { profile: 'skin' });
-    sss.method = 'dense';
-    expect(() => { sss.profile = 'marble'; }).toThrow(/method 'dense' blurs 1 profile per frame and the materials use 2/);
+    useDenseReference(sss);
+    expect(() => { sss.profile = 'marble'; }).toThrow(/the dense reference blurs 1 profile per frame and the materials use 2/);
     expect(sss.profile.name).toBe('skin');
     expect(() => sss.makeSubsurface(named, { profile: 'milk' })).toThrow(RangeError);
     expect(frameOf(sss, [plain, named])).toEqual({ count: 1, channels: 2, slots: [0, 0], transmits: ['skin', 'skin'] });
@@ -83,8 +84,8 @@ describe('a pipeline with materials of several profiles', () => {
       expect(() => sss.setKernel({ profile: 'milk', method: 'bogus' })).toThrow(/method/);
       expect([sss.profile.name, sss.method]).toEqual(['skin', 'footprint']);
       sss.makeSubsurface(new THREE.MeshStandardMaterial(), { profile: 'marble' });
-      expect(() => sss.setKernel({ profile: 'milk', method: 'dense' })).toThrow(RangeError);
-      expect([sss.profile.name, sss.method]).toEqual(['skin', 'footprint']);
+      expect(() => useDenseReference(sss)).toThrow(/the dense reference blurs 1 profile per frame and the materials use 2/);
+      expect([sss.profile.name, sss.method, sss.plan?.passes ?? 'separable']).toEqual(['skin', 'footprint', 'separable']);
     } finally {
       console.warn = warn;
     }

@@ -80,7 +80,7 @@ const NODE_CASES = [
   ['a misspelt option', (t) => t.NODE.subsurfaceScattering(pass(t.scene, t.camera), { sampels: 17 }), 'TypeError', /unknown option "sampels" \(accepted: worldUnitInMm, profile, method, samples, /],
   ["a WebGL pipeline's option", (t) => t.NODE.subsurfaceScattering(pass(t.scene, t.camera), { multisampling: 4 }), 'TypeError', /unknown option "multisampling"/],
   ["method: 'marginal' (WebGL only)", (t) => t.make({ method: 'marginal' }), 'RangeError', /method 'marginal' is not available on the node \(only 'footprint'/],
-  ["method = 'dense'", (t) => { t.sss.method = 'dense'; }, 'RangeError', /method 'dense' is not available on the node/],
+  ["method = 'reference'", (t) => { t.sss.method = 'reference'; }, 'RangeError', /method 'reference' is not available on the node/],
   ["debugView = 'thickness' without a light", (t) => { t.make({ light: null }).debugView = 'thickness'; }, 'RangeError', /view 'thickness' needs the node's light .*without one it has 'final', 'diffuse', 'specular', 'depth', 'mask'$/],
   ["debugView = 'thickness' with a light: taken", (t) => { t.make({ light: t.light }).debugView = 'thickness'; }, 'ok'],
   ["scattering = 'no'", (t) => { t.sss.scattering = 'no'; }, 'TypeError', /SubsurfaceScatteringNode\.scattering must be a boolean \(true or false\), got "no"/],
