@@ -6,7 +6,7 @@
 // SSS_ENERGY_LEFT (the numbers of src/3-blur/samplingModel.js), PROFILE_COUNT (the profiles in the
 // frame; above 1 each pixel blurs with its own, shaders/common/surfaceSample.glsl), SSS_GROUPS (1:
 // one kernel; 2..4: the isotropic blur's groups, 'footprint' only, shaders/3-blur/kernelGroups.glsl:
-// the horizontal pass then writes the groups, the vertical one sums them), SSS_LIGHT_DEPTH (1: the
+// the horizontal pass then writes the groups, the vertical one sums them), SSS_LIGHT_CARRIES_DEPTH (1: the
 // light read carries the depth in its alpha, one fetch per tap instead of two:
 // shaders/common/surfaceSample.glsl; the horizontal pass of one kernel writes its light that way
 // for the vertical one) and KERNEL_MODE:
@@ -128,10 +128,10 @@ void addTap( const in float offsetPx, const in vec3 weight, const in ivec2 pixel
 }
 
 #if SSS_GROUPS > 1 && AXIS == 1
-	// The tap rule's weight of a group texel: with the depth it carries (SSS_GROUP_DEPTH, one
+	// The tap rule's weight of a group texel: with the depth it carries (SSS_GROUPS_CARRY_DEPTH, one
 	// profile) no surface fetch, else the rule as for any texel.
 	float sssGroupTexelRule( const in ivec2 texel, const in float coverage, const in float depth, const in float expectedDepth, out float farness ) {
-		#if SSS_GROUP_DEPTH == 1 && PROFILE_COUNT == 1
+		#if SSS_GROUPS_CARRY_DEPTH == 1 && PROFILE_COUNT == 1
 			return sssDepthRule( depth, expectedDepth, farness );
 		#else
 			return sssTexelRule( texel, coverage, expectedDepth, farness );

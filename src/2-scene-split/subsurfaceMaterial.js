@@ -80,7 +80,7 @@ function patch(material) {
     sssWidthWorld: { value: 0 },
     sssWidthScale: { value: 1 },
     sssDebugOutput: { value: 0 },
-    sssDiffuseDepth: { value: false },
+    sssDiffuseCarriesDepth: { value: false },
     sssProfileSlot: { value: 0 },
     sssTransmits: { value: false },
     sssLightType: { value: 0 },
@@ -122,7 +122,7 @@ function patch(material) {
     const draw = currentDraw(renderer.getRenderTarget());
     uniforms.sssSplit.value = draw.phase === DRAW_PHASES.SPLIT;
     uniforms.sssHidden.value = draw.phase === DRAW_PHASES.HIDDEN;
-    uniforms.sssDiffuseDepth.value = draw.phase === DRAW_PHASES.SPLIT && diffuseCarriesDepth(draw.target);
+    uniforms.sssDiffuseCarriesDepth.value = draw.phase === DRAW_PHASES.SPLIT && diffuseCarriesDepth(draw.target);
     const binding = draw.owner === null ? undefined : bindings.get(draw.owner) ?? latest(bindings);
     if (binding) applyBinding(uniforms, binding, scene, camera);
     else uniforms.sssTransmits.value = false;

@@ -168,7 +168,7 @@ export class SubsurfaceBlurPass extends SurfacePass {
       this._groupMaterials.set(this.groups, variant);
     }
     // The groups have their own target: the vertical pass reads them, not the carried light.
-    setDefines(variant, { ...this.material.defines, SSS_GROUPS: this.groups, ...(this.direction === 'vertical' ? { SSS_LIGHT_DEPTH: 0 } : {}) });
+    setDefines(variant, { ...this.material.defines, SSS_GROUPS: this.groups, ...(this.direction === 'vertical' ? { SSS_LIGHT_CARRIES_DEPTH: 0 } : {}) });
     return variant;
   }
 

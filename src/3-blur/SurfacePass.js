@@ -72,7 +72,7 @@ export class SurfacePass extends ShaderPass {
     }
     super({
       name,
-      defines: { ...SAMPLING_DEFINES, ...enumDefines('FOLLOW_SURFACE', FOLLOW_SURFACE_MODES, 'drop'), FORESHORTEN: 1, SSS_COVERAGE: 0, SSS_LIGHT_DEPTH: 0, PROFILE_COUNT: 1, ...defines },
+      defines: { ...SAMPLING_DEFINES, ...enumDefines('FOLLOW_SURFACE', FOLLOW_SURFACE_MODES, 'drop'), FORESHORTEN: 1, SSS_COVERAGE: 0, SSS_LIGHT_CARRIES_DEPTH: 0, PROFILE_COUNT: 1, ...defines },
       uniforms: {
         tDiffuse: { value: null },
         tSurface: { value: null },
@@ -98,9 +98,9 @@ export class SurfacePass extends ShaderPass {
 
   /**
    * Whether the light this pass reads carries the depth in its alpha
-   * (shaders/common/carriedDepth.glsl: the multi-target's diffuse with
-   * SubsurfaceScenePass.diffuseHoldsDepth, or the horizontal blur's output with its
-   * setWritesDepth): each tap then fetches one texel, not two. Off (the default): the alpha is the
+   * (shaders/common/carriedDepth.glsl: the multi-target's diffuse without MSAA,
+   * SubsurfaceScenePass.diffuseCarriesDepth, or the horizontal blur's output): each tap then
+   * fetches one texel, not two. Off (the default): the alpha is the
    * mask (the coverage with MSAA) and the depth is read from the surface.
    * @param {boolean} enabled
    * @param {import('three').Texture|null} [coverage=null] with MSAA: a texture whose alpha is the
@@ -109,7 +109,7 @@ export class SurfacePass extends ShaderPass {
   setLightCarriesDepth(enabled, coverage = null) {
     checkBoolean(`${this.material.name}.setLightCarriesDepth enabled`, enabled);
     if (coverage !== null && coverage?.isTexture !== true) throw new TypeError(`${this.material.name}: setLightCarriesDepth's coverage must be a THREE.Texture or null, got ${describe(coverage)}`);
-    setDefines(this.material, { SSS_LIGHT_DEPTH: enabled ? 1 : 0 });
+    setDefines(this.material, { SSS_LIGHT_CARRIES_DEPTH: enabled ? 1 : 0 });
     this.uniforms.tCoverage.value = coverage;
     this.lightCarriesDepth = enabled;
   }

@@ -335,7 +335,7 @@ describe('the depth carried in the light (one fetch per tap)', () => {
           scattered: Array.from(await read(renderer, sss.scatteredTarget)),
           depthAlpha: (await read(renderer, sss.scenePass.renderTarget, 1))[((height >> 1) * width + (width >> 1)) * 4 + 3],
           horizontalAlpha: (await read(renderer, sss.blur._blurTarget))[((height >> 1) * width + (width >> 1)) * 4 + 3],
-          carries: sss.scenePass.diffuseHoldsDepth,
+          carries: sss.scenePass.diffuseCarriesDepth,
           blur: sss.plan.blur,
         };
         sss.dispose();
