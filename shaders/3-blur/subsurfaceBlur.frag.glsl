@@ -1,6 +1,6 @@
 // Stage 3: one direction of the separable, depth- and mask-aware subsurface blur.
 // Defines (src/3-blur/SubsurfaceBlurPass.js sets them): AXIS (0 = horizontal, 1 = vertical: an
-// index into vectors), SAMPLES (the taps compiled for, odd; KERNEL_MODE_TAPS runs tapCount of them), FOLLOW_SURFACE (FOLLOW_SURFACE_OFF, _DROP, _LERP),
+// index into vectors), SAMPLES (the most taps, odd: every count is the uniform tapCount below it, so no count recompiles), FOLLOW_SURFACE (FOLLOW_SURFACE_OFF, _DROP, _LERP),
 // FORESHORTEN (0 or 1: grazing-angle correction, below), SSS_COVERAGE (0 or 1: the inputs were
 // resolved from MSAA, shaders/common/surfaceSample.glsl), SSS_MAX_SLOPE, SSS_MIN_KERNEL_PIXELS,
 // SSS_ENERGY_LEFT (the numbers of src/3-blur/samplingModel.js), PROFILE_COUNT (the profiles in the
@@ -20,7 +20,7 @@
 uniform sampler2D tDiffuse;  // the multi-target's diffuse light (or the horizontal pass's output, SSS_GROUPS 1); alpha: the mask
 uniform sampler2D tSurface;  // the multi-target's surface: r linear view depth (world units), g world units per profile mm
 uniform vec4 kernel[ SAMPLES ]; // (weight R, G, B, offset in kernel mm), centre tap first
-uniform int tapCount;           // KERNEL_MODE_TAPS: the kernel's taps (<= SAMPLES; 'auto' sets it per frame)
+uniform int tapCount;           // the kernel's taps (<= SAMPLES; the footprints' budget; 'auto' sets it per frame)
 uniform float kernelRadiusMm;   // the kernel's reach: below SSS_MIN_KERNEL_PIXELS of it a pixel does no work
 uniform vec3 strength;          // KERNEL_MODE_FOOTPRINT: mix with no scattering (the reference's strength)
 uniform vec2 projectionScale;   // camera.projectionMatrix.elements[0], [5]
@@ -60,7 +60,7 @@ uniform bool perspective;       // false for an orthographic camera: the step do
 #endif
 
 #if KERNEL_MODE == KERNEL_MODE_FOOTPRINT
-	#define BLOCKS ( ( SAMPLES - 1 ) / 2 - 1 ) // footprints per side before the tail
+	#define BLOCKS ( ( tapCount - 1 ) / 2 - 1 ) // footprints per side before the tail
 	uniform sampler2D tProfile;                 // ProfileLookup.texture, row 1: G(x) = ∫_0^x marginal
 	#if PROFILE_COUNT == 1
 		uniform float marginalRangeMm;              // ProfileLookup.marginalRangeMm

@@ -16,7 +16,7 @@ import { blurModeOf, checkProfileCount, planBlur } from './blurPlan.js';
 import { SubsurfaceBlurPass } from './SubsurfaceBlurPass.js';
 import { DenseSubsurfacePass } from './DenseSubsurfacePass.js';
 import { KernelGroupTable } from './KernelGroupTable.js';
-import { MAX_KERNEL_GROUPS, checkKernelGroups, kernelGroupsAt } from './kernelGroups.js';
+import { MAX_KERNEL_GROUPS, checkKernelGroups } from './kernelGroups.js';
 import { tableOf } from '../profiles/FootprintTable.js';
 
 const TRANSPARENT_BLACK = new Float32Array(4);
@@ -76,8 +76,6 @@ export class BlurStage {
     this._checkGroupsMethod(method, this._kernelGroups);
     this._groupTarget = null; // built when a grouped frame first needs it
     this._groupTable = new KernelGroupTable();
-    this._warmKey = null; // the passes' defines and the setting when the groups' programs were last drawn
-    this._warmProfiles = []; // and the slots' profiles (a profile of fewer Gaussians takes fewer groups)
     /** The scattered diffuse light, premultiplied by its coverage like the multi-target's. */
     this.scatteredTarget = new WebGLRenderTarget(1, 1, { type, depthBuffer: false });
     this.scatteredTarget.texture.name = 'subsurface.scattered';
@@ -131,7 +129,7 @@ export class BlurStage {
    * along the screen axes only); 'auto' takes per frame one group where one is within
    * src/3-blur/kernelGroups.js's budget at the frame's largest on-screen scale (a far head), else
    * MAX_KERNEL_GROUPS (three cost about what four do); 2..4 that many. A count's programs are
-   * compiled on the first frame that may use them (_warmGroupCounts), so no later frame compiles.
+   * compiled on the first frame that draws with them, and kept (at most one pair per count).
    * @type {'auto'|number}
    */
   get kernelGroups() { return this._kernelGroups; }
@@ -221,7 +219,7 @@ export class BlurStage {
 
   /**
    * Plans this frame (planBlur) and gives the separable passes the kernel of the planned count: a
-   * uniform change, never a recompile (the shaders are compiled for the mode's tap capacity).
+   * uniform change, never a recompile (the shaders are compiled for the most taps).
    * @param {number} pixelsPerMm the largest on-screen size of a profile mm this frame
    * @returns {import('./blurPlan.js').BlurPlan}
    */
@@ -252,7 +250,6 @@ export class BlurStage {
     } else {
       timed('blurH', () => {
         scissored();
-        this._warmGroupCounts(renderer);
         this.horizontalPass.render(renderer, this._horizontalTarget(plan), null);
       });
       timed('blurV', () => this.verticalPass.render(renderer, this.scatteredTarget, null));
@@ -286,7 +283,6 @@ export class BlurStage {
   _freeGroupTarget() {
     this._groupTarget.dispose();
     this._groupTarget = null;
-    this._warmKey = null;
     this._scissorKey = null;
   }
 
@@ -296,33 +292,6 @@ export class BlurStage {
     this._groupTarget = createGroupTarget();
     this._groupTarget.setSize(this._size.width, this._size.height);
     this._scissorKey = null;
-  }
-
-  /**
-   * With groups possible, the first frame (and the first after the passes' defines, kernelGroups
-   * or the slots' profiles changed) draws both passes once at the count the setting gives and
-   * once with one kernel, so both programs exist before 'auto' first picks either: no later frame
-   * compiles (test/browser/dropIn.test.js counts the programs).
-   */
-  _warmGroupCounts(renderer) {
-    if (this.groupCapacity === 1) return;
-    const key = JSON.stringify([this.horizontalPass.material.defines, this.verticalPass.material.defines, this._kernelGroups]);
-    const profiles = this.profileLookups.map((lookup) => lookup.profile);
-    if (key === this._warmKey && profiles.length === this._warmProfiles.length && profiles.every((p, i) => p === this._warmProfiles[i])) return;
-    this._warmProfiles = profiles;
-    // The count the setting gives when it groups ('auto': MAX_KERNEL_GROUPS, fewer for a profile of fewer Gaussians).
-    const count = this._kernelGroups === 'auto' ? MAX_KERNEL_GROUPS : this._kernelGroups;
-    const groupings = this.profileLookups.map((lookup) => kernelGroupsAt(lookup.profile, 1, count));
-    if (Math.max(...groupings.map((g) => g.count)) > 1) {
-      this._groupFrame(groupings);
-      this.horizontalPass.render(renderer, this._groupTarget, null);
-      this.verticalPass.render(renderer, this.scatteredTarget, null);
-    }
-    // And one kernel's (a far head's), which a first frame in groups would not have drawn.
-    for (const pass of [this.horizontalPass, this.verticalPass]) pass.setGroupFrame({ count: 1 });
-    this.horizontalPass.render(renderer, this._blurTarget, null);
-    this.verticalPass.render(renderer, this.scatteredTarget, null);
-    this._warmKey = key;
   }
 
   /**
@@ -433,9 +402,8 @@ export class BlurStage {
 
   /** @param {Float32Array} kernel */
   _setPassKernels(kernel) {
-    const capacity = blurModeOf(this.method).tapCapacity(kernel.length / 4, this.autoSamples);
     const slotKernels = passModeOf(this.method) === 'taps' ? this._slotKernels(kernel.length / 4) : [kernel]; // footprints read the tables
-    for (const pass of [this.horizontalPass, this.verticalPass]) pass.setKernel(kernel, capacity, slotKernels);
+    for (const pass of [this.horizontalPass, this.verticalPass]) pass.setKernel(kernel, slotKernels);
     this.kernel = kernel;
   }
 

@@ -11,7 +11,7 @@ import { ProfileLookup } from '../profiles/ProfileLookup.js';
 import { FootprintTable } from '../profiles/FootprintTable.js';
 import { ProfileStack } from '../profiles/ProfileStack.js';
 import { MAX_PROFILES } from '../profiles/profileSlots.js';
-import { FOOTPRINT_ROWS, FOOTPRINT_SCALES } from '../profiles/footprints.js';
+import { AUTO_MAX_SAMPLES, FOOTPRINT_ROWS, FOOTPRINT_SCALES } from '../profiles/footprints.js';
 import { enumDefines, glslFloat, setDefines } from '../support/glsl.js';
 import { checkBoolean, checkOneOf, checkOptions, checkRgb } from '../support/parameterChecks.js';
 import { describe } from '../support/rendererSupport.js';
@@ -23,6 +23,12 @@ export { FOLLOW_SURFACE_MODES };
 /** How the blur weighs its taps: a kernel's fixed taps, or footprints snapped to pixels (see the shader). */
 export const KERNEL_MODES = Object.freeze(['taps', 'footprint']);
 const DIRECTIONS = Object.freeze(['horizontal', 'vertical']);
+
+/**
+ * The taps the shader is compiled for: every count up to it (computeKernel's 3..63) is the
+ * `tapCount` uniform, so a change of `samples` (a slider, 'auto') never compiles another program.
+ */
+const MAX_TAPS = AUTO_MAX_SAMPLES;
 
 const CHUNKS = Object.freeze({ 'common/profileLookup.glsl': profileLookupGlsl, '3-blur/kernelGroups.glsl': kernelGroupsGlsl });
 
@@ -92,9 +98,9 @@ export class SubsurfaceBlurPass extends SurfacePass {
       name: `SubsurfaceBlurPass(${direction})`,
       fragmentShader: blurGlsl,
       chunks: CHUNKS,
-      defines: { AXIS: DIRECTIONS.indexOf(direction), SAMPLES: 1, SSS_GROUPS: 1, SSS_MAX_GROUPS: MAX_KERNEL_GROUPS, ...FOOTPRINT_DEFINES, ...enumDefines('KERNEL_MODE', KERNEL_MODES, mode) },
+      defines: { AXIS: DIRECTIONS.indexOf(direction), SAMPLES: MAX_TAPS, SSS_GROUPS: 1, SSS_MAX_GROUPS: MAX_KERNEL_GROUPS, ...FOOTPRINT_DEFINES, ...enumDefines('KERNEL_MODE', KERNEL_MODES, mode) },
       uniforms: {
-        kernel: { value: new Float32Array(4) },
+        kernel: { value: new Float32Array(MAX_TAPS * 4) },
         tapCount: { value: 1 },
         kernelRadiusMm: { value: 0 },
         strength: { value: new Vector3(1, 1, 1) },
@@ -223,44 +229,42 @@ export class SubsurfaceBlurPass extends SurfacePass {
   }
 
   /**
-   * @param {Float32Array} kernel see computeKernel
-   * @param {number} [tapCapacity] 'taps' mode: the most taps the shader is compiled for (at least
-   *   the kernel's); a kernel of fewer taps is then a uniform change, not a recompile, so 'auto'
-   *   can change the count every frame. 'footprint' mode: ignored (the kernel's count is the budget).
+   * A uniform change in every mode, never a recompile (the shader is compiled for MAX_TAPS).
+   * @param {Float32Array} kernel see computeKernel, at most MAX_TAPS taps ('footprint' mode: its
+   *   count is the budget)
    * @param {readonly Float32Array[]} [slotKernels] 'taps' mode with several profiles (setProfiles):
    *   each slot's kernel of the same count, `kernel` first; the shader reads slot p's from row p of
    *   a float texture instead of the `kernel` uniform
    */
-  setKernel(kernel, tapCapacity = 0, slotKernels = [kernel]) {
+  setKernel(kernel, slotKernels = [kernel]) {
     if (!(kernel instanceof Float32Array) || kernel.length < 4 || kernel.length % 4 !== 0) {
       throw new TypeError('SubsurfaceBlurPass: kernel must be a Float32Array of 4 numbers per tap (see computeKernel)');
     }
     if (!kernel.every(Number.isFinite)) throw new RangeError('SubsurfaceBlurPass: kernel holds NaN or Infinity');
+    if (kernel.length > MAX_TAPS * 4) throw new RangeError(`SubsurfaceBlurPass: kernel has ${kernel.length / 4} taps, at most ${MAX_TAPS}`);
     // Checked whole before anything changes: a refused call leaves the pass as it was.
     if (!Array.isArray(slotKernels) || slotKernels.length < 1 || slotKernels.length > MAX_PROFILES
       || !slotKernels.every((k) => k instanceof Float32Array && k.length === kernel.length && k.every(Number.isFinite))) {
       throw new TypeError(`SubsurfaceBlurPass.setKernel: slotKernels must be an array of 1..${MAX_PROFILES} finite Float32Arrays as long as kernel (${kernel.length}), one per slot, got ${describe(slotKernels)}`);
     }
-    const samples = kernel.length / 4;
-    const capacity = this.mode === 'taps' ? Math.max(samples, tapCapacity) : samples;
-    // (weight R, G, B, offset mm) per tap, zero-padded to the capacity: three uploads a flat array as is.
-    const taps = new Float32Array(capacity * 4);
+    // (weight R, G, B, offset mm) per tap, zero-padded to MAX_TAPS: three uploads a flat array as is.
+    const taps = this.uniforms.kernel.value;
+    taps.fill(0);
     taps.set(kernel);
-    this.uniforms.kernel.value = taps;
-    this.uniforms.tapCount.value = samples;
+    this.uniforms.tapCount.value = kernel.length / 4;
     this.uniforms.kernelRadiusMm.value = kernelRadiusMm(kernel);
-    setDefines(this.material, { SAMPLES: capacity });
     this.kernel = kernel;
     this.slotKernels = slotKernels;
-    if (slotKernels.length > 1) this._writeSlotKernels(slotKernels, capacity);
+    if (slotKernels.length > 1) this._writeSlotKernels(slotKernels);
     else {
       this.uniforms.tKernels.value?.dispose(); // one profile reads the kernel uniform
       this.uniforms.tKernels.value = null;
     }
   }
 
-  /** Row p of `tKernels`: slot p's kernel, zero-padded to the capacity like the uniform. */
-  _writeSlotKernels(slotKernels, capacity) {
+  /** Row p of `tKernels`: slot p's kernel, zero-padded to MAX_TAPS like the uniform. */
+  _writeSlotKernels(slotKernels) {
+    const capacity = MAX_TAPS;
     let texture = this.uniforms.tKernels.value;
     if (!texture || texture.image.width !== capacity || texture.image.height !== slotKernels.length) {
       texture?.dispose();

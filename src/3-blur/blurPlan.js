@@ -54,9 +54,6 @@ export function frameGroupings(settings, pixelsPerMm) {
 /**
  * What each blur mode of METHOD_TABLE, and the dense reference, does:
  * - passes: the separable pair ('separable') or the dense 2D pass ('dense');
- * - tapCapacity: the most taps the mode's shader is compiled for ('auto' changes the count per frame
- *   by a uniform below it, never by a recompile): the kernel's count for 'footprint' (its budget),
- *   the largest 'auto' count for fixed taps;
  * - autoSamples(radiusPx): the taps 'auto' takes for the on-screen radius of the marginal's 99 %;
  * - reachMm(settings, samples): how far the blur reaches, mm (below half a pixel nothing moves);
  * - groupings(settings, pixelsPerMm): the isotropic blur's groups per slot (frameGroupings), or
@@ -68,7 +65,6 @@ export const BLUR_MODES = Object.freeze({
     // Footprints choose their taps per pixel from the table (src/profiles/footprints.js): the frame
     // keeps the budget, the pixel takes what its scale needs.
     autoSamples: () => AUTO_MAX_SAMPLES,
-    tapCapacity: (samples) => samples,
     // The tail is sampled at least a pixel out: the reach is the marginal's 99 % radius.
     reachMm: (settings) => settings.marginalRadiusMm,
     groupings: frameGroupings,
@@ -76,14 +72,12 @@ export const BLUR_MODES = Object.freeze({
   taps: Object.freeze({
     passes: 'separable',
     autoSamples: autoSampleCount,
-    tapCapacity: (samples, auto) => (auto ? AUTO_SAMPLES[AUTO_SAMPLES.length - 1] : samples),
     reachMm: (settings, samples) => reachOfTaps(settings, samples),
     groupings: () => null,
   }),
   dense: Object.freeze({
     passes: 'dense',
     autoSamples: () => AUTO_MAX_SAMPLES, // unused by the dense pass
-    tapCapacity: (samples) => samples,
     reachMm: (settings) => settings.denseRadiusMm,
     groupings: () => null,
   }),

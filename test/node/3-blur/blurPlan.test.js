@@ -2,6 +2,9 @@
 // (src/3-blur/blurPlan.js); BlurStage's plan reads only its own settings. The counts are worked
 // out by hand from the rules in blurPlan.js's comments.
 import { describe, it, expect } from 'vitest';
+import { PerspectiveCamera, Texture } from 'three';
+import { SubsurfaceBlurPass } from '../../../src/3-blur/SubsurfaceBlurPass.js';
+import { ProfileLookup } from '../../../src/profiles/ProfileLookup.js';
 import { planBlur, autoSampleCount, BLUR_MODES, blurModeOf } from '../../../src/3-blur/blurPlan.js';
 import { AUTO_SAMPLES, AUTO_REACH, METHODS, METHOD_TABLE } from '../../../src/options.js';
 import { AUTO_MAX_SAMPLES } from '../../../src/profiles/footprints.js';
@@ -46,10 +49,22 @@ describe('planBlur', () => {
     for (const method of METHODS) expect(planBlur({ ...base, method, dense: true, samples: 'auto' }, 2)).toMatchObject({ kernelPixels: 14, blur: true, passes: 'dense' });
   });
 
-  it("the fixed-tap modes are compiled for the largest 'auto' count, so a change of count is a uniform change", () => {
-    expect(BLUR_MODES.taps.tapCapacity(5, true)).toBe(AUTO_SAMPLES[AUTO_SAMPLES.length - 1]);
-    expect(BLUR_MODES.taps.tapCapacity(17, false)).toBe(17);
-    expect(BLUR_MODES.footprint.tapCapacity(63, true)).toBe(63);
+  it('every count of taps, in either mode, is a uniform change: the pass is compiled for the most taps', () => {
+    const camera = new PerspectiveCamera();
+    const pass = new SubsurfaceBlurPass({ direction: 'horizontal', kernel: computeKernel({ samples: 9, profile: profiles.skin }), camera, surfaceTexture: new Texture(), profileLookup: new ProfileLookup(profiles.skin) });
+    const defines = JSON.stringify(pass.material.defines);
+    for (const mode of ['taps', 'footprint']) {
+      pass.setMode(mode);
+      const modeDefines = JSON.stringify(pass.material.defines);
+      for (const samples of [3, 17, AUTO_MAX_SAMPLES]) {
+        pass.setKernel(computeKernel({ samples, profile: profiles.skin }));
+        expect(JSON.stringify(pass.material.defines)).toBe(modeDefines);
+        expect(pass.uniforms.tapCount.value).toBe(samples);
+      }
+    }
+    expect(pass.material.defines.SAMPLES).toBe(AUTO_MAX_SAMPLES);
+    expect(defines).toContain(`"SAMPLES":${AUTO_MAX_SAMPLES}`);
+    pass.dispose();
   });
 
   it('a real kernel reach is its outermost tap', () => {
