@@ -1,7 +1,7 @@
 // The bench's cost model (issue 19): what each stage of a frame writes and reads per screen pixel,
 // and the memory of the pipeline's targets, from the attachment formats
 // (src/2-scene-split/subsurfaceTarget.js, src/3-blur/BlurStage.js), the passes and their taps
-// (shaders/3-blur/subsurfaceBlur.frag.glsl). SwiftShader times are CPU times; a GPU is mostly
+// (shaders/3-blur/blurTaps.glsl). SwiftShader times are CPU times; a GPU is mostly
 // bound by memory traffic, which this counts instead.
 //
 // Cache assumption ("compulsory traffic"): every texel a pass reads comes from memory once per pass

@@ -4,6 +4,8 @@
 // renormalised per channel (or lerped back to the centre colour, as in the reference).
 import { DataTexture, FloatType, GLSL3, NearestFilter, RGBAFormat, ShaderMaterial, Vector3 } from 'three';
 import blurGlsl from '../../shaders/3-blur/subsurfaceBlur.frag.glsl?raw';
+import kernelGroupsBlurGlsl from '../../shaders/3-blur/kernelGroupsBlur.frag.glsl?raw';
+import blurTapsGlsl from '../../shaders/3-blur/blurTaps.glsl?raw';
 import profileLookupGlsl from '../../shaders/common/profileLookup.glsl?raw';
 import kernelGroupsGlsl from '../../shaders/3-blur/kernelGroups.glsl?raw';
 import { kernelRadiusMm } from '../profiles/kernel.js';
@@ -16,7 +18,7 @@ import { enumDefines, glslFloat, setDefines } from '../support/glsl.js';
 import { checkBoolean, checkOneOf, checkOptions, checkRgb } from '../support/parameterChecks.js';
 import { describe } from '../support/rendererSupport.js';
 import { FOLLOW_SURFACE_MODES } from '../options.js';
-import { SurfacePass } from './SurfacePass.js';
+import { SurfacePass, assembleSurfaceGlsl } from './SurfacePass.js';
 import { MAX_KERNEL_GROUPS } from './kernelGroups.js';
 
 export { FOLLOW_SURFACE_MODES };
@@ -30,7 +32,9 @@ const DIRECTIONS = Object.freeze(['horizontal', 'vertical']);
  */
 const MAX_TAPS = AUTO_MAX_SAMPLES;
 
-const CHUNKS = Object.freeze({ 'common/profileLookup.glsl': profileLookupGlsl, '3-blur/kernelGroups.glsl': kernelGroupsGlsl });
+const CHUNKS = Object.freeze({ 'common/profileLookup.glsl': profileLookupGlsl, '3-blur/blurTaps.glsl': blurTapsGlsl });
+/** The groups' program (setGroupFrame) includes the groups' packing too. */
+const GROUP_CHUNKS = Object.freeze({ ...CHUNKS, '3-blur/kernelGroups.glsl': kernelGroupsGlsl });
 
 /** The footprint table's scales as the GLSL defines the shader reads. */
 const FOOTPRINT_DEFINES = Object.freeze({
@@ -72,7 +76,7 @@ export class SubsurfaceBlurPass extends SurfacePass {
    * @param {'taps'|'footprint'} [options.mode='taps'] 'taps': the kernel's weights and offsets as
    *   they are; 'footprint': per pixel, footprints of whole pixels allocated for the pixel's scale
    *   (src/profiles/footprints.js), as many taps as the kernel has, weighted by the exact marginal
-   *   energy from `profileLookup` (see shaders/3-blur/subsurfaceBlur.frag.glsl)
+   *   energy from `profileLookup` (see shaders/3-blur/blurTaps.glsl)
    * @param {ProfileLookup|null} [options.profileLookup=null] required by the 'footprint' mode
    * @param {'drop'|'lerp'|'off'} [options.followSurface='drop'] what a tap on another surface does
    * @param {number} [options.depthThresholdWorld=0.006] depth difference (world units) at which a tap
@@ -98,7 +102,7 @@ export class SubsurfaceBlurPass extends SurfacePass {
       name: `SubsurfaceBlurPass(${direction})`,
       fragmentShader: blurGlsl,
       chunks: CHUNKS,
-      defines: { AXIS: DIRECTIONS.indexOf(direction), SAMPLES: MAX_TAPS, SSS_GROUPS: 1, SSS_MAX_GROUPS: MAX_KERNEL_GROUPS, ...FOOTPRINT_DEFINES, ...enumDefines('KERNEL_MODE', KERNEL_MODES, mode) },
+      defines: { AXIS: DIRECTIONS.indexOf(direction), SAMPLES: MAX_TAPS, ...FOOTPRINT_DEFINES, ...enumDefines('KERNEL_MODE', KERNEL_MODES, mode) },
       uniforms: {
         kernel: { value: new Float32Array(MAX_TAPS * 4) },
         tapCount: { value: 1 },
@@ -167,14 +171,15 @@ export class SubsurfaceBlurPass extends SurfacePass {
     if (this.groups === 1) return this.material;
     let variant = this._groupMaterials.get(this.groups);
     if (!variant) {
-      // As ShaderPass builds `material`, sharing its uniforms (clone() would copy them, and warns
-      // at render targets' textures).
-      const { name, vertexShader, fragmentShader, glslVersion, uniforms } = this.material;
-      variant = new ShaderMaterial({ name, vertexShader, fragmentShader, glslVersion, uniforms, defines: { ...this.material.defines } });
+      // As ShaderPass builds `material`, from the groups' shader, sharing its uniforms (clone()
+      // would copy them, and warns at render targets' textures).
+      const { name, vertexShader, glslVersion, uniforms } = this.material;
+      this._groupShader ??= assembleSurfaceGlsl(name, kernelGroupsBlurGlsl, GROUP_CHUNKS);
+      variant = new ShaderMaterial({ name, vertexShader, fragmentShader: this._groupShader, glslVersion, uniforms, defines: { ...this.material.defines } });
       this._groupMaterials.set(this.groups, variant);
     }
     // The groups have their own target: the vertical pass reads them, not the carried light.
-    setDefines(variant, { ...this.material.defines, SSS_GROUPS: this.groups, ...(this.direction === 'vertical' ? { SSS_LIGHT_CARRIES_DEPTH: 0 } : {}) });
+    setDefines(variant, { ...this.material.defines, SSS_GROUPS: this.groups, SSS_MAX_GROUPS: MAX_KERNEL_GROUPS, ...(this.direction === 'vertical' ? { SSS_LIGHT_CARRIES_DEPTH: 0 } : {}) });
     return variant;
   }
 

@@ -45,6 +45,14 @@ const SURFACE_CHUNKS = Object.freeze({
   'common/surfaceTap.glsl': surfaceTapGlsl,
 });
 
+/**
+ * A surface pass's fragment shader: `source` with SURFACE_CHUNKS and `chunks` included (assembleGlsl).
+ * @param {string} name @param {string} source @param {Record<string, string>} [chunks]
+ */
+export function assembleSurfaceGlsl(name, source, chunks = {}) {
+  return assembleGlsl(name, source, { ...SURFACE_CHUNKS, ...chunks });
+}
+
 export class SurfacePass extends ShaderPass {
   /**
    * @param {object} shader
@@ -84,7 +92,7 @@ export class SurfacePass extends ShaderPass {
         ...uniforms,
       },
       vertexShader,
-      fragmentShader: assembleGlsl(name, fragmentShader, { ...SURFACE_CHUNKS, ...chunks }),
+      fragmentShader: assembleSurfaceGlsl(name, fragmentShader, chunks),
     });
     this.uniforms.tSurface.value = surfaceTexture; // after super: ShaderPass clones the textures it is given
     /** The camera the scene was rendered with; its projection is read every frame. */
