@@ -32,24 +32,34 @@
 		#endif
 	}
 
-	// Adds a texel's groups at `share` of the tap (its linear weight) to the tap's light by the tap
-	// rule ('lerp': each group moved towards the centre's by the farness); returns the weight kept.
+	// A group texel's weight at `share` of the tap (its linear weight) by the tap rule: 0 off the
+	// mask (`coverage` 0); `farness`, what 'lerp' moves its groups by.
+	float sssGroupTexelWeight( const in ivec2 texel, const in float share, const in float coverage, const in float depth, const in float expectedDepth, out float farness ) {
+		farness = 0.0;
+		if ( ! ( coverage > 0.0 ) ) return 0.0;
+		return share * sssGroupTexelRule( texel, coverage, depth, expectedDepth, farness );
+	}
+
+	// 'lerp': two groups of a texel moved towards the centre's by the farness (no-op otherwise).
+	void sssLerpGroups( inout vec3 first, inout vec3 second, const in vec3 centreFirst, const in vec3 centreSecond, const in float farness ) {
+		#if FOLLOW_SURFACE == FOLLOW_SURFACE_LERP
+			first = mix( first, centreFirst, farness );
+			second = mix( second, centreSecond, farness );
+		#endif
+	}
+
+	// Adds a texel's groups at `share` of the tap to the tap's light by the tap rule; returns the
+	// weight kept. (GLSL evaluates arguments left to right: `depth` is read after sssGroupsAt wrote it.)
 	float sssAddGroupTexel( const in ivec2 texel, const in float share, const in float expectedDepth,
 		const in vec3 centre0, const in vec3 centre1, const in vec3 centre2, const in vec3 centre3,
 		inout vec3 light0, inout vec3 light1, inout vec3 light2, inout vec3 light3 ) {
 		vec3 a, b, c, d;
-		float depth;
-		float coverage = sssGroupsAt( texel, a, b, c, d, depth );
-		if ( ! ( coverage > 0.0 ) ) return 0.0;
-		float farness;
-		float weight = share * sssGroupTexelRule( texel, coverage, depth, expectedDepth, farness );
-		#if FOLLOW_SURFACE == FOLLOW_SURFACE_LERP
-			a = mix( a, centre0, farness );
-			b = mix( b, centre1, farness );
-			#if SSS_GROUPS > 2
-				c = mix( c, centre2, farness );
-				d = mix( d, centre3, farness );
-			#endif
+		float depth, farness;
+		float weight = sssGroupTexelWeight( texel, share, sssGroupsAt( texel, a, b, c, d, depth ), depth, expectedDepth, farness );
+		if ( weight == 0.0 ) return 0.0;
+		sssLerpGroups( a, b, centre0, centre1, farness );
+		#if SSS_GROUPS > 2
+			sssLerpGroups( c, d, centre2, centre3, farness );
 		#endif
 		sssAccumulate( light0, light1, light2, light3, vec3( weight ), vec3( weight ), vec3( weight ), vec3( weight ), a, b, c, d );
 		return weight;
@@ -60,15 +70,10 @@
 		// one fetch, the group target's second attachment).
 		float sssAddFarTexel( const in ivec2 texel, const in float share, const in float expectedDepth, const in vec3 centre2, const in vec3 centre3, inout vec3 light2, inout vec3 light3 ) {
 			vec3 c, d;
-			float depth;
-			float coverage = sssFarGroupsAt( texel, c, d, depth );
-			if ( ! ( coverage > 0.0 ) ) return 0.0;
-			float farness;
-			float weight = share * sssGroupTexelRule( texel, coverage, depth, expectedDepth, farness );
-			#if FOLLOW_SURFACE == FOLLOW_SURFACE_LERP
-				c = mix( c, centre2, farness );
-				d = mix( d, centre3, farness );
-			#endif
+			float depth, farness;
+			float weight = sssGroupTexelWeight( texel, share, sssFarGroupsAt( texel, c, d, depth ), depth, expectedDepth, farness );
+			if ( weight == 0.0 ) return 0.0;
+			sssLerpGroups( c, d, centre2, centre3, farness );
 			light2 += c * weight;
 			light3 += d * weight;
 			return weight;
