@@ -35,6 +35,7 @@ export default defineConfig(({ mode }) => {
           // copy of the material hook's state).
           entry: {
             'three-separable-sss': 'src/index.js',
+            stages: 'src/stages.js',
             internals: 'src/internals.js',
             postprocessing: 'src/integrations/postprocessing.js',
             react: 'src/integrations/react.js',
@@ -62,6 +63,7 @@ export default defineConfig(({ mode }) => {
       alias: [
         ...threeAliases,
         { find: /^three-separable-sss$/, replacement: `${root}src/index.js` },
+        { find: /^three-separable-sss\/stages$/, replacement: `${root}src/stages.js` },
         { find: /^three-separable-sss\/internals$/, replacement: `${root}src/internals.js` },
         { find: /^three-separable-sss\/postprocessing$/, replacement: `${root}src/integrations/postprocessing.js` },
         { find: /^three-separable-sss\/react$/, replacement: `${root}src/integrations/react.js` },

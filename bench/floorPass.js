@@ -47,11 +47,11 @@ export class FetchFloor {
    * @param {{ begin(stage: string): void, end(stage: string): void }} timer
    */
   render(renderer, timer) {
-    const { renderTarget } = this.sss.scenePass;
+    const { renderTarget } = this.sss._scenePass;
     const { width, height } = renderTarget;
     for (const t of this.targets) if (t.width !== width || t.height !== height) t.setSize(width, height);
     const current = renderer.getRenderTarget();
-    const passes = [['floorH', this.horizontal, this.sss.scenePass.diffuseTexture, this.targets[0]], ['floorV', this.vertical, this.targets[0].texture, this.targets[1]]];
+    const passes = [['floorH', this.horizontal, this.sss._scenePass.diffuseTexture, this.targets[0]], ['floorV', this.vertical, this.targets[0].texture, this.targets[1]]];
     try {
       for (const [stage, quad, input, output] of passes) {
         quad.material.uniforms.tDiffuse.value = input;

@@ -123,7 +123,7 @@ function radiusPixels(surface, radiusMm) {
 /** The pipeline's profile (the scene split's transmittance, the blur and the dense reference). */
 function useProfile(profile) {
   const { sss } = session;
-  if (sss.profileLookup.profile.name !== profile) sss.profile = profile;
+  if (sss._profileLookup.profile.name !== profile) sss.profile = profile;
 }
 
 /** The dense reference with `coverage` as the pipeline's blur stage. */
@@ -144,7 +144,7 @@ async function reference({ profile, coverage = 0.997 }) {
   const t0 = performance.now();
   const images = await renderImages();
   const ms = performance.now() - t0;
-  const surface = await readRenderTargetFloats(renderer, sss.scenePass.renderTarget, ATTACHMENTS.SURFACE);
+  const surface = await readRenderTargetFloats(renderer, sss._scenePass.renderTarget, ATTACHMENTS.SURFACE);
   const mask = Float32Array.from({ length: session.width * session.height }, (_, i) => surface[i * 4 + 1]);
   const radiusPx = radiusPixels(surface, dense.radiusMm);
   const bound = dense.uniforms.maxRadiusPx.value;
@@ -161,11 +161,11 @@ async function reference({ profile, coverage = 0.997 }) {
  */
 async function autoTaps() {
   const { renderer, sss, built, width, height } = session;
-  const profile = sss.profileLookup.profile;
+  const profile = sss._profileLookup.profile;
   session.autoTables ??= new Map();
-  if (!session.autoTables.has(profile)) session.autoTables.set(profile, footprintTable((x) => sss.profileLookup.marginalEnergy(x), 'auto'));
+  if (!session.autoTables.has(profile)) session.autoTables.set(profile, footprintTable((x) => sss._profileLookup.marginalEnergy(x), 'auto'));
   const { samples, data, columns } = session.autoTables.get(profile);
-  const surface = await readRenderTargetFloats(renderer, sss.scenePass.renderTarget, ATTACHMENTS.SURFACE);
+  const surface = await readRenderTargetFloats(renderer, sss._scenePass.renderTarget, ATTACHMENTS.SURFACE);
   const p = built.camera.projectionMatrix.elements;
   let sum = 0, count = 0, max = 0, min = Infinity, centred = 0;
   for (let i = 0; i < width * height; i++) {
@@ -210,12 +210,12 @@ function timeFrames(count) {
 /** Re-runs only the SSS stage over the frame's scene split `count` times (the stage timer times each). */
 function timeSssStage(count) {
   const { renderer, sss } = session;
-  const pixel = sss.scatteredTarget.texture.type === FloatType ? new Float32Array(4) : new Uint16Array(4);
+  const pixel = sss._blur.scatteredTarget.texture.type === FloatType ? new Float32Array(4) : new Uint16Array(4);
   const ms = [];
   for (let i = 0; i < count; i++) {
     const t0 = performance.now();
-    sss.renderScattering(renderer);
-    renderer.readRenderTargetPixels(sss.scatteredTarget, 0, 0, 1, 1, pixel);
+    sss._renderScattering(renderer);
+    renderer.readRenderTargetPixels(sss._blur.scatteredTarget, 0, 0, 1, 1, pixel);
     ms.push(performance.now() - t0);
   }
   return ms;
@@ -250,7 +250,7 @@ async function measure({ kind, profile, method, samples, coverage, frames, sssFr
     Object.assign(sss, { method, samples });
     if (auto) composer.render();
     const perPixel = auto && method === 'footprint';
-    Object.assign(row, { method, samples: perPixel ? 'auto' : sss.kernel.length / 4, auto });
+    Object.assign(row, { method, samples: perPixel ? 'auto' : sss._blur.kernel.length / 4, auto });
     if (perPixel) row.taps = await autoTaps();
   }
   if (errors) {
@@ -263,7 +263,7 @@ async function measure({ kind, profile, method, samples, coverage, frames, sssFr
   } else if (warmUp) {
     timeFrames(1);
   }
-  row.kernelPixels = sss.kernelPixels;
+  row.kernelPixels = sss.plan.kernelPixels;
   timer.recording = true;
   try {
     const frameMs = timeFrames(frames);
@@ -306,9 +306,9 @@ async function readDense({ profile, coverage = 0.997, followSurface = 'drop', fo
   const p = built.camera.projectionMatrix.elements;
   return {
     width, height,
-    output: await readRenderTargetFloats(renderer, sss.scatteredTarget),
-    diffuse: await readRenderTargetFloats(renderer, sss.scenePass.renderTarget, ATTACHMENTS.DIFFUSE),
-    surface: await readRenderTargetFloats(renderer, sss.scenePass.renderTarget, ATTACHMENTS.SURFACE),
+    output: await readRenderTargetFloats(renderer, sss._blur.scatteredTarget),
+    diffuse: await readRenderTargetFloats(renderer, sss._scenePass.renderTarget, ATTACHMENTS.DIFFUSE),
+    surface: await readRenderTargetFloats(renderer, sss._scenePass.renderTarget, ATTACHMENTS.SURFACE),
     projectionScale: [p[0], p[5]],
     depthThresholdWorld: dense.depthThresholdWorld,
     followSurface: dense.followSurface,
@@ -354,10 +354,10 @@ async function peerMeasure(options) {
 async function peerCoverage() {
   const { renderer, sss, width, height } = session;
   (await peersOf()).draw.ours();
-  const diffuse = await readRenderTargetFloats(renderer, sss.scenePass.renderTarget, ATTACHMENTS.DIFFUSE);
+  const diffuse = await readRenderTargetFloats(renderer, sss._scenePass.renderTarget, ATTACHMENTS.DIFFUSE);
   let subsurfacePixels = 0;
   for (let i = 3; i < diffuse.length; i += 4) if (diffuse[i] > 0) subsurfacePixels++;
-  const box = sss.scenePass.subsurfaceBox;
+  const box = sss._scenePass.subsurfaceBox;
   return { pixels: width * height, subsurfacePixels, boxPixels: box ? box.width * box.height : width * height, box, taps: await autoTaps() };
 }
 

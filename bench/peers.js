@@ -189,7 +189,7 @@ function fence(peers, session, measure) {
     return;
   }
   const target = measure === 'threePlain' ? (MSAA_FEATURES.includes(peers.feature) ? peers.plainMsaa : peers.plain).readBuffer
-    : measure === 'blur' ? session.sss.scatteredTarget
+    : measure === 'blur' ? session.sss._blur.scatteredTarget
       : measure === 'floor' ? peers.floor.targets[1] : session.composer.readBuffer;
   session.renderer.readRenderTargetPixels(target, 0, 0, 1, 1, new Uint16Array(4)); // half-float targets
 }
@@ -207,7 +207,7 @@ function warmedUp(peers, session, { measure, warmUp }) {
   const { renderer, sss } = session;
   const draw = VARIANTS.includes(measure) ? peers.draw[measure]
     : measure === 'stages' ? peers.draw.ours
-      : measure === 'blur' ? () => sss.renderScattering(renderer) : () => peers.floor.render(renderer, { begin() {}, end() {} });
+      : measure === 'blur' ? () => sss._renderScattering(renderer) : () => peers.floor.render(renderer, { begin() {}, end() {} });
   for (let i = 0; i < warmUp; i++) draw();
 }
 
@@ -221,7 +221,7 @@ async function timed(peers, session, { measure, frames }) {
     const times = await recorded(stageTimer, frames, () => peers.draw.ours());
     return Object.fromEntries(STAGES.map((stage) => [stage, msOf(times, stage)]));
   }
-  const run = measure === 'blur' ? () => sss.renderScattering(renderer) : () => peers.floor.render(renderer, stageTimer);
+  const run = measure === 'blur' ? () => sss._renderScattering(renderer) : () => peers.floor.render(renderer, stageTimer);
   const times = await recorded(stageTimer, frames, run);
   const [first, second] = measure === 'blur' ? ['blurH', 'blurV'] : ['floorH', 'floorV'];
   const a = msOf(times, first);
@@ -345,7 +345,7 @@ export async function floorImages(peers, session) {
   return {
     width: session.width,
     height: session.height,
-    diffuse: await readRenderTargetFloats(renderer, sss.scenePass.renderTarget, 1),
+    diffuse: await readRenderTargetFloats(renderer, sss._scenePass.renderTarget, 1),
     horizontal: await readRenderTargetFloats(renderer, peers.floor.targets[0]),
     output: await readRenderTargetFloats(renderer, peers.floor.targets[1]),
   };

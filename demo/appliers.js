@@ -1,6 +1,7 @@
 // How the demo's state (demo/state.js) reaches the scene and the pipeline: the state keys in groups,
 // and one applier per group (a group is applied whole when one of its keys changes).
 import { getProfile } from '../src/index.js';
+import { computeKernel } from '../src/stages.js';
 import { setLightDirection } from './headScene.js';
 import { shotCamera } from './framing.js';
 import { drawKernel } from './kernelPlot.js';
@@ -54,7 +55,7 @@ export function createAppliers(demo) {
     material: () => sss.makeSubsurface(material, { widthMm: state.width, translucency: state.translucency, shrinkMm: state.shrink }),
     followSurface: () => Object.assign(sss, { followSurface: state.followSurface, depthThresholdMm: state.depthThreshold }),
     transmittance: () => { sss.transmittance = state.transmittance; },
-    lightDepthSize: () => sss.lightDepth.setSize(state.lightDepthSize),
+    lightDepthSize: () => { sss.lightDepthSize = state.lightDepthSize; },
     specular: () => { material.specularIntensity = state.specular; material.roughness = state.roughness; },
     light: () => {
       setLightDirection(rig, state.lightAzimuth, state.lightElevation);
@@ -69,7 +70,7 @@ export function createAppliers(demo) {
       // Depth view: white at the camera, black 30 units (1.5 m) away, past the head at any zoom.
       Object.assign(sss, { debugView: state.view === 'kernel' ? 'final' : state.view, debugDepthRange: 30 });
       kernelCanvas.hidden = state.view !== 'kernel';
-      if (state.view === 'kernel') drawKernel(kernelCanvas, sss.kernel, state.method === 'reference' ? null : getProfile(state.profile));
+      if (state.view === 'kernel') drawKernel(kernelCanvas, kernelOf(sss), state.method === 'reference' ? null : getProfile(state.profile));
       showDivider();
     },
     resolutionScale: () => demo.resize(),
@@ -81,4 +82,10 @@ export function createAppliers(demo) {
       for (const button of shotButtons) button.setAttribute('aria-pressed', String(!state.camera && button.dataset.shot === state.shot));
     },
   };
+}
+
+/** The separable kernel the pipeline's last frame blurred with (its method's, at the frame's taps). */
+function kernelOf(sss) {
+  const method = sss.method === 'reference' ? 'reference' : 'marginal';
+  return computeKernel({ profile: sss.profile, method, samples: sss.plan.samples, strength: sss.strength, falloff: sss.falloff });
 }

@@ -71,7 +71,7 @@ export class PassTimings {
     // the light reaches no subsurface mesh from behind, and with transmittance off).
     // Nothing is timed without a stage timer (WebGPU): no stage can be told skipped either.
     const skipped = this.lastFrame === null || this.stages === NO_STAGE_TIMER ? [] : STAGES.filter((s) => !this.ran.has(s)
-      && (s in medians || (s === 'lightDepth' && this.sss.lightDepth !== null)));
+      && (s in medians || (s === 'lightDepth' && this.sss.light !== null)));
     for (const s of skipped) delete medians[s];
     return { ...medians, skipped, cpu: median(this.frameTimes), fps: 1000 / median(this.frameIntervals) };
   }

@@ -42,7 +42,7 @@ export function testApi(demo, actions, frame) {
     updateTimings() { hud.update(); },
     /** Reads the scene pass's surface attachment (linear depth, width) of the last frame. */
     readSurface() {
-      return readRenderTargetFloats(renderer, sss.scenePass.renderTarget, ATTACHMENTS.SURFACE);
+      return readRenderTargetFloats(renderer, sss._scenePass.renderTarget, ATTACHMENTS.SURFACE);
     },
     /** Renders once and reads the linear HDR image that OutputPass would receive. */
     async readHdr() {

@@ -2,34 +2,10 @@
 // subsurface meshes drawn (estimatePixelsPerMm), the one input the blur stage's own plan takes
 // from outside it (src/3-blur/blurPlan.js), and the nearest depth of a mesh, which the light's
 // side test shares. Both only read the scene graph and run in Node (test/node/framePlan.test.js).
-// planFrame is version 0.2's plan with callbacks into the blur, kept for one minor version.
 import { Vector3 } from 'three';
-import { MIN_KERNEL_PIXELS } from './3-blur/samplingModel.js';
-import { autoSampleCount } from './3-blur/blurPlan.js';
 import { isPerspective, pixelsPerMm } from './support/screenScale.js';
 
-export { autoSampleCount };
-
 const _corner = new Vector3();
-
-/**
- * Version 0.2's frame plan (deprecated: the blur stage plans itself, src/3-blur/blurPlan.js).
- * @param {object} frame
- * @param {boolean} frame.scattering the blur is switched on
- * @param {number} frame.pixelsPerMm the largest on-screen size of a profile millimetre, pixels
- * @param {number|'auto'} frame.samples the taps asked for
- * @param {number} frame.autoRadiusMm the radius 'auto' must resolve pixel by pixel (the marginal's 99 %)
- * @param {(samples: number) => number} frame.radiusMmOf the blur's reach with that many taps, mm
- * @param {(radiusPx: number) => number} [frame.autoSamples=autoSampleCount] the taps 'auto' takes
- * @returns {{ samples: number, kernelPixels: number, blur: boolean }}
- */
-export function planFrame(frame) {
-  if (frame === null || typeof frame !== 'object') throw new TypeError(`planFrame: frame must be an object { scattering, pixelsPerMm, samples, ... }, got ${frame === null ? 'null' : typeof frame}`);
-  const { scattering, pixelsPerMm, samples, autoRadiusMm, radiusMmOf, autoSamples = autoSampleCount } = frame;
-  const taps = samples === 'auto' ? autoSamples(autoRadiusMm * pixelsPerMm) : samples;
-  const kernelPixels = radiusMmOf(taps) * pixelsPerMm;
-  return { samples: taps, kernelPixels, blur: scattering && kernelPixels >= MIN_KERNEL_PIXELS };
-}
 
 /**
  * The view depth of `mesh`'s bounding box corner nearest the camera: no point of the mesh is

@@ -1,14 +1,16 @@
-// The options of the pipeline and of its materials in one place: one schema per constructor, each
-// option's default, check and doc together. Everything else derives from it: the defaults
-// (PIPELINE_DEFAULTS, MATERIAL_DEFAULTS), the checks at the edge (checkPipelineOptions and the
-// setters of SubsurfaceScattering, checkMaterialOptions), the JSDoc typedefs the TypeScript
-// declarations are built from, and the README's options tables (both written by
-// `npm run options-doc`, scripts/optionsDoc.js; test/node/options.test.js fails when they drift).
+// The settings of the pipeline and of its materials in one place: one schema per kind, each
+// setting's default, check, doc and the entries that have it together. Both renderers' entries
+// derive everything from it: the defaults (PIPELINE_DEFAULTS, NODE_DEFAULTS, MATERIAL_DEFAULTS),
+// the checks at the edge (checkPipelineOptions, checkNodeOptions, checkMaterialOptions), the
+// properties of SubsurfaceScattering and SubsurfaceScatteringNode (src/support/settings.js), the
+// JSDoc typedefs below that the TypeScript declarations are built from, and the README's options
+// table (`npm run options-doc`, scripts/optionsDoc.js; test/node/options.test.js fails on a drift).
 import { FloatType, HalfFloatType } from 'three';
 import { getProfile } from './profiles/presets.js';
 import { MAX_PROFILES } from './profiles/profileSlots.js';
 import { MAX_KERNEL_GROUPS, checkKernelGroups } from './3-blur/kernelGroups.js';
 import { describe } from './support/rendererSupport.js';
+import { DEBUG_VIEWS } from './4-compose/debugViews.js';
 import {
   checkBoolean, checkInteger, checkNumber, checkOddInteger, checkOneOf, checkOptions, checkRgb,
 } from './support/parameterChecks.js';
@@ -44,6 +46,8 @@ export const METHOD_TABLE = Object.freeze({
  * The preset diffusion profiles by name (src/profiles/presets.js's `profiles`).
  * @typedef {'skin'|'skinBurley'|'marble'|'milk'} ProfileName
  */
+
+export { DEBUG_VIEWS };
 
 /**
  * The accepted `method` values.
@@ -107,12 +111,16 @@ export const MAX_WIDTH_MM = 1000;
  * @property {string} doc one line, units first
  * @property {boolean} [required] the option has no default: leaving it out is an error
  * @property {string} [defaultDoc] the default as the docs write it, where its value is a code
+ * @property {'assignable'|'readonly'|'constructor'} [access] a property checked on assignment
+ *   (default), a property read only (it sizes or binds what the constructor built: make another
+ *   pipeline), or an option of the constructor only
+ * @property {boolean} [webgpu] whether the WebGPU node has it too (default true)
  */
 
 const SCALE_RANGE = Object.freeze({ min: MIN_SCALE_MM, max: MAX_SCALE_MM, unit: 'mm' });
 
 /** A preset's name or a profile object (getProfile throws a TypeError naming `profile` and the presets). */
-const checkProfile = (value) => (getProfile(value), value);
+const checkProfile = (value) => getProfile(value);
 
 /** @param {string} name @param {*} value */
 function checkSamples(value, name) {
@@ -120,32 +128,33 @@ function checkSamples(value, name) {
 }
 
 /**
- * new SubsurfaceScattering({ ... }): every option. `scene` and `camera` are required; the rest
- * default as listed. Assignable on the pipeline with the same check, except `light`, `type` and
- * `lightDepthSize` (they size targets: make a new pipeline).
+ * Every setting of the pipeline (new SubsurfaceScattering({ ... }) and its properties) and of the
+ * WebGPU node (subsurfaceScattering(scenePass, { ... }), where `webgpu` is not false). `scene`
+ * and `camera` are required on the pipeline (the node reads them from its scene pass); the rest
+ * default as listed.
  * @type {Readonly<Record<string, OptionSpec>>}
  */
 export const PIPELINE_SCHEMA = Object.freeze({
   scene: {
-    default: undefined, required: true, type: "import('three').Scene", doc: 'read every frame (assignable)',
+    default: undefined, required: true, webgpu: false, type: "import('three').Scene", doc: 'the scene drawn, read every frame',
     check(scene, name) {
-      if (!scene || scene.isScene !== true) throw new TypeError(`SubsurfaceScattering: ${name} must be a THREE.Scene, got ${describe(scene)}`);
+      if (!scene || scene.isScene !== true) throw new TypeError(`${name} must be a THREE.Scene, got ${describe(scene)}`);
       return scene;
     },
   },
   camera: {
-    default: undefined, required: true, type: "import('three').Camera", doc: 'read every frame (assignable: switches the view)',
+    default: undefined, required: true, webgpu: false, type: "import('three').Camera", doc: 'the camera drawn with, read every frame',
     check(camera, name) {
-      if (!camera || camera.isCamera !== true) throw new TypeError(`SubsurfaceScattering: ${name} must be a THREE.Camera, got ${describe(camera)}`);
+      if (!camera || camera.isCamera !== true) throw new TypeError(`${name} must be a THREE.Camera, got ${describe(camera)}`);
       return camera;
     },
   },
   light: {
-    default: null, type: "import('three').SpotLight|import('three').DirectionalLight|null",
+    default: null, access: 'readonly', type: "import('three').SpotLight|import('three').DirectionalLight|null",
     doc: 'the light shining through thin parts (transmittance); null: no transmittance',
     check(light, name) {
       if (light !== null && !(light?.isSpotLight || light?.isDirectionalLight)) {
-        throw new TypeError(`SubsurfaceScattering: ${name} must be a THREE.SpotLight, THREE.DirectionalLight or null, got ${describe(light)}`);
+        throw new TypeError(`${name} must be a THREE.SpotLight, THREE.DirectionalLight or null, got ${describe(light)}`);
       }
       return light;
     },
@@ -161,7 +170,7 @@ export const PIPELINE_SCHEMA = Object.freeze({
   },
   method: {
     default: 'footprint', type: "import('./options.js').Method",
-    doc: "how the blur weighs its taps: 'footprint', 'marginal' or 'reference' (METHOD_TABLE)",
+    doc: "how the blur weighs its taps: 'footprint' (each pixel's footprint weighed exactly), 'marginal' or 'reference' (fixed taps; 'reference': Jimenez 2012's kernel); a switch between 'footprint' and the others recompiles the blur",
     check: (value, name) => checkOneOf(name, value, METHODS),
   },
   samples: {
@@ -171,7 +180,7 @@ export const PIPELINE_SCHEMA = Object.freeze({
   },
   kernelGroups: {
     default: 1, type: "number|'auto'",
-    doc: `method 'footprint': 1, one separable kernel (exact along the screen axes only; the fast blur); 'auto' or 2..${MAX_KERNEL_GROUPS}: the profile's Gaussians blurred in groups, the same in every direction, at 1.7 (two groups) to 3 (four) times the blur's time on SwiftShader ('auto': one group where one is within the isotropy budget, a far head, else ${MAX_KERNEL_GROUPS})`,
+    doc: `method 'footprint': 1, one separable kernel (exact along the screen axes only; the fast blur); 'auto' or 2..${MAX_KERNEL_GROUPS}: the profile's Gaussians blurred in groups, the same in every direction, each group an attachment and taps of its own ('auto': one group where one is within the isotropy budget, a far head, else ${MAX_KERNEL_GROUPS})`,
     check: (value, name) => checkKernelGroups(value, name),
   },
   strength: {
@@ -179,7 +188,7 @@ export const PIPELINE_SCHEMA = Object.freeze({
     check: (value, name) => checkRgb(name, value, { min: 0, max: 1 }),
   },
   falloff: {
-    default: undefined, type: 'number[]', doc: "RGB, (0, 10]: method 'reference' only, its kernel's shape",
+    default: undefined, webgpu: false, type: 'number[]', doc: "RGB, (0, 10]: method 'reference' only, its kernel's shape",
     check: (value, name) => checkRgb(name, value, { min: 0, max: 10, minExclusive: true }),
   },
   followSurface: {
@@ -200,18 +209,43 @@ export const PIPELINE_SCHEMA = Object.freeze({
     check: (value, name) => checkInteger(name, value, LIGHT_DEPTH_SIZES.min, LIGHT_DEPTH_SIZES.max, 'pixels'),
   },
   type: {
-    default: HalfFloatType, defaultDoc: 'THREE.HalfFloatType', type: "import('three').TextureDataType", doc: 'THREE.HalfFloatType or THREE.FloatType light targets',
+    default: HalfFloatType, access: 'constructor', webgpu: false, defaultDoc: 'THREE.HalfFloatType', type: "import('three').TextureDataType", doc: 'THREE.HalfFloatType or THREE.FloatType light targets; constructor only',
     check(value, name) {
       if (value !== HalfFloatType && value !== FloatType) {
-        throw new RangeError(`SubsurfaceScattering: ${name} must be THREE.HalfFloatType or THREE.FloatType (light needs HDR targets), got ${describe(value)}`);
+        throw new RangeError(`${name} must be THREE.HalfFloatType or THREE.FloatType (light needs HDR targets), got ${describe(value)}`);
       }
       return value;
     },
   },
   multisampling: {
-    default: 'auto', type: "number|'auto'",
-    doc: "MSAA samples of the scene split, 0..16; 'auto': the composer buffer's `samples`",
+    default: 'auto', webgpu: false, type: "number|'auto'",
+    doc: "MSAA samples of the scene split, 0..16; 'auto': the composer buffer's `samples` (the node: its scene pass's)",
     check: (value, name) => (value === 'auto' ? value : checkInteger(name, value, 0, MAX_MULTISAMPLING, "samples (or 'auto')")),
+  },
+  scattering: {
+    default: true, type: 'boolean', doc: 'false: no blur, the unblurred diffuse light composed (transmittance stays)',
+    check: (value, name) => checkBoolean(name, value),
+  },
+  transmittance: {
+    default: true, type: 'boolean', doc: "light through thin parts for every material (a uniform); needs `light`",
+    check: (value, name) => checkBoolean(name, value),
+  },
+  debugView: {
+    default: 'final', type: "import('./4-compose/debugViews.js').DebugView",
+    doc: "the final image or one ingredient: 'final', 'diffuse', 'specular', 'depth', 'mask', and with `light` 'thickness', 'transmittance'",
+    check: (value, name) => checkOneOf(name, value, DEBUG_VIEWS),
+  },
+  debugDepthRange: {
+    default: 10, type: 'number', doc: "world units of view depth the 'depth' view maps from white (near) to black",
+    check: (value, name) => checkNumber(name, value, { min: 0, minExclusive: true, unit: 'world units' }),
+  },
+  debugThicknessRangeMm: {
+    default: 10, type: 'number', doc: "profile mm of thickness the 'thickness' view maps from black to white",
+    check: (value, name) => checkNumber(name, value, { min: 0, minExclusive: true, unit: 'mm' }),
+  },
+  split: {
+    default: 0, webgpu: false, type: 'number', doc: 'the fraction of the width, from the left, shown without scattering, 0..1',
+    check: (value, name) => checkNumber(name, value, { min: 0, max: 1 }),
   },
 });
 
@@ -245,12 +279,12 @@ export const MATERIAL_SCHEMA = Object.freeze({
     default: undefined, type: "import('./options.js').ProfileName|object|null",
     doc: `this material's diffusion profile, as the pipeline's \`profile\` (left out: as before, at first the pipeline's; null: back to the pipeline's); up to ${MAX_PROFILES} per pipeline`,
     // null: the pipeline's again (a rebind keeps what it leaves out, so undefined cannot say it).
-    check: (value) => (value === null ? undefined : checkProfile(value)),
+    check: (value) => (value === null ? undefined : (checkProfile(value), value)), // kept as given: a material's options read back as written
   },
 });
 
-/** Old option names still accepted, each mapped to its schema name (one minor version; see CHANGELOG.md). */
-export const MATERIAL_ALIASES = Object.freeze({ strength: 'widthScale' });
+/** The schema's entries the WebGPU node has (the node reads its scene and camera from its scene pass). */
+export const NODE_SCHEMA = Object.freeze(Object.fromEntries(Object.entries(PIPELINE_SCHEMA).filter(([, spec]) => spec.webgpu !== false)));
 
 /** @param {Readonly<Record<string, OptionSpec>>} schema */
 const defaultsOf = (schema) => Object.freeze(Object.fromEntries(
@@ -260,14 +294,43 @@ const defaultsOf = (schema) => Object.freeze(Object.fromEntries(
 /** new SubsurfaceScattering({ ... }): every option's default (scene and camera have none). */
 export const PIPELINE_DEFAULTS = defaultsOf(PIPELINE_SCHEMA);
 
+/** subsurfaceScattering(scenePass, { ... }) (the WebGPU node): every option's default, the pipeline's. */
+export const NODE_DEFAULTS = defaultsOf(NODE_SCHEMA);
+
 /** Every option new SubsurfaceScattering({ ... }) accepts (any other key is refused, naming it). */
 export const PIPELINE_OPTIONS = Object.freeze(Object.keys(PIPELINE_SCHEMA));
 
 /** makeSubsurface(material, { ... }) of a pipeline: every option's default. */
 export const MATERIAL_DEFAULTS = defaultsOf(MATERIAL_SCHEMA);
 
-/** Every option a pipeline's makeSubsurface(material, { ... }) accepts (`strength`: widthScale's old name). */
-export const MATERIAL_OPTIONS = Object.freeze([...Object.keys(MATERIAL_SCHEMA), ...Object.keys(MATERIAL_ALIASES)]);
+/** Every option a pipeline's makeSubsurface(material, { ... }) accepts. */
+export const MATERIAL_OPTIONS = Object.freeze(Object.keys(MATERIAL_SCHEMA));
+
+/**
+ * The settings that are properties of an entry's object: every entry of `schema` but the
+ * constructor's own, each with whether it is assignable.
+ * @param {Readonly<Record<string, OptionSpec>>} schema
+ * @returns {ReadonlyArray<{ name: string, assignable: boolean }>}
+ */
+export const propertiesOf = (schema) => Object.freeze(Object.entries(schema)
+  .filter(([, spec]) => spec.access !== 'constructor')
+  .map(([name, spec]) => Object.freeze({ name, assignable: spec.access !== 'readonly' })));
+
+/** The debug views that show what the light depth map gives: they need the pipeline's `light`. */
+export const LIGHT_VIEWS = Object.freeze(['thickness', 'transmittance']);
+
+/**
+ * Refuses a setting that needs a light on a pipeline or node without one: `transmittance` true,
+ * and the light's debug views (a TypeError naming the setting and the value).
+ * @param {string} name @param {*} value @param {object|null} light
+ */
+export function checkNeedsLight(name, value, light) {
+  const needs = name === 'transmittance' ? value === true : name === 'debugView' && LIGHT_VIEWS.includes(value);
+  if (needs && !light) {
+    throw new TypeError(`${name} = ${JSON.stringify(value)} needs a light (a THREE.SpotLight or THREE.DirectionalLight given as \`light\` to the constructor); there is none`);
+  }
+  return value;
+}
 
 /**
  * Checks one option against its schema: the accepted value, or a TypeError/RangeError naming it.
@@ -287,21 +350,19 @@ export function checkOption(schema, name, value) {
  * @param {string} what e.g. 'SubsurfaceScattering options'
  * @param {Readonly<Record<string, OptionSpec>>} schema
  * @param {*} options
- * @param {Readonly<Record<string, string>>} [aliases] old name → schema name
  * @returns {Record<string, *>}
  */
-export function checkSchemaOptions(what, schema, options, aliases = {}) {
+export function checkSchemaOptions(what, schema, options) {
   if (options === undefined || options === null || typeof options !== 'object' || Array.isArray(options)) {
     throw new TypeError(`${what} must be an object, got ${describe(options)}`);
   }
-  checkOptions(what, options, [...Object.keys(schema), ...Object.keys(aliases)]);
+  checkOptions(what, options, Object.keys(schema));
   const checked = {};
   for (const [name, spec] of Object.entries(schema)) {
-    const alias = Object.keys(aliases).find((old) => aliases[old] === name && Object.hasOwn(options, old));
-    const given = Object.hasOwn(options, name) ? name : alias;
+    const given = Object.hasOwn(options, name) ? name : undefined;
     if (given === undefined) {
       if (spec.required) spec.check(undefined, name); // throws, naming the option and what it must be
-      checked[name] = spec.default;
+      checked[name] = spec.default === undefined ? undefined : spec.check(spec.default, name); // as its check keeps it (a profile's name: the profile)
     } else if (options[given] === undefined && spec.default === undefined && !spec.required) {
       checked[name] = undefined; // an option without a default may be given as undefined
     } else {
@@ -324,6 +385,14 @@ export function checkPipelineOptions(options) {
 }
 
 /**
+ * subsurfaceScattering(scenePass, { ... })'s options (the WebGPU node), checked, with the defaults.
+ * @param {*} [options]
+ */
+export function checkNodeOptions(options = {}) {
+  return checkSchemaOptions('subsurfaceScattering options', NODE_SCHEMA, options);
+}
+
+/**
  * A pipeline's makeSubsurface(material, { ... }) options, checked, on top of `previous` (the
  * material's earlier options in that pipeline, or the defaults).
  * @param {*} options
@@ -334,8 +403,115 @@ export function checkMaterialOptions(options = {}, previous = MATERIAL_DEFAULTS)
   const merged = { ...previous };
   for (const [name, value] of Object.entries(given)) {
     if (value === undefined) continue;
-    const target = MATERIAL_ALIASES[name] ?? name;
-    merged[target] = MATERIAL_SCHEMA[target].check(value, name);
+    merged[name] = MATERIAL_SCHEMA[name].check(value, name);
   }
   return merged;
 }
+
+// <options-typedef> (generated by scripts/optionsDoc.js from src/options.js)
+/**
+ * new SubsurfaceScattering({ ... }): the defaults are PIPELINE_DEFAULTS.
+ * @typedef {object} SubsurfaceScatteringOptions
+ * @property {import('three').Scene} scene the scene drawn, read every frame
+ * @property {import('three').Camera} camera the camera drawn with, read every frame
+ * @property {import('three').SpotLight|import('three').DirectionalLight|null} [light=null] the light shining through thin parts (transmittance); null: no transmittance
+ * @property {number} [worldUnitInMm=1000] millimetres per world unit (three.js: metres, 1000)
+ * @property {ProfileName|object} [profile='skin'] a preset's name ('skin', 'skinBurley', 'marble', 'milk') or a profile object (burleyProfile, dipoleProfile, gaussianSumProfile)
+ * @property {Method} [method='footprint'] how the blur weighs its taps: 'footprint' (each pixel's footprint weighed exactly), 'marginal' or 'reference' (fixed taps; 'reference': Jimenez 2012's kernel); a switch between 'footprint' and the others recompiles the blur
+ * @property {number|'auto'} [samples='auto'] taps per direction, odd, 3..63 (a budget for 'footprint'); 'auto': as few as the on-screen scale needs
+ * @property {number|'auto'} [kernelGroups=1] method 'footprint': 1, one separable kernel (exact along the screen axes only; the fast blur); 'auto' or 2..4: the profile's Gaussians blurred in groups, the same in every direction, each group an attachment and taps of its own ('auto': one group where one is within the isotropy budget, a far head, else 4)
+ * @property {number[]} [strength] RGB, 0..1: mix with no scattering (the reference model)
+ * @property {number[]} [falloff] RGB, (0, 10]: method 'reference' only, its kernel's shape
+ * @property {FollowSurfaceMode} [followSurface='drop'] a tap on another surface: 'drop' (renormalise), 'lerp' (to the centre) or 'off'
+ * @property {number} [depthThresholdMm=6] mm of depth step taken for another surface (close to the reference's constant at its field of view)
+ * @property {boolean} [foreshortening=true] narrow the blur on surfaces seen at grazing angles
+ * @property {number} [lightDepthSize=1024] the light depth map resolution, pixels (16..8192)
+ * @property {import('three').TextureDataType} [type=THREE.HalfFloatType] THREE.HalfFloatType or THREE.FloatType light targets; constructor only
+ * @property {number|'auto'} [multisampling='auto'] MSAA samples of the scene split, 0..16; 'auto': the composer buffer's `samples` (the node: its scene pass's)
+ * @property {boolean} [scattering=true] false: no blur, the unblurred diffuse light composed (transmittance stays)
+ * @property {boolean} [transmittance=true] light through thin parts for every material (a uniform); needs `light`
+ * @property {import('./4-compose/debugViews.js').DebugView} [debugView='final'] the final image or one ingredient: 'final', 'diffuse', 'specular', 'depth', 'mask', and with `light` 'thickness', 'transmittance'
+ * @property {number} [debugDepthRange=10] world units of view depth the 'depth' view maps from white (near) to black
+ * @property {number} [debugThicknessRangeMm=10] profile mm of thickness the 'thickness' view maps from black to white
+ * @property {number} [split=0] the fraction of the width, from the left, shown without scattering, 0..1
+ */
+
+/**
+ * subsurfaceScattering(scenePass, { ... }) (the WebGPU node): the defaults are NODE_DEFAULTS.
+ * @typedef {object} SubsurfaceScatteringNodeOptions
+ * @property {import('three').SpotLight|import('three').DirectionalLight|null} [light=null] the light shining through thin parts (transmittance); null: no transmittance
+ * @property {number} [worldUnitInMm=1000] millimetres per world unit (three.js: metres, 1000)
+ * @property {ProfileName|object} [profile='skin'] a preset's name ('skin', 'skinBurley', 'marble', 'milk') or a profile object (burleyProfile, dipoleProfile, gaussianSumProfile)
+ * @property {Method} [method='footprint'] how the blur weighs its taps: 'footprint' (each pixel's footprint weighed exactly), 'marginal' or 'reference' (fixed taps; 'reference': Jimenez 2012's kernel); a switch between 'footprint' and the others recompiles the blur
+ * @property {number|'auto'} [samples='auto'] taps per direction, odd, 3..63 (a budget for 'footprint'); 'auto': as few as the on-screen scale needs
+ * @property {number|'auto'} [kernelGroups=1] method 'footprint': 1, one separable kernel (exact along the screen axes only; the fast blur); 'auto' or 2..4: the profile's Gaussians blurred in groups, the same in every direction, each group an attachment and taps of its own ('auto': one group where one is within the isotropy budget, a far head, else 4)
+ * @property {number[]} [strength] RGB, 0..1: mix with no scattering (the reference model)
+ * @property {FollowSurfaceMode} [followSurface='drop'] a tap on another surface: 'drop' (renormalise), 'lerp' (to the centre) or 'off'
+ * @property {number} [depthThresholdMm=6] mm of depth step taken for another surface (close to the reference's constant at its field of view)
+ * @property {boolean} [foreshortening=true] narrow the blur on surfaces seen at grazing angles
+ * @property {number} [lightDepthSize=1024] the light depth map resolution, pixels (16..8192)
+ * @property {boolean} [scattering=true] false: no blur, the unblurred diffuse light composed (transmittance stays)
+ * @property {boolean} [transmittance=true] light through thin parts for every material (a uniform); needs `light`
+ * @property {import('./4-compose/debugViews.js').DebugView} [debugView='final'] the final image or one ingredient: 'final', 'diffuse', 'specular', 'depth', 'mask', and with `light` 'thickness', 'transmittance'
+ * @property {number} [debugDepthRange=10] world units of view depth the 'depth' view maps from white (near) to black
+ * @property {number} [debugThicknessRangeMm=10] profile mm of thickness the 'thickness' view maps from black to white
+ */
+
+/**
+ * SubsurfaceScattering's settings, as properties (assigning one checks it as the constructor does).
+ * @typedef {object} PipelineSettings
+ * @property {import('three').Scene} scene the scene drawn, read every frame
+ * @property {import('three').Camera} camera the camera drawn with, read every frame
+ * @property {import('three').SpotLight|import('three').DirectionalLight|null} light the light shining through thin parts (transmittance); null: no transmittance (read-only: given to the constructor)
+ * @property {number} worldUnitInMm millimetres per world unit (three.js: metres, 1000)
+ * @property {ProfileName|object} profile a preset's name ('skin', 'skinBurley', 'marble', 'milk') or a profile object (burleyProfile, dipoleProfile, gaussianSumProfile)
+ * @property {Method} method how the blur weighs its taps: 'footprint' (each pixel's footprint weighed exactly), 'marginal' or 'reference' (fixed taps; 'reference': Jimenez 2012's kernel); a switch between 'footprint' and the others recompiles the blur
+ * @property {number|'auto'} samples taps per direction, odd, 3..63 (a budget for 'footprint'); 'auto': as few as the on-screen scale needs
+ * @property {number|'auto'} kernelGroups method 'footprint': 1, one separable kernel (exact along the screen axes only; the fast blur); 'auto' or 2..4: the profile's Gaussians blurred in groups, the same in every direction, each group an attachment and taps of its own ('auto': one group where one is within the isotropy budget, a far head, else 4)
+ * @property {number[]|undefined} strength RGB, 0..1: mix with no scattering (the reference model)
+ * @property {number[]|undefined} falloff RGB, (0, 10]: method 'reference' only, its kernel's shape
+ * @property {FollowSurfaceMode} followSurface a tap on another surface: 'drop' (renormalise), 'lerp' (to the centre) or 'off'
+ * @property {number} depthThresholdMm mm of depth step taken for another surface (close to the reference's constant at its field of view)
+ * @property {boolean} foreshortening narrow the blur on surfaces seen at grazing angles
+ * @property {number} lightDepthSize the light depth map resolution, pixels (16..8192)
+ * @property {number|'auto'} multisampling MSAA samples of the scene split, 0..16; 'auto': the composer buffer's `samples` (the node: its scene pass's)
+ * @property {boolean} scattering false: no blur, the unblurred diffuse light composed (transmittance stays)
+ * @property {boolean} transmittance light through thin parts for every material (a uniform); needs `light`
+ * @property {import('./4-compose/debugViews.js').DebugView} debugView the final image or one ingredient: 'final', 'diffuse', 'specular', 'depth', 'mask', and with `light` 'thickness', 'transmittance'
+ * @property {number} debugDepthRange world units of view depth the 'depth' view maps from white (near) to black
+ * @property {number} debugThicknessRangeMm profile mm of thickness the 'thickness' view maps from black to white
+ * @property {number} split the fraction of the width, from the left, shown without scattering, 0..1
+ */
+
+/**
+ * SubsurfaceScatteringNode's settings, as properties (assigning one checks it as the constructor does).
+ * @typedef {object} NodeSettings
+ * @property {import('three').SpotLight|import('three').DirectionalLight|null} light the light shining through thin parts (transmittance); null: no transmittance (read-only: given to the constructor)
+ * @property {number} worldUnitInMm millimetres per world unit (three.js: metres, 1000)
+ * @property {ProfileName|object} profile a preset's name ('skin', 'skinBurley', 'marble', 'milk') or a profile object (burleyProfile, dipoleProfile, gaussianSumProfile)
+ * @property {Method} method how the blur weighs its taps: 'footprint' (each pixel's footprint weighed exactly), 'marginal' or 'reference' (fixed taps; 'reference': Jimenez 2012's kernel); a switch between 'footprint' and the others recompiles the blur
+ * @property {number|'auto'} samples taps per direction, odd, 3..63 (a budget for 'footprint'); 'auto': as few as the on-screen scale needs
+ * @property {number|'auto'} kernelGroups method 'footprint': 1, one separable kernel (exact along the screen axes only; the fast blur); 'auto' or 2..4: the profile's Gaussians blurred in groups, the same in every direction, each group an attachment and taps of its own ('auto': one group where one is within the isotropy budget, a far head, else 4)
+ * @property {number[]|undefined} strength RGB, 0..1: mix with no scattering (the reference model)
+ * @property {FollowSurfaceMode} followSurface a tap on another surface: 'drop' (renormalise), 'lerp' (to the centre) or 'off'
+ * @property {number} depthThresholdMm mm of depth step taken for another surface (close to the reference's constant at its field of view)
+ * @property {boolean} foreshortening narrow the blur on surfaces seen at grazing angles
+ * @property {number} lightDepthSize the light depth map resolution, pixels (16..8192)
+ * @property {boolean} scattering false: no blur, the unblurred diffuse light composed (transmittance stays)
+ * @property {boolean} transmittance light through thin parts for every material (a uniform); needs `light`
+ * @property {import('./4-compose/debugViews.js').DebugView} debugView the final image or one ingredient: 'final', 'diffuse', 'specular', 'depth', 'mask', and with `light` 'thickness', 'transmittance'
+ * @property {number} debugDepthRange world units of view depth the 'depth' view maps from white (near) to black
+ * @property {number} debugThicknessRangeMm profile mm of thickness the 'thickness' view maps from black to white
+ */
+
+/**
+ * makeSubsurface(material, { ... }) of a pipeline: the defaults are MATERIAL_DEFAULTS.
+ * @typedef {object} SubsurfaceMaterialOptions
+ * @property {number} [widthMm=1] mm of material per profile mm, (0, 1000] (1: the profile at its physical size)
+ * @property {number} [widthScale=1] scales the width, 0..1 (0: no scattering, the light kept)
+ * @property {boolean} [transmittance=true] light through thin parts (with the pipeline's light)
+ * @property {number} [translucency=0] 0..1 (exclusive): light through regardless of thickness
+ * @property {number} [shrinkMm=0.6] how far the light depth lookup moves inwards, mm (0..1000)
+ * @property {ProfileName|object|null} [profile] this material's diffusion profile, as the pipeline's `profile` (left out: as before, at first the pipeline's; null: back to the pipeline's); up to 8 per pipeline
+ */
+// </options-typedef>

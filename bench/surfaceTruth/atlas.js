@@ -83,7 +83,7 @@ export async function renderSurfaceAtlas({ renderer, built, mesh, widthMm, viewH
     mesh.frustumCulled = false;
     mesh.material = material;
     composer.render();
-    diffuse = await readRenderTargetFloats(renderer, sss.scenePass.renderTarget, 1);
+    diffuse = await readRenderTargetFloats(renderer, sss._scenePass.renderTarget, 1);
   } finally {
     Object.assign(mesh, own);
     sss.dispose();

@@ -358,8 +358,8 @@ async function renderSetting(setting) {
   const { sss, composer, none } = pipelineOf(setting);
   try {
     composer.render();
-    const diffuse = await readRenderTargetFloats(renderer, sss.scenePass.renderTarget, 1);
-    const scattered = none ? diffuse : await readRenderTargetFloats(renderer, sss.scatteredTarget);
+    const diffuse = await readRenderTargetFloats(renderer, sss._scenePass.renderTarget, 1);
+    const scattered = none ? diffuse : await readRenderTargetFloats(renderer, sss._blur.scatteredTarget);
     return { diffuse, scattered };
   } finally {
     sss.dispose();
@@ -406,8 +406,8 @@ async function costs(settings, { rounds = 3, reruns = 2 } = {}) {
         rig.composer.render();
         timer.recording = true;
         for (let k = 0; k < reruns; k++) {
-          rig.sss.renderScattering(renderer);
-          renderer.readRenderTargetPixels(rig.sss.scatteredTarget, 0, 0, 1, 1, pixel);
+          rig.sss._renderScattering(renderer);
+          renderer.readRenderTargetPixels(rig.sss._blur.scatteredTarget, 0, 0, 1, 1, pixel);
         }
         timer.recording = false;
         rig.ms.push(...sssStageTimes(await timer.collect()));

@@ -106,6 +106,9 @@ export class LightDepthTarget extends LightDepthView {
     this.updateCamera();
     /** @type {[import('three').Object3D, any][]} */
     const swapped = [];
+    // A user's static shadows (autoUpdate false, needsUpdate true) are for the scene's own draw:
+    // three would draw them here, with the depth materials swapped in, and spend the flag.
+    const shadowsNeedUpdate = renderer.shadowMap.needsUpdate;
     preservingRendererState(renderer, scene, () => {
       try {
         // Per mesh rather than scene.overrideMaterial: an override would draw a leaf card's
@@ -119,6 +122,7 @@ export class LightDepthTarget extends LightDepthView {
         scene.overrideMaterial = null;
         scene.background = null;
         renderer.shadowMap.autoUpdate = false; // the light's view needs no shadow maps
+        renderer.shadowMap.needsUpdate = false;
         renderer.setRenderTarget(this.renderTarget);
         renderer.setClearColor(0x000000, 0); // 0 = no surface
         renderer.autoClear = false;
@@ -127,6 +131,7 @@ export class LightDepthTarget extends LightDepthView {
         this.valid = true;
       } finally {
         for (const [object, material] of swapped) object.material = material;
+        renderer.shadowMap.needsUpdate = shadowsNeedUpdate;
       }
     });
   }

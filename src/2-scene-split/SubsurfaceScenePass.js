@@ -98,8 +98,6 @@ export class SubsurfaceScenePass extends Pass {
   get surfaceTexture() { return this.renderTarget.textures[ATTACHMENTS.SURFACE]; }
   /** The scene's depth (of its opaque part), a DepthTexture. */
   get depthTexture() { return this.renderTarget.depthTexture; }
-  /** The old name of colorTexture (it holds more than light: see colorTexture). */
-  get lightTexture() { return this.colorTexture; }
 
   /** @param {number} width device pixels @param {number} height device pixels */
   setSize(width, height) {

@@ -8,7 +8,6 @@ import { Matrix4, Vector3 } from 'three';
 import { LightDepthView } from '../1-light-depth/LightDepthView.js';
 import { ProfileLookup } from '../profiles/ProfileLookup.js';
 import { describe } from '../support/rendererSupport.js';
-import { checkBoolean } from '../support/parameterChecks.js';
 import { nearestViewDepth } from '../framePlan.js';
 import { MATERIAL_DEFAULTS, MATERIAL_SCHEMA, PIPELINE_SCHEMA, checkOption } from '../options.js';
 
@@ -46,18 +45,6 @@ export function transmittanceUniformSlots() {
   };
 }
 
-/**
- * Checks `who.transmittance = enabled` of a pipeline or a node: a boolean, and true only for one
- * with a light (`lightDepth`); `noLight` ends the message ("this pipeline has none (...)").
- * @returns {boolean} enabled
- */
-export function checkTransmittanceSwitch(who, enabled, lightDepth, noLight) {
-  checkBoolean(`${who}.transmittance`, enabled);
-  if (enabled && !lightDepth) {
-    throw new TypeError(`${who}.transmittance: light must be a THREE.SpotLight or THREE.DirectionalLight to turn transmittance on, and ${noLight}`);
-  }
-  return enabled;
-}
 
 /**
  * Checked transmittance settings (see createTransmittanceUniforms' options), frozen.

@@ -465,12 +465,12 @@ export class BlurStage {
  * blur with the dense 2D reference, a brute-force 2D convolution with its one profile whose cost
  * grows with the square of the on-screen radius, instead of its separable passes; `enabled` false
  * puts the passes back. A RangeError (nothing changed) while its materials use several profiles.
- * @param {{ blur: BlurStage }} pipeline a SubsurfaceScattering
+ * @param {{ _blur: BlurStage }} pipeline a SubsurfaceScattering
  * @param {boolean} [enabled=true]
  * @returns {DenseSubsurfacePass|null} the dense pass (its coverage, radius), or null when disabled
  */
 export function useDenseReference(pipeline, enabled = true) {
   if (typeof enabled !== 'boolean') throw new TypeError(`useDenseReference: enabled must be a boolean, got ${typeof enabled}`);
-  pipeline.blur.setDenseReference(enabled);
-  return enabled ? pipeline.blur.densePass : null;
+  pipeline._blur.setDenseReference(enabled);
+  return enabled ? pipeline._blur.densePass : null;
 }

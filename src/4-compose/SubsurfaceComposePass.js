@@ -13,8 +13,8 @@ import { describe } from '../support/rendererSupport.js';
 import { checkBoolean, checkOneOf, checkNumber, checkOptions } from '../support/parameterChecks.js';
 import { PASS_BOOLEANS, booleanFields } from '../support/booleanFields.js';
 import { DEBUG_VIEWS, DEBUG_VIEW } from './debugViews.js';
+import { PIPELINE_DEFAULTS } from '../options.js';
 
-export { DEBUG_VIEWS, DEBUG_VIEW };
 
 const fragmentShader = assembleGlsl('SubsurfaceComposePass', composeGlsl, { 'common/finite.glsl': finiteGlsl, 'common/carriedDepth.glsl': carriedDepthGlsl });
 
@@ -23,29 +23,21 @@ export class SubsurfaceComposePass extends ShaderPass {
   /**
    * @param {object} options
    * @param {import('three').Texture} options.colorTexture the multi-target's colour attachment:
-   *   specular + emissive of subsurface pixels, full colour elsewhere (old name: lightTexture)
+   *   specular + emissive of subsurface pixels, full colour elsewhere
    * @param {import('three').Texture} options.surfaceTexture the multi-target's surface attachment
    * @param {import('three').Texture} options.diffuseTexture the diffuse light before the blur; its
-   *   alpha marks the mask, as 1, the coverage or a carried depth: not 0 (split view, debug views;
-   *   old name: unscatteredTexture)
+   *   alpha marks the mask, as 1, the coverage or a carried depth: not 0 (split view, debug views)
    * @param {import('three').Texture|null} [options.scatteredTexture=null] the blurred diffuse light,
    *   its alpha the mask as the diffuse's (0 off it: the blur's output, or the diffuse itself); null
    *   reads the composer's read buffer
    * @param {import('three').DepthTexture} options.depthTexture the multi-target's depth, written
    *   out as the target's depth
-   * @param {import('three').Texture} [options.lightTexture] colorTexture's old name (deprecated)
-   * @param {import('three').Texture} [options.unscatteredTexture] diffuseTexture's old name (deprecated)
    */
   constructor(options = {}) {
     const {
-      colorTexture, lightTexture, surfaceTexture, diffuseTexture, unscatteredTexture, scatteredTexture = null, depthTexture,
-    } = checkOptions('SubsurfaceComposePass options', options);
-    const inputs = {
-      colorTexture: colorTexture ?? lightTexture,
-      surfaceTexture,
-      diffuseTexture: diffuseTexture ?? unscatteredTexture,
-      depthTexture,
-    };
+      colorTexture, surfaceTexture, diffuseTexture, scatteredTexture = null, depthTexture,
+    } = checkOptions('SubsurfaceComposePass options', options, ['colorTexture', 'surfaceTexture', 'diffuseTexture', 'scatteredTexture', 'depthTexture']);
+    const inputs = { colorTexture, surfaceTexture, diffuseTexture, depthTexture };
     for (const [name, t] of Object.entries(inputs)) {
       if (!t || t.isTexture !== true) throw new TypeError(`SubsurfaceComposePass: ${name} must be a THREE.Texture, got ${describe(t)}`);
     }
@@ -55,7 +47,7 @@ export class SubsurfaceComposePass extends ShaderPass {
       uniforms: {
         tColor: { value: null }, tScattered: { value: null }, tDiffuse: { value: null }, tSurface: { value: null },
         tDepth: { value: null }, farDepth: { value: 1 },
-        splitX: { value: 0 }, debugDepthRange: { value: 100 }, debugThicknessRangeMm: { value: 10 },
+        splitX: { value: 0 }, debugDepthRange: { value: PIPELINE_DEFAULTS.debugDepthRange }, debugThicknessRangeMm: { value: PIPELINE_DEFAULTS.debugThicknessRangeMm },
         maskBox: { value: new Vector4(0, 0, 0x7fffffff, 0x7fffffff) },
       },
       vertexShader,
@@ -76,13 +68,13 @@ export class SubsurfaceComposePass extends ShaderPass {
    * Shows the final image or one ingredient: 'final', 'diffuse' (scattered), 'specular', 'depth'
    * (near = white over `depthRange` world units), 'mask', 'thickness' (the thickness T(d) is read
    * at, in profile mm: physical mm × (1 − translucency) / widthMm; `thicknessRangeMm` = white),
-   * 'transmittance'. The last two need the materials to write them (SubsurfaceScattering.setDebugView).
+   * 'transmittance'. The last two need the materials to write them (SubsurfaceScattering's debugView does).
    * @param {import('./debugViews.js').DebugView} view one of DEBUG_VIEWS
    * @param {{ depthRange?: number, thicknessRangeMm?: number }} [options]
    */
   setDebugView(view, options = {}) {
     checkOneOf('view', view, DEBUG_VIEWS);
-    const { depthRange = 100, thicknessRangeMm = 10 } = checkOptions('setDebugView options', options, ['depthRange', 'thicknessRangeMm']);
+    const { depthRange = PIPELINE_DEFAULTS.debugDepthRange, thicknessRangeMm = PIPELINE_DEFAULTS.debugThicknessRangeMm } = checkOptions('setDebugView options', options, ['depthRange', 'thicknessRangeMm']);
     checkNumber('depthRange', depthRange, { min: 0, minExclusive: true, max: Infinity, unit: 'world units' });
     checkNumber('thicknessRangeMm', thicknessRangeMm, { min: 0, minExclusive: true, max: Infinity, unit: 'mm' });
     setDefines(this.material, enumDefines('DEBUG_VIEW', DEBUG_VIEWS, view));

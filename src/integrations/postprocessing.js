@@ -32,7 +32,7 @@ function typeName(type) {
 }
 
 export class SubsurfaceScatteringPass extends Pass {
-  /** @param {import('../SubsurfaceScattering.js').SubsurfaceScatteringOptions} options as for SubsurfaceScattering */
+  /** @param {import('../options.js').SubsurfaceScatteringOptions} options as for SubsurfaceScattering */
   constructor(options) {
     // The pipeline checks the options (TypeError naming the one that is wrong) before pmndrs's
     // Pass would substitute a scene and camera of its own for missing ones.
@@ -69,7 +69,7 @@ export class SubsurfaceScatteringPass extends Pass {
   /**
    * Makes `material` scatter with this pass's profile, scale and light (SubsurfaceScattering.makeSubsurface).
    * @param {import('three').MeshStandardMaterial} material
-   * @param {import('../SubsurfaceScattering.js').SubsurfaceMaterialOptions} [options]
+   * @param {import('../options.js').SubsurfaceMaterialOptions} [options]
    */
   makeSubsurface(material, options) {
     return this.pipeline.makeSubsurface(material, options);

@@ -30,7 +30,7 @@ import { SubsurfaceScattering } from '../index.js';
 import { checkBoolean, checkInteger, checkOptions } from '../support/parameterChecks.js';
 
 /**
- * @typedef {Omit<import('../SubsurfaceScattering.js').SubsurfaceScatteringOptions, 'scene'|'camera'|'light'> & {
+ * @typedef {Omit<import('../options.js').SubsurfaceScatteringOptions, 'scene'|'camera'|'light'> & {
  *   light?: import('three').SpotLight|import('three').DirectionalLight|{ current: import('three').SpotLight|import('three').DirectionalLight|null }|null,
  *   samples?: number|'auto',
  *   antialias?: number,
@@ -50,14 +50,14 @@ class SubsurfaceRegistry {
     this.pass = null;
     /** @type {EffectComposer|null} */
     this.composer = null;
-    /** @type {Map<import('three').MeshStandardMaterial, import('../SubsurfaceScattering.js').SubsurfaceMaterialOptions>} */
+    /** @type {Map<import('three').MeshStandardMaterial, import('../options.js').SubsurfaceMaterialOptions>} */
     this.materials = new Map();
   }
 
   /**
    * Makes `material` scatter in this composer (now, and after every rebuild).
    * @param {import('three').MeshStandardMaterial} material
-   * @param {import('../SubsurfaceScattering.js').SubsurfaceMaterialOptions} [options]
+   * @param {import('../options.js').SubsurfaceMaterialOptions} [options]
    */
   add(material, options = {}) {
     this.materials.set(material, options);
@@ -177,7 +177,7 @@ function useRegistry(name) {
 
 /**
  * The enclosing <SubsurfaceComposer>'s registry: `pass` (the SubsurfaceScattering, for its
- * settings: setDebugView, setKernel...; null until built) and `composer`.
+ * settings as properties: pass.debugView = 'mask', pass.samples = 25; null until built) and `composer`.
  * @returns {SubsurfaceRegistry}
  */
 export function useSubsurfaceComposer() {
@@ -188,7 +188,7 @@ export function useSubsurfaceComposer() {
  * Makes `material` scatter in the enclosing <SubsurfaceComposer> while the calling component is
  * mounted (for materials made in code, e.g. a loaded model's). null: nothing.
  * @param {import('three').MeshStandardMaterial|null|undefined} material
- * @param {import('../SubsurfaceScattering.js').SubsurfaceMaterialOptions} [options]
+ * @param {import('../options.js').SubsurfaceMaterialOptions} [options]
  */
 export function useSubsurface(material, options = {}) {
   const registry = useRegistry('useSubsurface');
@@ -203,7 +203,7 @@ export function useSubsurface(material, options = {}) {
 /**
  * As a child of <meshStandardMaterial> or <meshPhysicalMaterial>: makes that material scatter in
  * the enclosing <SubsurfaceComposer> while mounted.
- * @param {import('../SubsurfaceScattering.js').SubsurfaceMaterialOptions} props
+ * @param {import('../options.js').SubsurfaceMaterialOptions} props
  * @returns {import('react').ReactElement}
  */
 export function Subsurface(props) {

@@ -21,9 +21,14 @@ export function assertFloatRenderTargets(renderer, who) {
   }
 }
 
-/** A short description of a value for error messages: an object by its class, else as written. */
+/**
+ * A short description of a value for error messages, minification-proof: a three.js object by its
+ * `type` ('PointLight', 'Mesh') and its name as the user gave it, else by what it is (a class's
+ * constructor name only when nothing else says it: production builds minify those).
+ */
 export function describe(value) {
   if (value && typeof value === 'object' && !Array.isArray(value) && !ArrayBuffer.isView(value)) {
+    if (typeof value.type === 'string' && value.type !== '') return value.name ? `${value.type} '${value.name}'` : `${/^[AEIOU]/.test(value.type) ? 'an' : 'a'} ${value.type}`;
     return value.constructor?.name ?? describeValue(value);
   }
   return describeValue(value);

@@ -9,8 +9,21 @@ import { REVISION } from 'three';
 /** The oldest and newest supported three releases, as REVISION numbers (0.168.0 is 168). */
 export const SUPPORTED_THREE = Object.freeze({ oldest: 168, newest: 187 });
 
-/** The peer dependency range: every release from the oldest to the newest. */
-export const SUPPORTED_THREE_RANGE = `>=0.${SUPPORTED_THREE.oldest}.0 <0.${SUPPORTED_THREE.newest + 1}.0`;
+/**
+ * The releases the WebGPURenderer entry supports: its own floor, r187. The node needs
+ * MRTNode.setClearColor (three.js pull request #34250: the subsurface outputs must clear to alpha
+ * 0, three clears extra attachments to alpha 1) and RenderPipeline (r183's name of PostProcessing).
+ */
+export const WEBGPU_THREE = Object.freeze({ oldest: 187, newest: SUPPORTED_THREE.newest });
+
+/** The peer dependency range of `releases`: every release from the oldest to the newest. */
+export const rangeOf = (releases) => `>=0.${releases.oldest}.0 <0.${releases.newest + 1}.0`;
+
+/** The main entry's peer range (package.json's peerDependencies; a unit test holds them equal). */
+export const SUPPORTED_THREE_RANGE = rangeOf(SUPPORTED_THREE);
+
+/** The webgpu entry's peer range (package.json's subpathPeerDependencies). */
+export const WEBGPU_THREE_RANGE = rangeOf(WEBGPU_THREE);
 
 /** "three r187" (or whatever REVISION is loaded), for error messages. */
 export function threeRelease() {
@@ -24,8 +37,8 @@ export function isSupportedThree(revision = REVISION) {
 }
 
 /** "(supported: three >=0.168.0 <0.188.0, r168 to r187)", the end of every version message. */
-export function supportedThreeNote() {
-  return `(supported: three ${SUPPORTED_THREE_RANGE}, r${SUPPORTED_THREE.oldest} to r${SUPPORTED_THREE.newest})`;
+export function supportedThreeNote(releases = SUPPORTED_THREE) {
+  return `(supported: three ${rangeOf(releases)}, r${releases.oldest} to r${releases.newest})`;
 }
 
 let warnedNewer = false;
@@ -35,15 +48,17 @@ let warnedNewer = false;
  * is an Error naming it and the range (such releases lack what the stages use); newer than the
  * newest is one console warning (untested, it may work: the material hook still fails loudly if
  * three's shader chunks changed).
+ * The one version gate of both entries.
  * @param {string} who what is being built, e.g. 'SubsurfaceScattering'
+ * @param {{ oldest: number, newest: number }} [releases] the entry's range (SUPPORTED_THREE, WEBGPU_THREE)
  * @param {string} [revision] three's REVISION (a parameter for the tests)
  */
-export function checkThreeRevision(who, revision = REVISION) {
+export function checkThreeRevision(who, releases = SUPPORTED_THREE, revision = REVISION) {
   const r = Number.parseInt(revision, 10);
-  if (r > SUPPORTED_THREE.newest) {
-    if (!warnedNewer) console.warn(`${who}: three r${revision} is newer than the releases this version was tested with ${supportedThreeNote()}`);
+  if (r > releases.newest) {
+    if (!warnedNewer) console.warn(`${who}: three r${revision} is newer than the releases this version was tested with ${supportedThreeNote(releases)}`);
     warnedNewer = true;
     return;
   }
-  if (!(r >= SUPPORTED_THREE.oldest)) throw new Error(`${who}: three r${revision} is not supported ${supportedThreeNote()}`);
+  if (!(r >= releases.oldest)) throw new Error(`${who}: three r${revision} is not supported ${supportedThreeNote(releases)}`);
 }

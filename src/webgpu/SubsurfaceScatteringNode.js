@@ -21,61 +21,81 @@ import { ProfileLookup } from '../profiles/ProfileLookup.js';
 import { FootprintTable } from '../profiles/FootprintTable.js';
 import { AUTO_MAX_SAMPLES } from '../profiles/footprints.js';
 import { computeKernel } from '../profiles/kernel.js';
-import { getProfile } from '../profiles/presets.js';
 import { estimatePixelsPerMm } from '../framePlan.js';
 import { planBlur } from '../3-blur/blurPlan.js';
 import { isPerspective } from '../support/screenScale.js';
-import { checkBoolean, checkNumber, checkOneOf, checkOptions } from '../support/parameterChecks.js';
 import { describe } from '../support/rendererSupport.js';
-import { checkTransmittanceSwitch } from '../2-scene-split/transmittanceModel.js';
 import { LightStageNode } from './1-light-depth/LightStageNode.js';
 import { subsurfaceMeshesOf } from './2-scene-split/subsurfaceNodeMaterial.js';
-import { PIPELINE_SCHEMA, checkOption } from '../options.js';
-import { NODE_DEFAULTS, checkMethod } from './nodeOptions.js';
+import { NODE_SCHEMA, checkNeedsLight, checkNodeOptions, propertiesOf } from '../options.js';
+import { withSettings } from '../support/settings.js';
+import { WEBGPU_THREE, checkThreeRevision } from '../support/threeVersion.js';
 import { ATTACHMENT_NAMES } from './2-scene-split/attachments.js';
 import { subsurfaceBlurNode } from './3-blur/subsurfaceBlurTsl.js';
 import { GroupFractionTexture } from './3-blur/GroupFractionTexture.js';
-import { checkWebgpuThree } from './threeVersion.js';
-import { LIGHT_VIEWS, composeNode, debugViewUniform } from './4-compose/composeTsl.js';
+
+import { composeNode, debugViewUniform } from './4-compose/composeTsl.js';
 import { DEBUG_VIEWS } from '../4-compose/debugViews.js';
+
+/** The methods the node has: the WebGL pipeline's default (the fixed-tap ones are the WebGL pipeline's only). */
+export const NODE_METHODS = Object.freeze(['footprint']);
+
+/** A method of the schema the node lacks is refused, naming the pipeline that has it. */
+function checkNodeMethod(method) {
+  if (!NODE_METHODS.includes(method)) {
+    throw new RangeError(`method '${method}' is not available on the WebGPU node (only ${NODE_METHODS.map((m) => `'${m}'`).join(', ')}); the WebGL pipeline has the others`);
+  }
+}
 
 const _quadMesh = /*@__PURE__*/ new QuadMesh();
 const _size = /*@__PURE__*/ new Vector2();
 let _rendererState;
 
-export class SubsurfaceScatteringNode extends Node {
+/** three's Node with the node's settings as properties (src/options.js's schema; src/support/settings.js). */
+const NodeWithSettings = /** @type {new (type: string) => Node & import('../options.js').NodeSettings} */ (
+  withSettings(Node, NODE_SCHEMA, 'SubsurfaceScatteringNode'));
+
+/**
+ * Screen-space subsurface scattering as a node of three's RenderPipeline (WebGPURenderer):
+ * ```js
+ * const scenePass = pass(scene, camera);
+ * scenePass.setMRT(subsurfaceMRT());
+ * const sss = subsurfaceScattering(scenePass, { worldUnitInMm: 1000, light });
+ * pipeline.outputNode = sss;
+ * sss.samples = 25;   // every option is a property, checked on assignment, as on the WebGL pipeline
+ * ```
+ */
+export class SubsurfaceScatteringNode extends NodeWithSettings {
   static get type() {
     return 'SubsurfaceScatteringNode';
   }
 
   /**
    * @param {import('three/webgpu').PassNode} scenePass pass(scene, camera) with subsurfaceMRT()
-   * @param {Partial<typeof NODE_DEFAULTS>} [options]
+   * @param {import('../options.js').SubsurfaceScatteringNodeOptions} [options]
    */
   constructor(scenePass, options) {
+    checkThreeRevision('SubsurfaceScatteringNode', WEBGPU_THREE);
     super('vec4');
-    checkWebgpuThree();
     if (!scenePass || scenePass.isPassNode !== true) throw new TypeError(`subsurfaceScattering: scenePass must be a PassNode (pass(scene, camera)), got ${describe(scenePass)}`);
-    const o = { ...NODE_DEFAULTS, ...checkOptions('subsurfaceScattering options', options, Object.keys(NODE_DEFAULTS)) };
+    const o = checkNodeOptions(options); // every option checked here, once, against the schema
+    checkNodeMethod(o.method);
+    /** @internal The settings' values (read and assigned through their properties). */
+    this._settings = Object.fromEntries(propertiesOf(NODE_SCHEMA).map(({ name }) => [name, o[name]]));
+    if (Object.hasOwn(options ?? {}, 'transmittance')) checkNeedsLight('transmittance', o.transmittance, o.light);
+    checkNeedsLight('debugView', o.debugView, o.light);
+    this._settings.transmittance = o.transmittance && o.light !== null; // the default: on where there is a light
     this.scenePass = scenePass;
-    this.profileLookup = new ProfileLookup(getProfile(checkOption(PIPELINE_SCHEMA, 'profile', o.profile)));
+    this.profileLookup = new ProfileLookup(o.profile);
     this.footprintTable = new FootprintTable(this.profileLookup);
     this._uniforms = {
-      kernelRadiusMm: uniform(0), strength: uniform(new Vector3(1, 1, 1)), projectionScale: uniform(new Vector2(1, 1)),
+      kernelRadiusMm: uniform(0), strength: uniform(new Vector3()), projectionScale: uniform(new Vector2(1, 1)),
       resolution: uniform(new Vector2(1, 1)), depthFalloff: uniform(1), perspective: uniform(1), mmToWorld: uniform(1e-3),
-      marginalRangeMm: uniform(1), debugView: debugViewUniform(), debugDepthRange: uniform(1), debugThicknessRangeMm: uniform(10),
+      marginalRangeMm: uniform(1), debugView: debugViewUniform(), debugDepthRange: uniform(1), debugThicknessRangeMm: uniform(1),
     };
-    const lightDepthSize = checkOption(PIPELINE_SCHEMA, 'lightDepthSize', o.lightDepthSize);
     /** Stage 1 and the materials' transmittance uniforms, before the scene pass (null without a light). */
-    this._lightStage = checkOption(PIPELINE_SCHEMA, 'light', o.light) === null ? null : new LightStageNode(this, o.light, lightDepthSize);
-    this._transmittance = this._lightStage !== null;
-    this._debugView = 'final';
-    this._settings = { method: checkMethod(o.method) };
-    // Every option through its setter: the WebGL pipeline's schema checks it (src/options.js).
-    Object.assign(this, {
-      scattering: true, worldUnitInMm: o.worldUnitInMm, depthThresholdMm: o.depthThresholdMm, samples: o.samples,
-      strength: o.strength, followSurface: o.followSurface, foreshortening: o.foreshortening, kernelGroups: o.kernelGroups,
-    });
+    this._lightStage = o.light === null ? null : new LightStageNode(this, o.light, o.lightDepthSize);
+    for (const name of ['worldUnitInMm', 'samples', 'strength', 'debugView', 'debugDepthRange', 'debugThicknessRangeMm']) this._applySetting(name, o[name]);
     /** What the last frame ran: { samples, kernelPixels, blur, passes, groups, groupings } (see src/3-blur/blurPlan.js). */
     this.plan = { samples: 0, kernelPixels: 0, blur: false, passes: 'separable', groups: 1, groupings: null };
 
@@ -103,25 +123,45 @@ export class SubsurfaceScatteringNode extends Node {
     this.isSubsurfaceScatteringNode = true;
   }
 
-  // ---- The settings: properties, checked on assignment as the WebGL pipeline's are (one setter style).
-
-  /** Millimetres per world unit (three.js: metres, 1000). @type {number} */
-  get worldUnitInMm() { return this._worldUnitInMm; }
-
-  set worldUnitInMm(mm) {
-    this._worldUnitInMm = checkOption(PIPELINE_SCHEMA, 'worldUnitInMm', mm);
-    this._uniforms.mmToWorld.value = 1 / mm;
-    this._updateDepthFalloff();
-  }
-
   /**
-   * Light through thin parts for every subsurface material this node draws (a uniform: no
-   * rebuild). true needs the constructor's `light`. @type {boolean}
+   * Acts on a setting just assigned (already checked and kept; a throw here puts the old value
+   * back). The node reads the rest (kernelGroups, followSurface, foreshortening, scattering) each frame.
+   * @private @param {string} name @param {*} value
    */
-  get transmittance() { return this._transmittance; }
-
-  set transmittance(enabled) {
-    this._transmittance = checkTransmittanceSwitch('SubsurfaceScatteringNode', enabled, this.lightDepth, 'this node has none (pass `light` to subsurfaceScattering)');
+  _applySetting(name, value) {
+    const u = this._uniforms;
+    switch (name) {
+      case 'worldUnitInMm': case 'depthThresholdMm':
+        u.mmToWorld.value = 1 / this.worldUnitInMm;
+        u.depthFalloff.value = this.worldUnitInMm / this.depthThresholdMm;
+        return;
+      case 'method':
+        checkNodeMethod(value);
+        return;
+      case 'samples': // the kernel must be buildable with that many taps
+        computeKernel({ profile: this.profile, method: 'marginal', samples: value === 'auto' ? AUTO_MAX_SAMPLES : value });
+        return;
+      case 'profile':
+        if (value !== this.profileLookup.profile) this.profileLookup.setProfile(value); // tens of ms: only on a change
+        return;
+      case 'strength': // undefined: the method's own, no mix
+        u.strength.value.fromArray(value ?? [1, 1, 1]);
+        return;
+      case 'transmittance':
+        checkNeedsLight(name, value, this.light);
+        return;
+      case 'debugView':
+        checkNeedsLight(name, value, this.light);
+        u.debugView.value = DEBUG_VIEWS.indexOf(value);
+        return;
+      case 'debugDepthRange': case 'debugThicknessRangeMm':
+        u[name].value = value;
+        return;
+      case 'lightDepthSize':
+        this.lightDepth?.setSize(value);
+        return;
+      default:
+    }
   }
 
   /** What the last frame found wrong with the light, one message each (empty when all is well). @type {readonly string[]} */
@@ -129,120 +169,6 @@ export class SubsurfaceScatteringNode extends Node {
 
   /** Stage 1: the light depth map for transmittance, or null without a light. @type {import('./1-light-depth/LightDepthNodeTarget.js').LightDepthNodeTarget|null} */
   get lightDepth() { return this._lightStage?.lightDepth ?? null; }
-
-  /** Whether the blur runs (false: the output equals the scene without scattering). @type {boolean} */
-  get scattering() { return this._scattering; }
-
-  set scattering(enabled) { this._scattering = checkBoolean('SubsurfaceScatteringNode.scattering', enabled); }
-
-  /** How the blur weighs its taps: the node has 'footprint' (the WebGL path's default). @type {'footprint'} */
-  get method() { return this._settings.method; }
-
-  /** @param {import('../options.js').Method} method */
-  set method(method) { this._settings.method = checkMethod(method); }
-
-  /** Taps per direction (a budget), odd, 3..63, or 'auto'. @type {number|'auto'} */
-  get samples() { return this._settings.samples; }
-
-  /** @param {number|'auto'} samples */
-  set samples(samples) {
-    checkOption(PIPELINE_SCHEMA, 'samples', samples);
-    computeKernel({ profile: this.profile, method: 'marginal', samples: samples === 'auto' ? AUTO_MAX_SAMPLES : samples });
-    this._settings.samples = samples;
-  }
-
-  /** The diffusion profile (a preset's name or a profile object; read back as the object); refills the tables only on a change. @type {object} */
-  get profile() { return this.profileLookup.profile; }
-
-  /** @param {import('../options.js').ProfileName|object} profile */
-  set profile(profile) {
-    const p = getProfile(checkOption(PIPELINE_SCHEMA, 'profile', profile));
-    if (p !== this.profileLookup.profile) this.profileLookup.setProfile(p); // tens of ms: only on a change
-  }
-
-  /** RGB 0..1, mix with no scattering. @type {number[]} */
-  get strength() { return this._settings.strength; }
-
-  /** @param {number[]} strength */
-  set strength(strength) {
-    this._settings.strength = checkOption(PIPELINE_SCHEMA, 'strength', strength);
-    this._uniforms.strength.value.fromArray(this._settings.strength);
-  }
-
-  /** What a tap on another surface does. @type {import('../options.js').FollowSurfaceMode} */
-  get followSurface() { return this._settings.followSurface; }
-
-  /** @param {import('../options.js').FollowSurfaceMode} mode */
-  set followSurface(mode) { this._settings.followSurface = checkOption(PIPELINE_SCHEMA, 'followSurface', mode); }
-
-  /** The depth step taken for another surface, mm. @type {number} */
-  get depthThresholdMm() { return this._settings.depthThresholdMm; }
-
-  /** @param {number} mm */
-  set depthThresholdMm(mm) {
-    this._settings.depthThresholdMm = checkOption(PIPELINE_SCHEMA, 'depthThresholdMm', mm);
-    this._updateDepthFalloff();
-  }
-
-  /**
-   * The isotropic blur's groups, as the WebGL pipeline's `kernelGroups`: 1 (default) one separable
-   * kernel, exact along the screen axes only; 'auto' or 2..4 the profile's Gaussians blurred in
-   * groups, the same in every direction ('auto': one group where one is within the isotropy budget
-   * at the frame's scale, a far head). Each count builds its own passes on the first frame that
-   * uses it. @type {'auto'|number}
-   */
-  get kernelGroups() { return this._settings.kernelGroups; }
-
-  /** @param {'auto'|number} groups */
-  set kernelGroups(groups) { this._settings.kernelGroups = checkOption(PIPELINE_SCHEMA, 'kernelGroups', groups); }
-
-  /** The grazing-angle correction (shrink the step by cos(tilt), compare depths with the local plane). @type {boolean} */
-  get foreshortening() { return this._settings.foreshortening; }
-
-  /** @param {boolean} enabled */
-  set foreshortening(enabled) { this._settings.foreshortening = checkOption(PIPELINE_SCHEMA, 'foreshortening', enabled); }
-
-  /**
-   * One ingredient instead of the final image, as the WebGL pipeline's debugView: 'final',
-   * 'diffuse' (the scattered diffuse light), 'specular' (the rest of subsurface pixels), 'mask',
-   * 'depth', and with a light 'thickness' (in profile mm: physical mm × (1 − translucency) /
-   * widthMm; debugThicknessRangeMm is white) and 'transmittance' (the light through thin parts,
-   * before the blur). A uniform: switching rebuilds nothing.
-   * @type {import('../4-compose/debugViews.js').DebugView}
-   */
-  get debugView() { return this._debugView; }
-
-  /** @param {import('../4-compose/debugViews.js').DebugView} view */
-  set debugView(view) {
-    checkOneOf('view', view, DEBUG_VIEWS);
-    if (LIGHT_VIEWS.includes(view) && !this.lightDepth) {
-      throw new RangeError(`debugView: view '${view}' needs the node's light (pass \`light\` to subsurfaceScattering); without one it has ${DEBUG_VIEWS.filter((v) => !LIGHT_VIEWS.includes(v)).map((v) => `'${v}'`).join(', ')}`);
-    }
-    this._uniforms.debugView.value = DEBUG_VIEWS.indexOf(view);
-    this._debugView = view;
-  }
-
-  /** World units the 'depth' view maps to white..black (default 1). @type {number} */
-  get debugDepthRange() { return this._uniforms.debugDepthRange.value; }
-
-  /** @param {number} depthRange */
-  set debugDepthRange(depthRange) {
-    this._uniforms.debugDepthRange.value = checkNumber('depthRange', depthRange, { min: 0, minExclusive: true, max: Infinity, unit: 'world units' });
-  }
-
-  /** Profile millimetres the 'thickness' view maps to white (default 10). @type {number} */
-  get debugThicknessRangeMm() { return this._uniforms.debugThicknessRangeMm.value; }
-
-  /** @param {number} mm */
-  set debugThicknessRangeMm(mm) {
-    this._uniforms.debugThicknessRangeMm.value = checkNumber('debugThicknessRangeMm', mm, { min: 0, minExclusive: true, max: Infinity, unit: 'mm' });
-  }
-
-  /** 1 / the depth threshold in world units, for the depth rule. @private */
-  _updateDepthFalloff() {
-    if (this._worldUnitInMm === undefined || this._settings?.depthThresholdMm === undefined) return;
-    this._uniforms.depthFalloff.value = this._worldUnitInMm / this._settings.depthThresholdMm;
-  }
 
   /** @returns {import('three/webgpu').TextureNode} the scattered diffuse light, premultiplied by its coverage */
   getTextureNode() {
@@ -425,6 +351,6 @@ export class SubsurfaceScatteringNode extends Node {
 /**
  * The subsurface scattering node over a scene pass (see the file's header).
  * @param {import('three/webgpu').PassNode} scenePass
- * @param {Partial<typeof NODE_DEFAULTS>} [options]
+ * @param {import('../options.js').SubsurfaceScatteringNodeOptions} [options]
  */
 export const subsurfaceScattering = (scenePass, options) => new SubsurfaceScatteringNode(scenePass, options);

@@ -1,6 +1,6 @@
 // three-separable-sss/webgpu: the subsurface scattering for three.js's WebGPURenderer (WebGPU and
-// its WebGL 2 backend) as TSL nodes for RenderPipeline. Public exports only, by stage; importing
-// has no side effects and works in plain Node. Needs three r187 or later (./threeVersion.js).
+// its WebGL 2 backend) as TSL nodes for RenderPipeline, with the WebGL pipeline's settings and
+// profiles. Importing has no side effects and works in plain Node. Needs three r187 or later.
 //
 //   import { pass } from 'three/tsl';
 //   const skin = subsurfaceMaterial(new THREE.MeshStandardMaterial({ map }), { widthMm: 1 });
@@ -17,13 +17,9 @@ export {
 } from './2-scene-split/subsurfaceNodeMaterial.js';
 export { ATTACHMENT_NAMES } from './2-scene-split/attachments.js';
 
-// Stages 3 and 4: the separable blur and the compose, as one node.
-export { SubsurfaceScatteringNode, subsurfaceScattering } from './SubsurfaceScatteringNode.js';
-export { NODE_DEFAULTS, NODE_METHODS } from './nodeOptions.js';
+// Stages 3 and 4 (and 1 for its `light`): the separable blur and the compose, as one node.
+export { SubsurfaceScatteringNode, subsurfaceScattering, NODE_METHODS } from './SubsurfaceScatteringNode.js';
 
-// The three releases this entry supports (its own floor: r187).
-export { WEBGPU_THREE, WEBGPU_THREE_RANGE } from './threeVersion.js';
-
-// The renderer-free side, shared with the WebGL entry.
+// The renderer-free side, shared with the WebGL entry: the settings' defaults and values, the profiles.
+export { NODE_DEFAULTS, FOLLOW_SURFACE_MODES, DEBUG_VIEWS } from '../options.js';
 export { profiles, getProfile } from '../profiles/presets.js';
-export { FOLLOW_SURFACE_MODES } from '../options.js';

@@ -31,16 +31,16 @@ describe('pass conventions', () => {
       const sss = new SSS.SubsurfaceScattering({ scene, camera, light, worldUnitInMm: 100 });
       const hook = sss.makeSubsurface(material, { widthMm: 2 });
       const pipeline = createComposer(renderer);
-      sss.addTo(pipeline);
+      pipeline.addPass(sss);
       pipeline.render();
       pipeline.setSize(80, 45);
       pipeline.render();
       const sizes = {
-        scene: [sss.scenePass.renderTarget.width, sss.scenePass.renderTarget.height],
-        horizontal: sss.horizontalPass.uniforms.resolution.value.toArray(),
-        vertical: sss.verticalPass.uniforms.resolution.value.toArray(),
+        scene: [sss._scenePass.renderTarget.width, sss._scenePass.renderTarget.height],
+        horizontal: sss._blur.horizontalPass.uniforms.resolution.value.toArray(),
+        vertical: sss._blur.verticalPass.uniforms.resolution.value.toArray(),
       };
-      const types = sss.scenePass.renderTarget.textures.map((t) => t.type);
+      const types = sss._scenePass.renderTarget.textures.map((t) => t.type);
       const during = { ...renderer.info.memory };
       sss.dispose();
       const unhooked = !material.customProgramCacheKey().includes('subsurface') && SSS.getSubsurface(material) === undefined;
@@ -76,8 +76,8 @@ describe('pass conventions', () => {
       renderer.setRenderTarget(other);
       renderer.setClearColor(new THREE.Color(0.1, 0.2, 0.3), 0.4);
       renderer.autoClear = false;
-      sss.lightDepth.render(renderer, scene);
-      sss.scenePass.render(renderer, null, null);
+      sss._lightDepth.render(renderer, scene);
+      sss._scenePass.render(renderer, null, null);
       const state = {
         target: renderer.getRenderTarget() === other,
         clear: renderer.getClearColor(new THREE.Color()).toArray(),
@@ -91,7 +91,7 @@ describe('pass conventions', () => {
       renderer.autoClear = true;
 
       const composer = new EffectComposer(renderer);
-      sss.addTo(composer);
+      composer.addPass(sss);
       composer.addPass(new OutputPass());
       composer.render();
       const gl = renderer.getContext();
@@ -126,11 +126,11 @@ describe('bad set-ups get clear errors, never a black frame', () => {
       const camera = new THREE.PerspectiveCamera();
       const sss = new SSS.SubsurfaceScattering({ scene, camera });
       const composer = createComposer(renderer);
-      sss.addTo(composer);
+      composer.addPass(sss);
       const messages = [];
       try { composer.render(); } catch (e) { messages.push(e.message); }
       const webgl1 = { isWebGLRenderer: true, getContext: () => null, capabilities: { isWebGL2: false }, extensions: { has: () => true } };
-      try { sss.scenePass.render(webgl1); } catch (e) { messages.push(e.message); }
+      try { sss._scenePass.render(webgl1); } catch (e) { messages.push(e.message); }
       try { new SSS.LightDepthTarget(new THREE.DirectionalLight()).render(webgl1, scene); } catch (e) { messages.push(e.message); }
       return messages;
     });

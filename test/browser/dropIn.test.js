@@ -56,7 +56,7 @@ describe('transparent objects', () => {
       overlay.enabled = false;
       composer.render();
       const opaque = await read(renderer, composer.readBuffer);
-      const surface = await read(renderer, sss.scenePass.renderTarget, 2);
+      const surface = await read(renderer, sss._scenePass.renderTarget, 2);
       // Screen columns of the two glass planes, from the camera.
       const toPixel = (x) => ((new THREE.Vector3(x, 0, 0).project(built.camera).x + 1) / 2) * DEFAULTS.width;
       const columns = { front: [toPixel(-2.5), toPixel(-0.5)], behind: [toPixel(0.5), toPixel(2.5)] };
@@ -204,7 +204,7 @@ describe('other passes before and after it', () => {
       sss.clear = false;
       composer.render();
       const kept = await read(renderer, composer.readBuffer);
-      const surface = await read(renderer, sss.scenePass.renderTarget, 2);
+      const surface = await read(renderer, sss._scenePass.renderTarget, 2);
       sss.dispose();
       for (const c of [alone, earlierAlone, composer]) c.dispose();
       return { sssAlone, before, replaced, kept, surface };
@@ -246,7 +246,7 @@ describe('other passes before and after it', () => {
       composer.addPass(overlay);
       composer.render();
       const out = await read(renderer, composer.readBuffer);
-      const surface = await read(renderer, sss.scenePass.renderTarget, 2);
+      const surface = await read(renderer, sss._scenePass.renderTarget, 2);
       // Where each card covers the screen, from a plain three render of the cards alone.
       const cards = createComposer(renderer);
       cards.addPass(new RenderPass(later, built.camera));
@@ -350,10 +350,10 @@ describe('antialiasing', () => {
         composer.addPass(sss);
         composer.render();
         images[samples] = await read(renderer, composer.readBuffer);
-        images[`surface${samples}`] = await read(renderer, sss.scenePass.renderTarget, 2);
+        images[`surface${samples}`] = await read(renderer, sss._scenePass.renderTarget, 2);
         composer.dispose();
       }
-      const multisampled = sss.scenePass.renderTarget.samples;
+      const multisampled = sss._scenePass.renderTarget.samples;
       sss.dispose();
       return { aliased: images[0], antialiased: images[4], surface: images.surface0, multisampled };
     });
@@ -470,7 +470,7 @@ describe('live scene, camera and lights', () => {
         await setUp({ light, scene: built.scene, render: () => composer.render() });
         composer.render();
         const out = await read(renderer, composer.readBuffer, 0);
-        const diffuse = await read(renderer, sss.scenePass.renderTarget, 1);
+        const diffuse = await read(renderer, sss._scenePass.renderTarget, 1);
         sss.dispose();
         composer.dispose();
         return { out, diffuse };

@@ -59,7 +59,7 @@ function renderVariants(variants) {
     if (withPane) scene.add(pane);
     const sss = new SSS.SubsurfaceScattering({ scene, camera, worldUnitInMm: 100, type: THREE.FloatType, light, multisampling });
     for (const m of [skin, skinBehind]) sss.makeSubsurface(m);
-    sss.addTo(composer);
+    composer.addPass(sss);
     Object.assign(sss, settings);
     if (moved) {
       subsurface.forEach((m) => m.position.x += 1.5);
@@ -69,9 +69,9 @@ function renderVariants(variants) {
     composer.render();
     const out = {
       output: await read(renderer, composer.readBuffer),
-      scattered: await read(renderer, sss.scatteredTarget),
-      diffuse: await read(renderer, sss.scenePass.renderTarget, 1),
-      box: sss.scenePass.subsurfaceBox,
+      scattered: await read(renderer, sss._blur.scatteredTarget),
+      diffuse: await read(renderer, sss._scenePass.renderTarget, 1),
+      box: sss._scenePass.subsurfaceBox,
       blur: sss.plan.blur,
       groups: sss.plan.groups,
     };

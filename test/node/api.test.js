@@ -4,7 +4,7 @@ import { describe, it, expect } from 'vitest';
 import { Scene, PerspectiveCamera, MeshStandardMaterial, MeshBasicMaterial, SpotLight, PointLight } from 'three';
 import {
   SubsurfaceScattering, makeSubsurface, computeKernel, LightDepthTarget, SubsurfaceBlurPass, ProfileLookup,
-} from '../../src/index.js';
+} from '../harness/sss.js';
 
 const scene = new Scene();
 const camera = new PerspectiveCamera();

@@ -15,11 +15,11 @@ const ELSEWHERE = ['bench/peers.js', 'bench/surfaceTruth/atlas.js', 'bench/surfa
 
 describe('reads of the multi-target', () => {
   it('name the attachment (ATTACHMENTS.SURFACE, ...), never a number', () => {
-    // A read of the scene pass's target with a literal attachment index, e.g. (renderer, sss.scenePass.renderTarget, 2).
+    // A read of the scene pass's target with a literal attachment index, e.g. (renderer, sss._scenePass.renderTarget, 2).
     const literal = /scenePass\.renderTarget\s*,\s*\d/;
     expect(files.length).toBeGreaterThan(20);
     const found = files.filter((f) => literal.test(readFileSync(new URL(f, root), 'utf8')));
     expect(found.filter((f) => !ELSEWHERE.includes(f))).toEqual([]);
-    expect(literal.test('readRenderTargetFloats(renderer, sss.scenePass.renderTarget, 2)')).toBe(true);
+    expect(literal.test('readRenderTargetFloats(renderer, sss._scenePass.renderTarget, 2)')).toBe(true);
   });
 });

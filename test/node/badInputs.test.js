@@ -3,7 +3,7 @@
 // same lines, and the cases that need a frame (test/browser/reliability.test.js).
 import { describe, it, expect } from 'vitest';
 import * as THREE from 'three';
-import * as SSS from '../../src/index.js';
+import * as SSS from '../harness/sss.js';
 import { CALL_CASES, FRAME_CASES } from '../reliability/badInputs.js';
 import { createFixture } from '../reliability/fixture.js';
 import { expectOutcome } from '../reliability/expectError.js';

@@ -1,37 +1,10 @@
-// Stage 3 of the frame, in Node: what runs this frame (planFrame, autoSampleCount) and the
+// Stage 3 of the frame, in Node: the 'auto' taps (autoSampleCount) and the
 // on-screen scale it is decided from (estimatePixelsPerMm), against hand-computed values.
 import { describe, it, expect } from 'vitest';
 import { Mesh, MeshStandardMaterial, MeshBasicMaterial, OrthographicCamera, PerspectiveCamera, PlaneGeometry } from 'three';
-import { planFrame, autoSampleCount, estimatePixelsPerMm } from '../../src/framePlan.js';
+import { estimatePixelsPerMm } from '../../src/framePlan.js';
+import { autoSampleCount } from '../../src/3-blur/blurPlan.js';
 import { AUTO_SAMPLES, AUTO_REACH } from '../../src/options.js';
-
-const fixed = (radiusMm) => () => radiusMm;
-
-describe('planFrame', () => {
-  it('skips the blur below half a pixel of on-screen reach, and runs it from half a pixel on', () => {
-    expect(planFrame({ scattering: true, pixelsPerMm: 0.1, samples: 17, autoRadiusMm: 3, radiusMmOf: fixed(4.99) })).toEqual({ samples: 17, kernelPixels: 0.1 * 4.99, blur: false });
-    expect(planFrame({ scattering: true, pixelsPerMm: 0.125, samples: 17, autoRadiusMm: 3, radiusMmOf: fixed(4) }).blur).toBe(true); // exactly 0.5 px
-    expect(planFrame({ scattering: true, pixelsPerMm: 0, samples: 9, autoRadiusMm: 3, radiusMmOf: fixed(4) }).blur).toBe(false); // nothing drawn
-  });
-
-  it('never blurs when scattering is switched off, whatever the size', () => {
-    expect(planFrame({ scattering: false, pixelsPerMm: 100, samples: 17, autoRadiusMm: 3, radiusMmOf: fixed(4) }).blur).toBe(false);
-  });
-
-  it("keeps a fixed tap count, and asks the kernel's reach for that count", () => {
-    const asked = [];
-    const plan = planFrame({ scattering: true, pixelsPerMm: 2, samples: 25, autoRadiusMm: 3, radiusMmOf: (n) => { asked.push(n); return n / 10; } });
-    expect(asked).toEqual([25]);
-    expect(plan).toEqual({ samples: 25, kernelPixels: 5, blur: true });
-  });
-
-  it("'auto' picks the fewest taps whose single-pixel footprints reach AUTO_REACH of the radius", () => {
-    // radius 3 mm at 2 px/mm = 6 px; (n - 3) / 2 >= 0.92 * 6 = 5.52 first holds at n = 17 (7 >= 5.52; 13 gives 5).
-    const plan = planFrame({ scattering: true, pixelsPerMm: 2, samples: 'auto', autoRadiusMm: 3, radiusMmOf: (n) => n });
-    expect(plan.samples).toBe(17);
-    expect(plan.kernelPixels).toBe(34); // the reach of the chosen count
-  });
-});
 
 describe('autoSampleCount', () => {
   it('is the smallest level that reaches, for every level, and the largest beyond them all', () => {

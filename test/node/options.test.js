@@ -1,6 +1,6 @@
 // The options' one source (src/options.js's schema) and what derives from it: the defaults, the
 // checks, the typedefs the TypeScript declarations come from, the README's options table, and the
-// README's export table against the main entry, one for one.
+// README's API section against the main entry and the stages subpath, one for one.
 import { describe, it, expect } from 'vitest';
 import { readFileSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
@@ -9,6 +9,8 @@ import {
   PIPELINE_SCHEMA, MATERIAL_SCHEMA, PIPELINE_DEFAULTS, MATERIAL_DEFAULTS, checkPipelineOptions, checkMaterialOptions,
 } from '../../src/options.js';
 import * as mainEntry from '../../src/index.js';
+import * as stages from '../../src/stages.js';
+import { getProfile } from '../../src/profiles/presets.js';
 import { expectedFiles } from '../../scripts/optionsDoc.js';
 
 const root = fileURLToPath(new URL('../..', import.meta.url));
@@ -19,22 +21,22 @@ describe('the options schema', () => {
       expect(typeof spec.check, name).toBe('function');
       expect(spec.type.length, name).toBeGreaterThan(0);
       expect(spec.doc.length, name).toBeGreaterThan(10);
-      // A default passes its own check (undefined: the option has none).
-      if (spec.default !== undefined) expect(spec.check(spec.default, name), name).toEqual(spec.default);
+      // A default passes its own check (undefined: the option has none); a profile's name is kept as the profile.
+      if (spec.default !== undefined) expect(spec.check(spec.default, name), name).toEqual(name === 'profile' ? getProfile(spec.default) : spec.default);
     }
     expect(PIPELINE_DEFAULTS).toMatchObject({ worldUnitInMm: 1000, method: 'footprint', samples: 'auto', type: HalfFloatType });
     expect(MATERIAL_DEFAULTS).toEqual({ widthMm: 1, widthScale: 1, transmittance: true, translucency: 0, shrinkMm: 0.6 });
   });
 
   it('has one bound per quantity: worldUnitInMm is refused alike by the pipeline, the material hook and transmittance', async () => {
-    const { makeSubsurface } = mainEntry;
+    const { makeSubsurface, createTransmittanceUniforms } = stages;
     const { MeshStandardMaterial } = await import('three');
     const scene = new Scene();
     const camera = new PerspectiveCamera();
     const message = /worldUnitInMm must be in \[0\.000001, 1000000\] mm, got 1000000000/;
     expect(() => checkPipelineOptions({ scene, camera, worldUnitInMm: 1e9 })).toThrow(message);
     expect(() => makeSubsurface(new MeshStandardMaterial(), { worldUnitInMm: 1e9 })).toThrow(message);
-    expect(() => mainEntry.createTransmittanceUniforms({ lightDepth: null, lookup: null, worldUnitInMm: 1e9 })).toThrow(/lightDepth must be a LightDepthTarget/);
+    expect(() => createTransmittanceUniforms({ lightDepth: null, lookup: null, worldUnitInMm: 1e9 })).toThrow(/lightDepth must be a LightDepthTarget/);
   });
 
   it('checks a whole options object once: unknown keys named, explicit undefined refused where there is a default', () => {
@@ -44,8 +46,8 @@ describe('the options schema', () => {
     expect(() => checkPipelineOptions({ scene, camera, light: undefined })).toThrow(/light must be .* or null, got undefined/);
     expect(checkPipelineOptions({ scene, camera, strength: undefined }).strength).toBeUndefined();
     expect(checkPipelineOptions({ scene, camera }).lightDepthSize).toBe(1024);
-    expect(checkMaterialOptions({ strength: 0.5 }).widthScale).toBe(0.5); // the old name
-    expect(() => checkMaterialOptions({ strength: 2 })).toThrow(/strength must be in \[0, 1\], got 2/);
+    expect(() => checkMaterialOptions({ strength: 0.5 })).toThrow(/unknown option "strength" \(accepted: widthMm, widthScale, /);
+    expect(checkPipelineOptions({ scene, camera }).profile).toBe(getProfile('skin')); // a default is kept as its check keeps it
   });
 });
 
@@ -56,10 +58,21 @@ describe('what derives from the schema', () => {
 
   it("the README's export table names every export of the main entry, and nothing else", () => {
     const readme = readFileSync(`${root}README.md`, 'utf8');
-    const section = readme.slice(readme.indexOf('### What the module exports'), readme.indexOf('#### Options'));
+    const section = readme.slice(readme.indexOf('## API'), readme.indexOf('\nTypes: ', readme.indexOf('## API')));
+    expect(section.length).toBeGreaterThan(200);
     const firstColumns = [...section.matchAll(/^\| ([^|]+) \|/gm)].map((m) => m[1]).filter((c) => c !== 'export' && !c.startsWith('---'));
     const named = firstColumns.flatMap((cell) => [...cell.matchAll(/`(\w+)`/g)].map((m) => m[1]));
     expect(new Set(named).size).toBe(named.length);
     expect(named.sort()).toEqual(Object.keys(mainEntry).sort());
+  });
+
+  it("the README's stages paragraph names every export of three-separable-sss/stages (src/stages.js), and nothing else", async () => {
+    const readme = readFileSync(`${root}README.md`, 'utf8');
+    const from = readme.indexOf('`three-separable-sss/stages`');
+    expect(from).toBeGreaterThan(0);
+    const named = [...readme.slice(from, readme.indexOf('\n\n', from)).matchAll(/`(\w+)`/g)].map((m) => m[1]);
+    const stages = await import('../../src/stages.js');
+    expect(new Set(named).size).toBe(named.length);
+    expect(named.sort()).toEqual(Object.keys(stages).sort());
   });
 });

@@ -20,7 +20,7 @@ import { openReadyPage } from '../../dev/browser.js';
 
 const root = fileURLToPath(new URL('../..', import.meta.url));
 
-/** The policy the README gives for serving the demo. */
+/** The policy CONTRIBUTING.md gives for serving the built demo. */
 export const DEMO_CSP = [
   "default-src 'self'",
   "script-src 'self'",

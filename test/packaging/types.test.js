@@ -1,6 +1,6 @@
 // The TypeScript declarations as a consumer gets them: generated from the JSDoc by the package's
 // own build step (tsconfig.types.json), installed with package.json's `exports` into a scratch
-// project, and compiled by the real `tsc` in strict mode: the README's usage snippet, every export
+// project, and compiled by the real `tsc` in strict mode: every README snippet, every export
 // (test/types/consumer.ts), the subpath exports with JSX (test/types/integrations.tsx) and a file of
 // deliberate misuses (test/types/misuse.ts), which must fail on exactly the lines it marks.
 import { describe, it, expect, beforeAll } from 'vitest';
@@ -8,6 +8,7 @@ import { spawnSync } from 'node:child_process';
 import { cpSync, mkdirSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
 import * as runtime from '../../src/index.js';
+import * as stages from '../../src/stages.js';
 import * as internals from '../../src/internals.js';
 
 const root = fileURLToPath(new URL('../..', import.meta.url));
@@ -35,6 +36,8 @@ function errorsOf(output) {
 
 const misuse = readFileSync(`${root}test/types/misuse.ts`, 'utf8').split('\n');
 let expectedLines = [];
+/** The README's snippets but the usage and WebGPURenderer ones, as written by beforeAll. */
+let readmeFiles = [];
 
 beforeAll(() => {
   rmSync(project, { recursive: true, force: true });
@@ -46,25 +49,39 @@ beforeAll(() => {
   expect(generate.status, generate.stdout + generate.stderr).toBe(0);
   cpSync(`${root}package.json`, `${installed}/package.json`);
   cpSync(`${root}test/types`, `${project}/src`, { recursive: true });
-  // The README's snippets as TypeScript files: the usage snippet as it is, the later ones with the
-  // usage snippet's variables they build on declared.
+  // The README's snippets as TypeScript files, each by the heading it stands under: the usage
+  // snippet (under "## Usage") as it is, the WebGPURenderer one against its own context, every other
+  // one with the usage snippet's variables it builds on declared.
   const readme = readFileSync(`${root}README.md`, 'utf8');
-  const snippets = [...readme.slice(readme.indexOf('## Usage')).matchAll(/```(js|ts|jsx)\n([\s\S]*?)```/g)].map(([, lang, code]) => ({ lang, code }));
-  expect(snippets.map((s) => s.lang)).toEqual(['js', 'ts', 'js', 'jsx', 'js']);
+  let heading = '';
+  const snippets = [];
+  for (const [, title, lang, code] of readme.slice(readme.indexOf('## Usage')).matchAll(/^(#{2,3} .+)$|^```(js|ts|jsx)\n([\s\S]*?)```/gm)) {
+    if (title) heading = title;
+    else snippets.push({ heading, lang, code });
+  }
+  const usage = snippets.find((s) => s.heading === '## Usage');
+  const webgpu = snippets.find((s) => s.heading === '### WebGPURenderer');
+  const others = snippets.filter((s) => s !== usage && s !== webgpu);
+  expect(usage?.lang).toBe('js');
+  expect(webgpu?.code).toContain("from 'three-separable-sss/webgpu'");
+  expect(others.filter((s) => s.lang === 'jsx').length).toBe(1); // the React Three Fiber snippet
+  expect(others.length).toBeGreaterThanOrEqual(3);
   const context = [
     "import * as THREE from 'three';",
     'declare const renderer: THREE.WebGLRenderer, scene: THREE.Scene, camera: THREE.PerspectiveCamera;',
     'declare const light: THREE.SpotLight, skin: THREE.MeshStandardMaterial, pattern: THREE.Texture;',
   ].join('\n');
-  writeFileSync(`${project}/src/readme.ts`, `${snippets[0].code}\nexport {};\n`);
-  snippets.slice(1, 4).forEach(({ lang, code }, i) => {
+  writeFileSync(`${project}/src/readme.ts`, `${usage.code}\nexport {};\n`);
+  readmeFiles = others.map(({ lang, code }, i) => {
     const withoutThree = code.replace("import * as THREE from 'three';\n", '');
-    writeFileSync(`${project}/src/readme-${i + 1}.${lang === 'jsx' ? 'tsx' : 'ts'}`, `${context}\n${withoutThree}\nexport {};\n`);
+    const file = `src/readme-${i + 1}.${lang === 'jsx' ? 'tsx' : 'ts'}`;
+    writeFileSync(`${project}/${file}`, `${context}\n${withoutThree}\nexport {};\n`);
+    return file;
   });
   // The WebGPURenderer snippet imports three/webgpu as THREE itself: the usage snippet's objects typed
   // from 'three', `disc` as TypeScript infers it there (a Mesh of its geometry and `skin`'s class).
   const webgpuContext = "declare const scene: import('three').Scene, camera: import('three').PerspectiveCamera, disc: import('three').Mesh<import('three').CylinderGeometry, import('three').MeshStandardMaterial>, skin: import('three').MeshStandardMaterial;";
-  writeFileSync(`${project}/src/readme-4.ts`, `${webgpuContext}\n${snippets[4].code}\nexport {};\n`);
+  writeFileSync(`${project}/src/readme-webgpu.ts`, `${webgpuContext}\n${webgpu.code}\nexport {};\n`);
   // The misuses without their directives: the lines after each must be the errors.
   const bare = [];
   for (const line of misuse) {
@@ -76,20 +93,21 @@ beforeAll(() => {
 }, 120_000);
 
 describe('the generated declarations', () => {
-  it('compile a strict consumer of the README snippet, every export, the pmndrs pass and the R3F components', () => {
-    const { status, output } = compile(['src/readme.ts', 'src/readme-1.ts', 'src/readme-2.ts', 'src/consumer.ts', 'src/integrations.tsx', 'src/misuse.ts'], 'tsconfig.consumer');
+  it('compile a strict consumer of the README snippets, every export, the pmndrs pass and the R3F components', () => {
+    const files = readmeFiles.filter((f) => f.endsWith('.ts'));
+    const { status, output } = compile(['src/readme.ts', ...files, 'src/consumer.ts', 'src/integrations.tsx', 'src/misuse.ts'], 'tsconfig.consumer');
     expect(output).toBe('');
     expect(status).toBe(0);
   }, 120_000);
 
   it("compile the README's WebGPURenderer snippet and a webgpu consumer against the webgpu entry (strict, its declarations checked too)", () => {
-    const { status, output } = compile(['src/readme-4.ts', 'src/webgpuConsumer.ts'], 'tsconfig.webgpu');
+    const { status, output } = compile(['src/readme-webgpu.ts', 'src/webgpuConsumer.ts'], 'tsconfig.webgpu');
     expect(output).toBe('');
     expect(status).toBe(0);
   }, 120_000);
 
-  it("compile the README's JSX snippet (strict, but its untyped props as plain JavaScript's)", () => {
-    const { status, output } = compile(['src/readme-3.tsx'], 'tsconfig.jsx', { noImplicitAny: false });
+  it("compile the README's JSX snippet (strict)", () => {
+    const { status, output } = compile(readmeFiles.filter((f) => f.endsWith('.tsx')), 'tsconfig.jsx');
     expect(output).toBe('');
     expect(status).toBe(0);
   }, 120_000);
@@ -104,11 +122,12 @@ describe('the generated declarations', () => {
     expect([...new Set(errors.map((e) => e.line))].sort((a, b) => a - b)).toEqual(expectedLines);
   }, 120_000);
 
-  it('consumer.ts names every value the package and its internals entry export', () => {
+  it('consumer.ts names every value the package, its stages entry and its internals entry export', () => {
     const consumer = readFileSync(`${root}test/types/consumer.ts`, 'utf8');
     const namesIn = (block) => [...block.matchAll(/^ {2}(\w+):/gm)].map((m) => m[1]).sort();
-    expect(namesIn(consumer.slice(consumer.indexOf('export const ALL_EXPORTS')))).toEqual(Object.keys(runtime).sort());
-    const internalsBlock = consumer.slice(consumer.indexOf('export const ALL_INTERNALS'), consumer.indexOf('export const ALL_EXPORTS'));
-    expect(namesIn(internalsBlock)).toEqual(Object.keys(internals).sort());
+    const blockOf = (from, to) => consumer.slice(consumer.indexOf(from), to ? consumer.indexOf(to) : undefined);
+    expect(namesIn(blockOf('export const ALL_EXPORTS'))).toEqual(Object.keys(runtime).sort());
+    expect(namesIn(blockOf('export const ALL_STAGES', 'export const ALL_EXPORTS'))).toEqual(Object.keys(stages).sort());
+    expect(namesIn(blockOf('export const ALL_INTERNALS', 'export const ALL_STAGES'))).toEqual(Object.keys(internals).sort());
   });
 });

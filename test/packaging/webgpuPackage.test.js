@@ -1,12 +1,12 @@
 // The three-separable-sss/webgpu entry as users get it: in package.json's exports with its own
-// three floor (subpathPeerDependencies, held equal to src/webgpu/threeVersion.js), built by Vite's
+// three floor (subpathPeerDependencies, held equal to src/support/threeVersion.js's WEBGPU_THREE_RANGE), built by Vite's
 // library mode into dist/webgpu.js, and imported by plain Node with no DOM and no globals added.
 import { describe, it, expect } from 'vitest';
 import { build } from 'vite';
 import { execFileSync } from 'node:child_process';
 import { readFileSync, rmSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
-import { WEBGPU_THREE_RANGE, checkWebgpuThree } from '../../src/webgpu/threeVersion.js';
+import { WEBGPU_THREE, WEBGPU_THREE_RANGE, checkThreeRevision } from '../../src/support/threeVersion.js';
 
 const root = fileURLToPath(new URL('../..', import.meta.url));
 const pkg = JSON.parse(readFileSync(`${root}package.json`, 'utf8'));
@@ -17,8 +17,8 @@ describe('the webgpu entry', () => {
   it("is a subpath export with its own three floor, and refuses an older three by name", () => {
     expect(pkg.exports['./webgpu']).toEqual({ types: './dist/types/webgpu/index.d.ts', import: './dist/webgpu.js', default: './dist/webgpu.js' });
     expect(pkg.subpathPeerDependencies['./webgpu'].three).toBe(WEBGPU_THREE_RANGE);
-    expect(() => checkWebgpuThree('186')).toThrow(/three-separable-sss\/webgpu needs three r187 or later .*got three r186/);
-    expect(() => checkWebgpuThree('187')).not.toThrow();
+    expect(() => checkThreeRevision('SubsurfaceScatteringNode', WEBGPU_THREE, '186')).toThrow(/^SubsurfaceScatteringNode: three r186 is not supported \(supported: three >=0\.187\.0 <0\.188\.0, r187 to r187\)$/);
+    expect(() => checkThreeRevision('SubsurfaceScatteringNode', WEBGPU_THREE, '187')).not.toThrow();
   });
 
   it('builds and imports in plain Node without side effects', async () => {

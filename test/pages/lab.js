@@ -6,7 +6,7 @@ import { EffectComposer } from 'three/addons/postprocessing/EffectComposer.js';
 import { RenderPass } from 'three/addons/postprocessing/RenderPass.js';
 import { ShaderPass } from 'three/addons/postprocessing/ShaderPass.js';
 import { OutputPass } from 'three/addons/postprocessing/OutputPass.js';
-import * as SSS from '/src/index.js';
+import * as SSS from '/test/harness/sss.js';
 import * as INTERNALS from '/src/internals.js';
 import { ATTACHMENTS } from '/src/2-scene-split/subsurfaceTarget.js';
 import { readRenderTargetFloats } from '/dev/readback.js';
@@ -193,7 +193,7 @@ async function run(options) {
       ...(o.sss ?? {}),
     });
     built.subsurface.forEach((m, i) => sss.makeSubsurface(m, { widthMm: o.widthMm, ...(o.material ?? {}), ...(built.subsurfaceOptions?.[i] ?? {}) }));
-    sss.addTo(composer);
+    composer.addPass(sss);
   } else {
     composer.addPass(new RenderPass(built.scene, built.camera));
   }
@@ -211,19 +211,19 @@ async function run(options) {
   composer.render();
   const reads = { output: () => read(renderer, composer.readBuffer) };
   if (sss) {
-    const t = sss.scenePass.renderTarget;
+    const t = sss._scenePass.renderTarget;
     const { COLOR, DIFFUSE, SURFACE } = ATTACHMENTS;
     Object.assign(reads, { light: () => read(renderer, t, COLOR), diffuse: () => read(renderer, t, DIFFUSE), surface: () => read(renderer, t, SURFACE) });
     const p = built.camera.projectionMatrix.elements;
     Object.assign(result, {
-      kernel: sss.kernel, kernelPixels: sss.kernelPixels, blurEnabled: sss.plan.blur,
-      method: sss.method, profile: sss.profileLookup.profile.name,
-      footprint: sss.horizontalPass.footprintTable?.table
-        ? { table: sss.horizontalPass.footprintTable.table, scales: INTERNALS.FOOTPRINT_SCALES } : undefined,
-      projectionScale: [p[0], p[5]], depthThresholdWorld: sss.horizontalPass.depthThresholdWorld,
+      kernel: sss._blur.kernel, kernelPixels: sss.plan.kernelPixels, blurEnabled: sss.plan.blur,
+      method: sss.method, profile: sss._profileLookup.profile.name,
+      footprint: sss._blur.horizontalPass.footprintTable?.table
+        ? { table: sss._blur.horizontalPass.footprintTable.table, scales: INTERNALS.FOOTPRINT_SCALES } : undefined,
+      projectionScale: [p[0], p[5]], depthThresholdWorld: sss._blur.horizontalPass.depthThresholdWorld,
       thicknessWorld: built.thicknessWorld,
-      profileCount: sss.horizontalPass.material.defines.PROFILE_COUNT,
-      surfaceChannels: sss.scenePass.surfaceTexture.format === THREE.RGBAFormat ? 4 : 2,
+      profileCount: sss._blur.horizontalPass.material.defines.PROFILE_COUNT,
+      surfaceChannels: sss._scenePass.surfaceTexture.format === THREE.RGBAFormat ? 4 : 2,
     });
   }
   for (const name of o.reads) result[name] = await reads[name]();
@@ -295,8 +295,8 @@ async function flat({ width = 256, height = 256, sss = {}, ...scene }) {
   own.dispose();
   Object.assign(pipeline, { scene: world, camera });
   composer.render();
-  const before = await read(renderer, pipeline.scenePass.renderTarget, ATTACHMENTS.DIFFUSE);
-  const after = await read(renderer, pipeline.scatteredTarget);
+  const before = await read(renderer, pipeline._scenePass.renderTarget, ATTACHMENTS.DIFFUSE);
+  const after = await read(renderer, pipeline._blur.scatteredTarget);
   const result = { width, height, before, after, blur: pipeline.plan.blur, glError: renderer.getContext().getError() };
   rig.material.map = null;
   map.dispose();

@@ -9,8 +9,7 @@
 // here is part of the library.
 import * as THREE from 'three';
 import { EffectComposer } from 'three/addons/postprocessing/EffectComposer.js';
-import * as SSS from '/src/index.js';
-import { useDenseReference } from '/src/internals.js';
+import * as SSS from '/test/harness/sss.js';
 import { readRenderTargetFloats } from '/dev/readback.js';
 import { ALL_CASES, CALL_CASES } from '/test/reliability/badInputs.js';
 import { createFixture } from '/test/reliability/fixture.js';
@@ -93,7 +92,7 @@ async function cycles({ count = 20 } = {}) {
   const cycle = async (i) => {
     const t = fixtureOn(renderer, { width: WIDTH, height: HEIGHT });
     t.usePipeline({ method: SSS.METHODS[i % SSS.METHODS.length], multisampling: i % 2 ? 4 : 0 });
-    if (i % 4 === 3) useDenseReference(t.sss);
+    if (i % 4 === 3) SSS.useDenseReference(t.sss);
     t.sss.debugView = i % 3 === 0 ? 'final' : 'transmittance';
     const frame = await t.frame();
     t.dispose();
@@ -130,23 +129,23 @@ const CHANGES = [
   (s) => { s.sss.multisampling = 4; },
   (s) => s.composer.setSize(WIDTH + 16, HEIGHT + 9),
   (s) => { s.sss.foreshortening = false; },
-  (s) => s.sss.lightDepth.setSize(32),
+  (s) => s.sss._lightDepth.setSize(32),
   (s) => s.sss.makeSubsurface(s.material, { widthMm: 8, translucency: 0.3 }),
   (s) => Object.assign(s.sss, { profile: 'skinBurley', method: 'reference', samples: 'auto' }),
   (s) => { s.sss.debugView = 'thickness'; },
-  (s) => { s.sss.profile = 'skin'; useDenseReference(s.sss); },
+  (s) => { s.sss.profile = 'skin'; SSS.useDenseReference(s.sss); },
   (s) => { s.sss.worldUnitInMm = 50; },
   (s) => { s.sss.clear = false; },
   (s) => { s.sss.transmittance = true; },
   (s) => {
     const { sss } = s;
-    useDenseReference(sss, false);
+    SSS.useDenseReference(sss, false);
     Object.assign(sss, { method: 'footprint', samples: 'auto', profile: 'skin', followSurface: 'drop', depthThresholdMm: 6, debugView: 'final', split: 0 });
     sss.scattering = true;
     sss.multisampling = 'auto';
     s.composer.setSize(WIDTH, HEIGHT);
     sss.foreshortening = true;
-    sss.lightDepth.setSize(64);
+    sss._lightDepth.setSize(64);
     sss.makeSubsurface(s.material, { widthMm: 5, translucency: 0 });
     sss.worldUnitInMm = 100;
     sss.clear = true;

@@ -4,7 +4,7 @@
 // proves the enforcement is on (a string to innerHTML and to new Function must throw).
 import * as THREE from 'three';
 import { EffectComposer } from 'three/addons/postprocessing/EffectComposer.js';
-import * as SSS from '/src/index.js';
+import * as SSS from '/test/harness/sss.js';
 import { readRenderTargetFloats } from '/dev/readback.js';
 import { createFixture } from '/test/reliability/fixture.js';
 

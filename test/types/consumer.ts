@@ -1,16 +1,19 @@
 // A strict TypeScript consumer of every export (test/packaging/types.test.js compiles it against the
 // declarations generated from the JSDoc, installed as a package). It must compile with no error;
-// test/packaging/types.test.js also checks that ALL_EXPORTS names every value the package exports, and
-// ALL_INTERNALS every value of the unstable three-separable-sss/internals entry.
+// test/packaging/types.test.js also checks that ALL_EXPORTS names every value the package exports,
+// ALL_STAGES every value of three-separable-sss/stages and ALL_INTERNALS every value of the
+// unstable three-separable-sss/internals entry.
 import * as THREE from 'three';
 import { EffectComposer } from 'three/addons/postprocessing/EffectComposer.js';
 import * as SSS from 'three-separable-sss';
+import * as STAGES from 'three-separable-sss/stages';
 import * as INTERNALS from 'three-separable-sss/internals';
 import {
-  SubsurfaceScattering, makeSubsurface, getSubsurface, LightDepthTarget, ProfileLookup, computeKernel,
+  SubsurfaceScattering,
   type DebugView, type Method, type FollowSurfaceMode, type ProfileName, type SubsurfaceScatteringOptions,
   type SubsurfaceMaterialOptions, type SubsurfaceBinding, type StageName,
 } from 'three-separable-sss';
+import { makeSubsurface, getSubsurface, LightDepthTarget, ProfileLookup, computeKernel } from 'three-separable-sss/stages';
 
 const scene = new THREE.Scene();
 const camera = new THREE.PerspectiveCamera(30, 16 / 9, 0.01, 10);
@@ -34,7 +37,10 @@ sss.debugView = 'mask';
 sss.debugThicknessRangeMm = 5;
 sss.debugDepthRange = 2;
 const views: readonly DebugView[] = SSS.DEBUG_VIEWS;
-const mask: 'mask' = SSS.DEBUG_VIEW.MASK;
+const view: DebugView = sss.debugView;
+const light0: THREE.SpotLight | THREE.DirectionalLight | null = sss.light;
+const profileName: string = sss.profile.name;
+const kernelPixels: number = sss.plan.kernelPixels;
 sss.split = 0.5;
 sss.transmittance = true;
 sss.profile = 'marble';
@@ -47,10 +53,6 @@ sss.followSurface = 'lerp';
 sss.depthThresholdMm = 4;
 sss.foreshortening = false;
 const asked: Method = sss.method;
-// Version 0.2's setter methods: deprecated, still typed.
-sss.setDebugView('thickness', { thicknessRangeMm: 5 });
-sss.setKernel({ profile: 'marble', method: 'reference', samples: 25 });
-sss.setFollowSurface('off', 4);
 sss.scattering = false;
 sss.enabled = true;
 sss.clear = false;
@@ -62,7 +64,6 @@ sss.stageTimer = { begin(stage: StageName) { void stage; }, end() {} };
 const depth: THREE.DepthTexture = sss.depthTexture;
 const removed: boolean = sss.removeSubsurface(skin);
 const composer = new EffectComposer(new THREE.WebGLRenderer(), new THREE.WebGLRenderTarget(1, 1, { type: THREE.HalfFloatType }));
-sss.addTo(composer);
 composer.addPass(sss);
 sss.setSize(640, 360);
 sss.dispose();
@@ -82,6 +83,7 @@ export const ALL_INTERNALS = {
   AUTO_REACH: INTERNALS.AUTO_REACH satisfies number,
   PIPELINE_SCHEMA: INTERNALS.PIPELINE_SCHEMA.worldUnitInMm.doc satisfies string,
   MATERIAL_SCHEMA: INTERNALS.MATERIAL_SCHEMA.widthMm.default,
+  NODE_SCHEMA: INTERNALS.NODE_SCHEMA.samples.doc satisfies string,
   PIPELINE_OPTIONS: INTERNALS.PIPELINE_OPTIONS satisfies readonly string[],
   MATERIAL_OPTIONS: INTERNALS.MATERIAL_OPTIONS satisfies readonly string[],
   checkPipelineOptions: INTERNALS.checkPipelineOptions({ scene, camera }),
@@ -89,57 +91,56 @@ export const ALL_INTERNALS = {
   planBlur: INTERNALS.planBlur({ method: 'footprint', samples: 'auto', scattering: true, marginalRadiusMm: 3, denseRadiusMm: 0, kernelReachMm: {} }, 2).samples satisfies number,
   autoSampleCount: INTERNALS.autoSampleCount(4) satisfies number,
   BLUR_MODES: INTERNALS.BLUR_MODES.taps.passes,
-  planFrame: INTERNALS.planFrame({ scattering: true, pixelsPerMm: 2, samples: 'auto', autoRadiusMm: 3, radiusMmOf: (n: number) => n / 2 }).blur satisfies boolean,
   estimatePixelsPerMm: INTERNALS.estimatePixelsPerMm([], camera, { width: 640, height: 360 }, () => 0.001) satisfies number,
   nearestViewDepth: INTERNALS.nearestViewDepth,
   MIN_KERNEL_PIXELS: INTERNALS.MIN_KERNEL_PIXELS satisfies number,
   BlurStage: INTERNALS.BlurStage,
+  DenseSubsurfacePass: new INTERNALS.DenseSubsurfacePass({ camera, surfaceTexture: depth, profile: 'skin' }).profile,
   DRAW_PHASES: INTERNALS.DRAW_PHASES.SPLIT satisfies 'split',
   footprintsOf: INTERNALS.footprintsOf(kernel).edgesMm satisfies number[],
   KERNEL_MODES: INTERNALS.KERNEL_MODES,
-  FootprintTable: INTERNALS.FootprintTable,
+  FootprintTable: new INTERNALS.FootprintTable(new ProfileLookup('skin')).update('auto') satisfies THREE.DataTexture,
   footprintAllocation: INTERNALS.footprintAllocation((x: number) => [x, x, x], 17, 2).stepError satisfies number,
-  footprintTable: INTERNALS.footprintTable,
+  footprintTable: INTERNALS.footprintTable((x: number) => [x, x, x], 17).columns satisfies number,
   FOOTPRINT_SCALES: INTERNALS.FOOTPRINT_SCALES.perOctave satisfies number,
-  QuadrantEnergyLookup: INTERNALS.QuadrantEnergyLookup,
+  QuadrantEnergyLookup: new INTERNALS.QuadrantEnergyLookup('skin').texture satisfies THREE.DataTexture,
   isPerspective: INTERNALS.isPerspective(camera) satisfies boolean,
+  DEBUG_VIEW: INTERNALS.DEBUG_VIEW.MASK satisfies 'mask',
+  SUPPORTED_THREE: INTERNALS.SUPPORTED_THREE.oldest satisfies number,
+  SUPPORTED_THREE_RANGE: INTERNALS.SUPPORTED_THREE_RANGE satisfies string,
+  WEBGPU_THREE: INTERNALS.WEBGPU_THREE.oldest satisfies number,
+  WEBGPU_THREE_RANGE: INTERNALS.WEBGPU_THREE_RANGE satisfies string,
 };
 
-/** Every value the package exports (the deprecated aliases of version 0.2 too), each used where its type is checked. */
+/** Every value of the stages entry (a pipeline built by hand), each used where its type is checked. */
+export const ALL_STAGES = {
+  LightDepthTarget: lightDepth.texture satisfies THREE.Texture,
+  SubsurfaceScenePass: new STAGES.SubsurfaceScenePass(scene, camera).depthTexture satisfies THREE.DepthTexture,
+  makeSubsurface: STAGES.makeSubsurface satisfies typeof makeSubsurface,
+  getSubsurface: bound,
+  MATERIAL_OUTPUTS: STAGES.MATERIAL_OUTPUTS satisfies readonly ('diffuse' | 'transmittance' | 'thickness')[],
+  ATTACHMENTS: STAGES.ATTACHMENTS.DIFFUSE satisfies 1,
+  transmittanceChunk: STAGES.transmittanceChunk satisfies string,
+  createTransmittanceUniforms: STAGES.createTransmittanceUniforms({ lightDepth, lookup, worldUnitInMm: 1000 }).update(camera),
+  transmittanceUniformSlots: STAGES.transmittanceUniformSlots().sssShrinkWorld.value satisfies number,
+  SubsurfaceBlurPass: new STAGES.SubsurfaceBlurPass({ direction: 'horizontal', kernel, camera, surfaceTexture: depth }).radiusMm satisfies number,
+  computeKernel: kernel,
+  kernelRadiusMm: STAGES.kernelRadiusMm(kernel) satisfies number,
+  referenceKernel: STAGES.referenceKernel(11) satisfies Float32Array,
+  ProfileLookup: lookup.marginalRadiusMm satisfies number,
+  pixelsPerMm: STAGES.pixelsPerMm(0.001, 0.6, 2, 720) satisfies number,
+  SubsurfaceComposePass: STAGES.SubsurfaceComposePass,
+};
+
+/** Every value the package's main entry exports, each used where its type is checked. */
 export const ALL_EXPORTS = {
   SubsurfaceScattering: SSS.SubsurfaceScattering satisfies typeof SubsurfaceScattering,
-  MIN_KERNEL_PIXELS: SSS.MIN_KERNEL_PIXELS satisfies number,
-  METHODS: SSS.METHODS satisfies readonly Method[],
-  METHOD_TABLE: SSS.METHOD_TABLE.footprint.blur satisfies 'footprint',
-  AUTO_SAMPLES: SSS.AUTO_SAMPLES satisfies readonly number[],
-  AUTO_REACH: SSS.AUTO_REACH satisfies number,
-  FOLLOW_SURFACE_MODES: SSS.FOLLOW_SURFACE_MODES satisfies readonly FollowSurfaceMode[],
   PIPELINE_DEFAULTS: SSS.PIPELINE_DEFAULTS.method satisfies Method,
   MATERIAL_DEFAULTS: SSS.MATERIAL_DEFAULTS.widthMm satisfies number,
-  MAX_PROFILES: SSS.MAX_PROFILES satisfies number,
-  planFrame: SSS.planFrame({ scattering: true, pixelsPerMm: 2, samples: 'auto', autoRadiusMm: 3, radiusMmOf: (n: number) => n / 2 }).blur satisfies boolean,
-  autoSampleCount: SSS.autoSampleCount(4) satisfies number,
-  estimatePixelsPerMm: SSS.estimatePixelsPerMm([], camera, { width: 640, height: 360 }, () => 0.001) satisfies number,
-  LightDepthTarget: lightDepth.texture satisfies THREE.Texture,
-  SubsurfaceScenePass: new SSS.SubsurfaceScenePass(scene, camera).depthTexture satisfies THREE.DepthTexture,
-  makeSubsurface: SSS.makeSubsurface satisfies typeof makeSubsurface,
-  getSubsurface: bound,
-  MATERIAL_OUTPUTS: SSS.MATERIAL_OUTPUTS satisfies readonly ('diffuse' | 'transmittance' | 'thickness')[],
-  ATTACHMENTS: SSS.ATTACHMENTS.DIFFUSE satisfies 1,
-  DRAW_PHASES: SSS.DRAW_PHASES.SPLIT satisfies 'split',
-  transmittanceChunk: SSS.transmittanceChunk satisfies string,
-  createTransmittanceUniforms: SSS.createTransmittanceUniforms({ lightDepth, lookup, worldUnitInMm: 1000 }).update(camera),
-  transmittanceUniformSlots: SSS.transmittanceUniformSlots().sssShrinkWorld.value satisfies number,
-  SubsurfaceBlurPass: new SSS.SubsurfaceBlurPass({ direction: 'horizontal', kernel, camera, surfaceTexture: depth }).radiusMm satisfies number,
-  footprintsOf: SSS.footprintsOf(kernel).edgesMm satisfies number[],
-  KERNEL_MODES: SSS.KERNEL_MODES,
-  DenseSubsurfacePass: new SSS.DenseSubsurfacePass({ camera, surfaceTexture: depth, profile: 'skin' }).profile,
-  SubsurfaceComposePass: SSS.SubsurfaceComposePass,
+  METHODS: SSS.METHODS satisfies readonly Method[],
+  FOLLOW_SURFACE_MODES: SSS.FOLLOW_SURFACE_MODES satisfies readonly FollowSurfaceMode[],
   DEBUG_VIEWS: views,
-  DEBUG_VIEW: mask,
-  computeKernel: kernel,
-  kernelRadiusMm: SSS.kernelRadiusMm(kernel) satisfies number,
-  referenceKernel: SSS.referenceKernel(11) satisfies Float32Array,
+  MAX_PROFILES: SSS.MAX_PROFILES satisfies number,
   profiles: SSS.profiles.skin,
   getProfile: SSS.getProfile('milk'),
   transmittance: SSS.transmittance(1)[0] satisfies number,
@@ -147,13 +148,5 @@ export const ALL_EXPORTS = {
   dipoleProfile: SSS.dipoleProfile(),
   gaussianSumProfile: SSS.gaussianSumProfile('mine', [{ varianceMm2: 0.1, weights: [1, 1, 1] }]),
   radialProfile: SSS.radialProfile,
-  ProfileLookup: lookup.marginalRadiusMm satisfies number,
-  QuadrantEnergyLookup: new SSS.QuadrantEnergyLookup('skin').texture satisfies THREE.DataTexture,
-  FootprintTable: new SSS.FootprintTable(new SSS.ProfileLookup('skin')).update('auto') satisfies THREE.DataTexture,
-  footprintAllocation: SSS.footprintAllocation((x: number) => [x, x, x], 17, 2).stepError satisfies number,
-  footprintTable: SSS.footprintTable((x: number) => [x, x, x], 17).columns satisfies number,
-  FOOTPRINT_SCALES: SSS.FOOTPRINT_SCALES.perOctave satisfies number,
-  pixelsPerMm: SSS.pixelsPerMm(0.001, 0.6, 2, 720) satisfies number,
-  isPerspective: SSS.isPerspective(camera) satisfies boolean,
 };
-void [width, slot, removed, asked];
+void [width, slot, removed, asked, view, light0, profileName, kernelPixels];

@@ -14,7 +14,7 @@ export function pmndrs(renderer: THREE.WebGLRenderer, scene: THREE.Scene, camera
   sss.makeSubsurface(skin, { widthMm: 1 });
   composer.addPass(sss);
   composer.addPass(new EffectPass(camera, new BloomEffect(), new ToneMappingEffect()));
-  sss.pipeline.setDebugView('mask');
+  sss.pipeline.debugView = 'mask';
   sss.clear = false;
   return composer;
 }
@@ -41,13 +41,13 @@ function Skin() {
 function Loaded({ material }: { material: THREE.MeshStandardMaterial }) {
   useSubsurface(material, { widthMm: 2 });
   const { pass } = useSubsurfaceComposer();
-  pass?.setDebugView('final');
+  if (pass) pass.debugView = 'final';
   return null;
 }
 
 export function HookOnly() {
   const registry = useSubsurfaceScattering({ method: 'reference', antialias: 0 });
-  registry.pass?.setSplit(0.5);
+  if (registry.pass) registry.pass.split = 0.5;
   return null;
 }
 

@@ -2,7 +2,8 @@
 // test/packaging/types.test.js compiles this file as it is (an unused directive would fail it) and
 // with the directives removed, where it expects an error on exactly those lines.
 import * as THREE from 'three';
-import { SubsurfaceScattering, makeSubsurface, computeKernel } from 'three-separable-sss';
+import { SubsurfaceScattering } from 'three-separable-sss';
+import { makeSubsurface, computeKernel } from 'three-separable-sss/stages';
 import { SubsurfaceScatteringPass } from 'three-separable-sss/postprocessing';
 import { useSubsurfaceScattering } from 'three-separable-sss/react';
 import { subsurfaceMaterial } from 'three-separable-sss/webgpu';
@@ -24,8 +25,8 @@ new SubsurfaceScattering({ scene, camera, light: new THREE.PointLight() });
 const sss = new SubsurfaceScattering({ scene, camera });
 // @ts-expect-error an unknown debug view
 sss.debugView = 'masks';
-// @ts-expect-error an unknown debug view (version 0.2's setter, deprecated)
-sss.setDebugView('masks');
+// @ts-expect-error debugDepthRange is a number
+sss.debugDepthRange = '10';
 // @ts-expect-error only MeshStandardMaterial and MeshPhysicalMaterial scatter
 sss.makeSubsurface(new THREE.MeshBasicMaterial());
 // @ts-expect-error widthMm is a number
@@ -38,7 +39,7 @@ sss.multisampling = 'on';
 sss.scattering = 'no';
 // @ts-expect-error enabled is a boolean
 sss.enabled = 'no';
-// @ts-expect-error the kernel's method is one of the four
+// @ts-expect-error the kernel's method is one of the three
 sss.method = 'gauss';
 // @ts-expect-error samples is an odd count or 'auto'
 sss.samples = 'many';

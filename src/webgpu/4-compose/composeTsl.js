@@ -9,9 +9,6 @@ import { Fn, If, float, ivec2, screenCoordinate, select, textureLoad, uniform, v
 import { DEBUG_VIEW, DEBUG_VIEWS } from '../../4-compose/debugViews.js';
 import { finite3 } from '../common/surfaceTsl.js';
 
-/** The views that need the node's light (transmittance). */
-export const LIGHT_VIEWS = Object.freeze([DEBUG_VIEW.THICKNESS, DEBUG_VIEW.TRANSMITTANCE]);
-
 /** The uniform the compose reads: a view's position in DEBUG_VIEWS, compared by name below. */
 export const debugViewUniform = () => uniform(DEBUG_VIEWS.indexOf(DEBUG_VIEW.FINAL), 'int');
 const is = (u, view) => u.equal(DEBUG_VIEWS.indexOf(view));

@@ -280,10 +280,10 @@ describe('transmittance artifacts', () => {
         const composer = createComposer(renderer, { type: THREE.FloatType });
         composer.addPass(sss);
         composer.render();
-        const on = await read(renderer, sss.scenePass.renderTarget, 1);
+        const on = await read(renderer, sss._scenePass.renderTarget, 1);
         sss.transmittance = false;
         composer.render();
-        const off = await read(renderer, sss.scenePass.renderTarget, 1);
+        const off = await read(renderer, sss._scenePass.renderTarget, 1);
         let added = 0;
         let lit = 0;
         for (let i = 0; i < on.length; i += 4) for (let c = 0; c < 3; c++) { added = Math.max(added, on[i + c] - off[i + c]); lit = Math.max(lit, off[i + c]); }
@@ -323,7 +323,7 @@ describe('transmittance artifacts', () => {
         sss.transmittance = transmittance;
         stages = [];
         composer.render();
-        return { diffuse: await read(renderer, sss.scenePass.renderTarget, 1), lightDepth: stages.includes('lightDepth') };
+        return { diffuse: await read(renderer, sss._scenePass.renderTarget, 1), lightDepth: stages.includes('lightDepth') };
       };
       const worst = (a, b) => a.diffuse.reduce((m, v, i) => Math.max(m, Math.abs(v - b.diffuse[i])), 0);
       const brightest = (a) => Math.max(...a.diffuse.filter((_, i) => i % 4 !== 3));

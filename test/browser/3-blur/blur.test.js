@@ -332,10 +332,10 @@ describe('the depth carried in the light (one fetch per tap)', () => {
         composer.addPass(sss);
         composer.render();
         const out = {
-          scattered: Array.from(await read(renderer, sss.scatteredTarget)),
-          depthAlpha: (await read(renderer, sss.scenePass.renderTarget, 1))[((height >> 1) * width + (width >> 1)) * 4 + 3],
-          horizontalAlpha: (await read(renderer, sss.blur._blurTarget))[((height >> 1) * width + (width >> 1)) * 4 + 3],
-          carries: sss.scenePass.diffuseCarriesDepth,
+          scattered: Array.from(await read(renderer, sss._blur.scatteredTarget)),
+          depthAlpha: (await read(renderer, sss._scenePass.renderTarget, 1))[((height >> 1) * width + (width >> 1)) * 4 + 3],
+          horizontalAlpha: (await read(renderer, sss._blur._blurTarget))[((height >> 1) * width + (width >> 1)) * 4 + 3],
+          carries: sss._scenePass.diffuseCarriesDepth,
           blur: sss.plan.blur,
         };
         sss.dispose();

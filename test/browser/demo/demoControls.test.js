@@ -110,7 +110,7 @@ describe.skipIf(!scanAvailable)('demo controls (on the head scan; needs npm run 
   it('the marble piece (marble=1) shows beside the head with its own profile, and leaves one profile when hidden', async () => {
     const piece = { centre: [-2.7, 1.2, 1.0] }; // createMarblePiece's position
     const state = (page) => page.evaluate(() => ({
-      profiles: window.demo.sss.horizontalPass.material.defines.PROFILE_COUNT, visible: window.demo.rig.scene.getObjectByName('marble piece').visible,
+      profiles: window.demo.sss._blur.horizontalPass.material.defines.PROFILE_COUNT, visible: window.demo.rig.scene.getObjectByName('marble piece').visible,
     }));
     let page = await demo(fullHead('marble=1'));
     const shown = await frame(page, piece);

@@ -384,7 +384,7 @@ describe.skipIf(!scanAvailable)('the demo at first sight (on the head scan; need
     expect(spread).toBeGreaterThan(0.1);
 
     // Antialiased: the scene split runs with the composer's 4× MSAA.
-    expect(await page.evaluate(() => [window.demo.composer.renderTarget1.samples, window.demo.sss.scenePass.renderTarget.samples])).toEqual([4, 4]);
+    expect(await page.evaluate(() => [window.demo.composer.renderTarget1.samples, window.demo.sss._scenePass.renderTarget.samples])).toEqual([4, 4]);
   });
 
   it('5. at 400 px wide: the panel starts folded, nothing covers the face, the attribution is readable', async () => {

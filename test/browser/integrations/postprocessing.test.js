@@ -62,7 +62,7 @@ describe('SubsurfaceScatteringPass in pmndrs EffectComposer', () => {
       const out = await read(renderer, composer.inputBuffer); // needsSwap false: the input buffer
       const result = {
         oracle, unscattered, out, isStandIn: rigA.isStandIn, needsSwap: pass.needsSwap,
-        kernelPixels: pass.pipeline.kernelPixels, glError: renderer.getContext().getError(),
+        kernelPixels: pass.pipeline.plan.kernelPixels, glError: renderer.getContext().getError(),
       };
       sss.dispose();
       three.dispose();

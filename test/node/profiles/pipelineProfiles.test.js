@@ -3,8 +3,7 @@
 // channels the surface attachment has, as materials come and go and the pipeline's profile changes.
 import { describe, it, expect, afterEach } from 'vitest';
 import * as THREE from 'three';
-import * as SSS from '../../../src/index.js';
-import { useDenseReference } from '../../../src/internals.js';
+import * as SSS from '../../harness/sss.js';
 import { createFixture } from '../../reliability/fixture.js';
 
 let t;
@@ -12,11 +11,11 @@ afterEach(() => t?.dispose());
 
 /** What the frame holds: { count: PROFILE_COUNT of both blur passes, channels: the surface's, slots and transmittance profiles by material }. */
 function frameOf(sss, materials) {
-  const counts = new Set([sss.horizontalPass, sss.verticalPass].map((pass) => pass.material.defines.PROFILE_COUNT));
+  const counts = new Set([sss._blur.horizontalPass, sss._blur.verticalPass].map((pass) => pass.material.defines.PROFILE_COUNT));
   expect(counts.size).toBe(1);
   return {
     count: [...counts][0],
-    channels: sss.scenePass.surfaceTexture.format === THREE.RGBAFormat ? 4 : 2,
+    channels: sss._scenePass.surfaceTexture.format === THREE.RGBAFormat ? 4 : 2,
     slots: materials.map((m) => sss.materials.get(m).hook.profileSlot),
     transmits: materials.map((m) => sss.materials.get(m).hook.transmittance.lookup.profile.name),
   };
@@ -52,7 +51,7 @@ describe('a pipeline with materials of several profiles', () => {
     const { sss, material: plain } = t;
     const named = new THREE.MeshStandardMaterial();
     sss.makeSubsurface(named, { profile: 'skin' });
-    useDenseReference(sss);
+    SSS.useDenseReference(sss);
     expect(() => { sss.profile = 'marble'; }).toThrow(/the dense reference blurs 1 profile per frame and the materials use 2/);
     expect(sss.profile.name).toBe('skin');
     expect(() => sss.makeSubsurface(named, { profile: 'milk' })).toThrow(RangeError);
@@ -75,20 +74,15 @@ describe('a pipeline with materials of several profiles', () => {
     expect(sss._otherLookups.size).toBe(1);
   });
 
-  it('names the call that would make a ninth profile, and the deprecated setKernel changes all or nothing', () => {
+  it('names the call that would make a ninth profile, and a refused setting changes nothing', () => {
     t = createFixture(THREE, SSS);
     const { sss } = t;
-    const warn = console.warn;
-    console.warn = () => {}; // setKernel's deprecation
-    try {
-      expect(() => sss.setKernel({ profile: 'milk', method: 'bogus' })).toThrow(/method/);
-      expect([sss.profile.name, sss.method]).toEqual(['skin', 'footprint']);
-      sss.makeSubsurface(new THREE.MeshStandardMaterial(), { profile: 'marble' });
-      expect(() => useDenseReference(sss)).toThrow(/the dense reference blurs 1 profile per frame and the materials use 2/);
-      expect([sss.profile.name, sss.method, sss.plan?.passes ?? 'separable']).toEqual(['skin', 'footprint', 'separable']);
-    } finally {
-      console.warn = warn;
-    }
+    expect(() => { sss.method = 'bogus'; }).toThrow(/method/);
+    expect(() => { sss.profile = 'jelly'; }).toThrow(/profile/);
+    expect([sss.profile.name, sss.method]).toEqual(['skin', 'footprint']);
+    sss.makeSubsurface(new THREE.MeshStandardMaterial(), { profile: 'marble' });
+    expect(() => SSS.useDenseReference(sss)).toThrow(/the dense reference blurs 1 profile per frame and the materials use 2/);
+    expect([sss.profile.name, sss.method, sss.plan?.passes ?? 'separable']).toEqual(['skin', 'footprint', 'separable']);
     for (const name of ['skin', 'milk', 'skinBurley']) sss.makeSubsurface(new THREE.MeshStandardMaterial(), { profile: name });
     for (let i = 0; i < 4; i++) sss.makeSubsurface(new THREE.MeshStandardMaterial(), { profile: SSS.burleyProfile({ name: `b${i}`, scatterDistanceMm: [1, 0.5, 0.3 + i / 10] }) });
     // Eight now (the fixture's material follows the pipeline's skin): a ninth by the pipeline's profile, or by a material.

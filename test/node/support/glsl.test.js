@@ -57,7 +57,7 @@ describe('glslFloat', () => {
 
 describe("the library's shaders", () => {
   it('all assemble on import (every include found, no chunk unused)', async () => {
-    const m = await import('../../../src/index.js');
+    const m = await import('../../../src/stages.js');
     expect(m.transmittanceChunk).toContain('float sssThicknessWorld(');
     expect(m.transmittanceChunk).toContain('vec3 sssReadProfile(');
   });

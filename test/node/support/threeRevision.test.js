@@ -12,7 +12,7 @@ vi.mock('three', async (importOriginal) => {
 });
 
 const { MeshStandardMaterial, PerspectiveCamera, Scene, SpotLight } = await import('three');
-const { SubsurfaceScattering, SubsurfaceScenePass, makeSubsurface } = await import('../../../src/index.js');
+const { SubsurfaceScattering, SubsurfaceScenePass, makeSubsurface } = await import('../../harness/sss.js');
 const { SubsurfaceScatteringPass } = await import('../../../src/integrations/postprocessing.js');
 
 const scene = new Scene();

@@ -4,7 +4,7 @@
 import { describe, it, expect } from 'vitest';
 import { readFileSync } from 'node:fs';
 import { MeshStandardMaterial, REVISION, ShaderLib } from 'three';
-import { makeSubsurface } from '../../../src/index.js';
+import { makeSubsurface } from '../../../src/stages.js';
 import { SUPPORTED_THREE, SUPPORTED_THREE_RANGE, isSupportedThree } from '../../../src/support/threeVersion.js';
 
 const pkg = JSON.parse(readFileSync(new URL('../../../package.json', import.meta.url), 'utf8'));
