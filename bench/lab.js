@@ -12,7 +12,8 @@ import {
 } from 'three';
 import { EffectComposer } from 'three/addons/postprocessing/EffectComposer.js';
 import { OutputPass } from 'three/addons/postprocessing/OutputPass.js';
-import { SubsurfaceScattering, pixelsPerMm } from '/src/index.js';
+import { SubsurfaceScattering } from '/src/index.js';
+import { pixelsPerMm } from '/src/stages.js';
 import { AUTO_SAMPLES, footprintTable, useDenseReference } from '/src/internals.js';
 import { ATTACHMENTS } from '/src/2-scene-split/subsurfaceTarget.js';
 import { AUTO_STEP_ERROR, footprintRowOf } from '/src/profiles/footprints.js';

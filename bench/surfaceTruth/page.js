@@ -12,7 +12,8 @@ import {
   FloatType, NearestFilter, ShaderMaterial, WebGLRenderer, WebGLRenderTarget,
 } from 'three';
 import { EffectComposer } from 'three/addons/postprocessing/EffectComposer.js';
-import { LightDepthTarget, SubsurfaceScattering } from '/src/index.js';
+import { SubsurfaceScattering } from '/src/index.js';
+import { LightDepthTarget } from '/src/stages.js';
 import { useDenseReference } from '/src/internals.js';
 import { readRenderTargetFloats } from '/dev/readback.js';
 import { GpuStageTimer, median, sssStageTimes } from '/dev/gpuTimer.js';
