@@ -140,6 +140,9 @@ const SCALE_RANGE = Object.freeze({ min: MIN_SCALE_MM, max: MAX_SCALE_MM, unit: 
 /** A boolean setting: true or false, nothing else (a TypeError naming it). */
 const isBoolean = (value, name) => checkBoolean(name, value);
 
+/** A setting that takes a number above 0, up to `max`, in `unit` (an error naming it and the range otherwise). */
+const positive = (unit, max = Infinity) => (value, name) => checkNumber(name, value, { min: 0, minExclusive: true, max, unit });
+
 /** A setting that takes one of `list` (a RangeError naming it and the list otherwise). */
 const oneOf = (list) => (value, name) => checkOneOf(name, value, list);
 
@@ -222,7 +225,7 @@ export const PIPELINE_SCHEMA = Object.freeze({
   },
   depthThresholdMm: {
     default: 6, type: 'number', doc: "mm of depth step taken for another surface (close to the reference's constant at its field of view)",
-    check: (value, name) => checkNumber(name, value, { min: 0, minExclusive: true, max: MAX_SCALE_MM, unit: 'mm' }),
+    check: positive('mm', MAX_SCALE_MM),
   },
   foreshortening: {
     default: true, type: 'boolean', doc: 'narrow the blur on surfaces seen at grazing angles',
@@ -255,17 +258,16 @@ export const PIPELINE_SCHEMA = Object.freeze({
     check: isBoolean,
   },
   debugView: {
-    default: 'final', type: "import('./4-compose/debugViews.js').DebugView",
+    default: 'final', type: "import('./4-compose/debugViews.js').DebugView", check: oneOf(DEBUG_VIEWS),
     doc: "the final image or one ingredient: 'final', 'diffuse', 'specular', 'depth', 'mask', and with `light` 'thickness', 'transmittance'",
-    check: oneOf(DEBUG_VIEWS),
   },
   debugDepthRange: {
     default: 10, type: 'number', doc: "world units of view depth the 'depth' view maps from white (near) to black",
-    check: (value, name) => checkNumber(name, value, { min: 0, minExclusive: true, unit: 'world units' }),
+    check: positive('world units'),
   },
   debugThicknessRangeMm: {
     default: 10, type: 'number', doc: "profile mm of thickness the 'thickness' view maps from black to white",
-    check: (value, name) => checkNumber(name, value, { min: 0, minExclusive: true, unit: 'mm' }),
+    check: positive('mm'),
   },
   split: {
     default: 0, webgpu: false, type: 'number', doc: 'the fraction of the width, from the left, shown without scattering, 0..1',
@@ -280,7 +282,7 @@ export const PIPELINE_SCHEMA = Object.freeze({
 export const MATERIAL_SCHEMA = Object.freeze({
   widthMm: {
     default: 1, type: 'number', doc: 'mm of material per profile mm, (0, 1000] (1: the profile at its physical size)',
-    check: (value, name) => checkNumber(name, value, { min: 0, minExclusive: true, max: MAX_WIDTH_MM, unit: 'mm' }),
+    check: positive('mm', MAX_WIDTH_MM),
   },
   widthScale: {
     default: 1, type: 'number', doc: 'scales the width, 0..1 (0: no scattering, the light kept)',
