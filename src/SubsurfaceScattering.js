@@ -183,6 +183,16 @@ export class SubsurfaceScattering extends PassWithSettings {
   }
 
   /**
+   * The diffusion profile of the materials that name none: a preset's name or a profile object,
+   * read back as the profile object; the tables are refilled only on a change.
+   * @type {import('./options.js').DiffusionProfile}
+   */
+  get profile() { return super.profile; }
+
+  /** @param {import('./options.js').ProfileName|object} profile */
+  set profile(profile) { super.profile = profile; }
+
+  /**
    * As RenderPass: the clear colour of the scene (null: the renderer's).
    * @type {import('three').ColorRepresentation|null}
    */
@@ -392,7 +402,7 @@ export class SubsurfaceScattering extends PassWithSettings {
 
   /**
    * The materials made subsurface through this pipeline, each with its binding and options.
-   * @type {Map<import('three').MeshStandardMaterial, { hook: import('./2-scene-split/subsurfaceMaterial.js').SubsurfaceBinding, options: SubsurfaceMaterialOptions }>}
+   * @type {Map<import('three').MeshStandardMaterial, { hook: import('./2-scene-split/subsurfaceMaterial.js').SubsurfaceBinding, options: import('./options.js').SubsurfaceMaterialOptions }>}
    */
   get materials() { return this._subsurfaceMaterials.entries; }
 
