@@ -61,7 +61,10 @@ export function footprintsOf(kernel) {
 
 /**
  * One direction of the separable subsurface blur: blurs the diffuse light of subsurface pixels
- * only, depth- and mask-aware, in physical units.
+ * only, depth- and mask-aware, in physical units. The horizontal pass writes its light with the
+ * depth in the alpha (give it a 32-bit float target) and the vertical pass reads it so (with MSAA,
+ * setLightCarriesDepth(true, the multi-target's diffuse) for the coverage); a horizontal pass over
+ * SubsurfaceScenePass's diffuse reads one fetch per tap with setLightCarriesDepth(scenePass.diffuseCarriesDepth).
  */
 export class SubsurfaceBlurPass extends SurfacePass {
   /**
