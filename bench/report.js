@@ -143,7 +143,7 @@ function syntheticSection(results) {
 const robustTime = (rows) => (rows.length > 0 && rows.every((r) => r.sssCpuMs > 0) ? 'sssCpuMs' : 'gpuMs');
 const clockName = (time) => (time === 'sssCpuMs' ? 'CPU time' : 'timer queries');
 
-/** samples 'auto' against the fixed budgets of every scene (issue 11's goal: within 1.2 × the cheapest of equal error). */
+/** samples 'auto' against the fixed budgets of every scene (the goal: within 1.2 × the cheapest of equal error). */
 function autoSection(results, moduleInfo) {
   const time = robustTime(results.filter((r) => r.kind === 'separable'));
   const comparisons = autoAgainstFixed(results, time);
@@ -230,7 +230,7 @@ function peersSection(json) {
 
 const stageSum = (st) => Object.values(st).reduce((sum, v) => sum + (Number.isFinite(v) ? v : 0), 0);
 
-/** What version 0.2's additions cost (bench/peerPlan.js's ADDITIONS), at the resolution measured. */
+/** What the features beyond the default frame cost (bench/peerPlan.js's ADDITIONS), at the resolution measured. */
 function featuresSection(json) {
   const block = (json.peers ?? []).find((p) => p.features);
   if (!block) return '';
@@ -244,7 +244,7 @@ function featuresSection(json) {
     ['the same balls in their own profiles (three profiles on screen)', 'threeProfiles', ['scene', 'blurH', 'blurV', 'compose']],
     ["the isotropic blur (`kernelGroups: 'auto'`; the default blurs with one kernel)", 'isotropic', ['blurH', 'blurV']],
   ].filter(([, feature]) => rounds.every((r) => r[feature]));
-  const lines = [`## What version 0.2's additions cost (head, ${block.resolution.replace('x', '×')}, ${rounds.length} rounds)`, ''];
+  const lines = [`## What the features cost (head, ${block.resolution.replace('x', '×')}, ${rounds.length} rounds)`, ''];
   lines.push('| addition | ours: frame (sum of stages) with it − without | stages it touches, with / without | plain three.js frame with it − without |', '|---|---|---|---|');
   for (const [name, feature, stages] of rows) {
     const ours = of(feature, (x) => stageSum(x.stages)) - base((x) => stageSum(x.stages));
@@ -264,7 +264,7 @@ function featuresSection(json) {
     // Issue 20's budget: the isotropic blur against the same release's one-kernel blur, per round.
     const blur = (x) => (x.stages.blurH ?? 0) + (x.stages.blurV ?? 0);
     const ratio = spread(rounds.map((r) => blur(r.isotropic) / blur(r.none)));
-    lines.push('', `The isotropic blur against one kernel on the same frame (issue 20's budget: ≤ 1.3×), per round: both blurs ×${ratio.median.toFixed(2)} (${ratio.min.toFixed(2)}–${ratio.max.toFixed(2)}).`);
+    lines.push('', `The isotropic blur against one kernel on the same frame (the budget: ≤ 1.3×), per round: both blurs ×${ratio.median.toFixed(2)} (${ratio.min.toFixed(2)}–${ratio.max.toFixed(2)}).`);
   }
   lines.push('', 'Stage times in ms (stage timer, median over rounds); "with − without" from the same rounds. Noise: timer queries of identical frames spread by about ±25 % on this shared machine, so differences under a tenth of the frame are not resolved.');
   return lines.join('\n');
@@ -321,7 +321,7 @@ function webgpuSection(webgpu) {
     `The head at ${webgpu.width}×${webgpu.height} with the module's defaults, each frame closed by a read-back, in ${webgpu.rounds} interleaved rounds of ${webgpu.frames} frames (bench/webgpu/page.js), on SwiftShader (WebGPU on its Vulkan, WebGL 2 on ANGLE): wall times of software rendering, to compare as ratios within the run only.`, '',
     '| frame | median ms | the node over its backend\'s plain frame |', '|---|---|---|',
     ...rows.map(([name, t, r]) => `| ${name} | ${t.toFixed(0)} | ${r === null ? '—' : `×${r.toFixed(2)}`} |`),
-    ...(isotropic.length === 0 ? [] : ['', 'The isotropic blur (issue 20) in the same rounds, each path against itself with one kernel (the default):', '',
+    ...(isotropic.length === 0 ? [] : ['', 'The isotropic blur (`kernelGroups: \'auto\'`) in the same rounds, each path against itself with one kernel (the default):', '',
       '| frame | median ms | over the same path with one kernel |', '|---|---|---|',
       ...isotropic.map(([name, t, r]) => `| ${name} | ${t.toFixed(0)} | ×${r.toFixed(2)} |`)])].join('\n');
 }
@@ -356,7 +356,7 @@ export function benchMarkdown(json, beyond = {}) {
     ? `On the head at 1280×720${standIn}, the default setting (footprint kernel, skin profile, samples 'auto') is within **${pct(def.rmse)}** relative RMSE of the dense 2D reference (maximum error ${def.maxError.toFixed(3)}, PSNR ${def.psnr.toFixed(1)} dB, SSIM ${def.ssim.toFixed(4)}); the reference kernel (Jimenez 2012) at 17 taps is at **${pct(ref17.rmse)}** (maximum error ${ref17.maxError.toFixed(3)}, PSNR ${ref17.psnr.toFixed(1)} dB, SSIM ${ref17.ssim.toFixed(4)})${marginal17 ? ` and the marginal kernel at ${pct(marginal17.rmse)}` : ''}. Their SSS passes took ${ms(def.gpuMs)}, ${ms(ref17.gpuMs)}${marginal17 ? ` and ${ms(marginal17.gpuMs)}` : ''} on ${device}.${autoCost}`
     : 'The default or the reference kernel at 17 taps was not measured.';
   const gpuNote = /SwiftShader/.test(device)
-    ? `**No GPU**: no GPU machine was available for this run, so there are no 1920×1080 GPU timings (issue 10's aim there: both SSS passes ≤ 0.15 ms); \`npm run bench -- --gpu\` measures them where a GPU is. These results are SwiftShader's (software WebGL 2 on ${json.machine.cores} CPU cores), so every time is a CPU time; compare them only as ratios within this run.`
+    ? `**No GPU**: no GPU machine was available for this run, so there are no 1920×1080 GPU timings (the aim there: both SSS passes ≤ 0.15 ms); \`npm run bench -- --gpu\` measures them where a GPU is. These results are SwiftShader's (software WebGL 2 on ${json.machine.cores} CPU cores), so every time is a CPU time; compare them only as ratios within this run.`
     : `Device: ${device}.`;
   const defaultNote = "The bench's default is the module's own (`PIPELINE_DEFAULTS`): the footprint kernel with `samples: 'auto'`, skin; every side-by-side frame of ours and every row marked \"(default)\" is that setting.";
   return `# Speed and accuracy
