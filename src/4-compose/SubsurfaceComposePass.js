@@ -1,7 +1,5 @@
-// Stage 4: adds the scattered diffuse light back on top of the rest of the scene's light (the
-// multi-target's colour attachment), in linear HDR. Pixels that are not subsurface come out as
-// their material wrote them. Also offers a split view (unblurred on the left) and debug views of
-// each ingredient (src/4-compose/debugViews.js).
+// Stage 4: adds the scattered diffuse light back to the rest of the scene's light, linear HDR;
+// other pixels come out as their material wrote them. Split and debug views (src/4-compose/debugViews.js).
 import { AlwaysDepth, LessEqualDepth, Vector4 } from 'three';
 import { ShaderPass } from 'three/addons/postprocessing/ShaderPass.js';
 import vertexShader from '../../shaders/common/fullscreen.vert.glsl?raw';
@@ -18,19 +16,17 @@ import { PIPELINE_DEFAULTS } from '../options.js';
 
 const fragmentShader = assembleGlsl('SubsurfaceComposePass', composeGlsl, { 'common/finite.glsl': finiteGlsl, 'common/carriedDepth.glsl': carriedDepthGlsl });
 
-/** Adds the scattered diffuse light to the colour attachment (a ShaderPass); split and debug views. */
 export class SubsurfaceComposePass extends ShaderPass {
   /**
    * @param {object} options
    * @param {import('three').Texture} options.colorTexture the multi-target's colour attachment:
    *   specular + emissive of subsurface pixels, full colour elsewhere
    * @param {import('three').Texture} options.surfaceTexture the multi-target's surface attachment
-   * @param {import('three').Texture} options.diffuseTexture the diffuse light before the blur; its
-   *   alpha marks the mask, as 1, the coverage or a carried depth: not 0 (split view, debug views)
-   * @param {import('three').Texture|null} [options.scatteredTexture=null] the blurred diffuse light;
-   *   null reads the composer's read buffer
-   * @param {import('three').DepthTexture} options.depthTexture the multi-target's depth, written
-   *   out as the target's depth
+   * @param {import('three').Texture} options.diffuseTexture the diffuse light before the blur; alpha
+   *   not 0 on the mask
+   * @param {import('three').Texture|null} [options.scatteredTexture=null] the blurred diffuse light,
+   *   alpha as the diffuse's; null: the composer's read buffer
+   * @param {import('three').DepthTexture} options.depthTexture the multi-target's depth, written out
    */
   constructor(options = {}) {
     const {
@@ -42,7 +38,7 @@ export class SubsurfaceComposePass extends ShaderPass {
     }
     super({
       name: 'SubsurfaceComposePass',
-      defines: { ...enumDefines('DEBUG_VIEW', DEBUG_VIEWS, DEBUG_VIEW.FINAL), KEEP_BACKGROUND: 0, FETCH_EVERYWHERE: 0, MASK_FROM_SCATTERED: 0 },
+      defines: { ...enumDefines('DEBUG_VIEW', DEBUG_VIEWS, DEBUG_VIEW.FINAL), KEEP_BACKGROUND: 0 },
       uniforms: {
         tColor: { value: null }, tScattered: { value: null }, tDiffuse: { value: null }, tSurface: { value: null },
         tDepth: { value: null }, farDepth: { value: 1 },
@@ -58,9 +54,6 @@ export class SubsurfaceComposePass extends ShaderPass {
     this.uniforms.tDiffuse.value = inputs.diffuseTexture;
     this.uniforms.tDepth.value = inputs.depthTexture;
     this.scatteredTexture = scatteredTexture;
-    this._writesDepth = true;
-    this._fetchesEverywhere = false;
-    this._maskFromScattered = false;
     this.setClear(true);
     this.debugView = DEBUG_VIEW.FINAL;
     this.split = 0;
@@ -68,10 +61,9 @@ export class SubsurfaceComposePass extends ShaderPass {
   }
 
   /**
-   * Shows the final image or one ingredient: 'final', 'diffuse' (scattered), 'specular', 'depth'
-   * (near = white over `depthRange` world units), 'mask', 'thickness' (the thickness T(d) is read
-   * at, in profile mm: physical mm × (1 − translucency) / widthMm; `thicknessRangeMm` = white),
-   * 'transmittance'. The last two need the materials to write them (SubsurfaceScattering's debugView does).
+   * Shows the final image or one ingredient: 'depth' is white near over `depthRange` world units;
+   * 'thickness' the profile mm T(d) is read at, white at `thicknessRangeMm`. 'thickness' and
+   * 'transmittance' need the materials to write them (materialOutputOf).
    * @param {import('./debugViews.js').DebugView} view one of DEBUG_VIEWS
    * @param {{ depthRange?: number, thicknessRangeMm?: number }} [options]
    */
@@ -87,9 +79,8 @@ export class SubsurfaceComposePass extends ShaderPass {
   }
 
   /**
-   * How the output meets what the target already holds, as RenderPass's `clear` and `clearDepth`:
-   * clear = true writes every pixel, colour and depth; clear = false keeps the target's pixels where
-   * the scene drew nothing and, unless `clearDepth`, where the target's depth is nearer.
+   * As RenderPass's `clear` and `clearDepth`: false keeps the target's pixels where the scene drew
+   * nothing and, unless `clearDepth`, where the target's depth is nearer.
    * @param {boolean} clear
    * @param {boolean} [clearDepth=false]
    */
@@ -98,54 +89,13 @@ export class SubsurfaceComposePass extends ShaderPass {
     checkBoolean('clearDepth', clearDepth);
     setDefines(this.material, { KEEP_BACKGROUND: clear ? 0 : 1 });
     this.material.depthTest = true; // depth is written only while the depth test is on
-    this.material.depthWrite = this._writesDepth;
+    this.material.depthWrite = true;
     this.material.depthFunc = clear || clearDepth ? AlwaysDepth : LessEqualDepth;
   }
 
   /**
-   * Documented-internal switch (the bench turns it off for one measure: what the depth write
-   * costs): false writes colour only, as version 0.1's compose did, and later passes find no depth.
-   * @type {boolean}
-   */
-  get writesDepth() { return this._writesDepth; }
-
-  set writesDepth(enabled) {
-    this._writesDepth = checkBoolean('writesDepth', enabled);
-    this.material.depthWrite = enabled;
-  }
-
-  /**
-   * Documented-internal switch (the bench turns it on for one measure: what fetching less saves):
-   * true reads the scattered light at every pixel and the surface always, as before issue 10.
-   * The image is the same.
-   * @type {boolean}
-   */
-  get fetchesEverywhere() { return this._fetchesEverywhere; }
-
-  set fetchesEverywhere(enabled) {
-    this._fetchesEverywhere = checkBoolean('fetchesEverywhere', enabled);
-    setDefines(this.material, { FETCH_EVERYWHERE: enabled ? 1 : 0 });
-  }
-
-  /**
-   * Documented-internal switch (issue 19; SubsurfaceScattering turns it on, the bench undoes it
-   * for one measure): true reads the mask from the scattered light's alpha (the blur's output:
-   * its centre's coverage, 0 off the mask), and nothing outside `setMaskBox`'s box, so the diffuse
-   * attachment is read only where its unblurred light is shown; false (the default, for a
-   * scattered texture of your own whose alpha may not be the mask) reads the mask from the diffuse
-   * attachment at every pixel. The image is the same.
-   * @type {boolean}
-   */
-  get maskFromScattered() { return this._maskFromScattered; }
-
-  set maskFromScattered(enabled) {
-    this._maskFromScattered = checkBoolean('maskFromScattered', enabled);
-    setDefines(this.material, { MASK_FROM_SCATTERED: enabled ? 1 : 0 });
-  }
-
-  /**
-   * With maskFromScattered: the subsurface pixels' screen box (device pixels, origin bottom left,
-   * as SubsurfaceScenePass.subsurfaceBox; null: anywhere). Outside it no pixel is taken for subsurface.
+   * The subsurface pixels' screen box (device pixels, origin bottom left; null: anywhere): outside
+   * it only colour and depth are fetched.
    * @param {{ x: number, y: number, width: number, height: number }|null} box
    */
   setMaskBox(box) {
@@ -163,7 +113,7 @@ export class SubsurfaceComposePass extends ShaderPass {
   }
 
   render(renderer, writeBuffer, readBuffer, deltaTime, maskActive) {
-    // three r172 brought the reversed depth buffer (and getReversed); before it depth is never reversed.
+    // getReversed: three r172+.
     this.uniforms.farDepth.value = renderer.state.buffers.depth.getReversed?.() ? 0 : 1;
     super.render(renderer, writeBuffer, readBuffer, deltaTime, maskActive);
   }
