@@ -25,14 +25,31 @@ const UNORM_ONE = 1023;
 
 /**
  * `fractions` (summing to 1) as integers summing to UNORM_ONE exactly, each within one of its
- * share (largest remainders), so the shader's parts add up to the footprint's weight.
+ * share (largest remainders), so the shader's parts add up to the footprint's weight; into
+ * `shares` (a scratch array: the table packs thousands a refill).
  */
-function unormShares(fractions) {
-  const scaled = fractions.map((f) => Math.min(Math.max(f, 0), 1) * UNORM_ONE);
-  const shares = scaled.map(Math.floor);
-  let left = UNORM_ONE - shares.reduce((a, b) => a + b, 0);
-  const order = scaled.map((x, i) => [x - Math.floor(x), i]).sort((a, b) => b[0] - a[0]);
-  for (let k = 0; left > 0; k = (k + 1) % order.length, left--) shares[order[k][1]]++;
+function unormShares(fractions, shares = new Array(fractions.length)) {
+  const n = fractions.length;
+  let left = UNORM_ONE;
+  for (let g = 0; g < n; g++) {
+    shares[g] = Math.floor(Math.min(Math.max(fractions[g], 0), 1) * UNORM_ONE);
+    left -= shares[g];
+  }
+  // What is left goes round the groups from the largest remainder down (ties to the lower group):
+  // whole rounds to every group, then one more to each of the largest.
+  const rounds = Math.floor(left / n);
+  for (let g = 0; g < n; g++) shares[g] += rounds;
+  let taken = 0; // bit g: group g has had its one more
+  for (left -= rounds * n; left > 0; left--) {
+    let best = -1;
+    let bestRemainder = -Infinity;
+    for (let g = 0; g < n; g++) {
+      const remainder = Math.min(Math.max(fractions[g], 0), 1) * UNORM_ONE - (shares[g] - rounds);
+      if (!(taken & (1 << g)) && remainder > bestRemainder) [best, bestRemainder] = [g, remainder];
+    }
+    shares[best]++;
+    taken |= 1 << best;
+  }
   return shares;
 }
 
@@ -48,13 +65,17 @@ function packedFractions(grouping, table) {
     const texels = fractions.length / (MAX_KERNEL_GROUPS * 3);
     const packed = new Uint32Array(texels * 4);
     const columns = table.columns + 1;
+    const parts = new Array(MAX_KERNEL_GROUPS); // scratch, per texel and channel
+    const shares = new Array(MAX_KERNEL_GROUPS);
     for (let t = 0; t < texels; t++) {
       const column = t % columns;
+      const at = t * MAX_KERNEL_GROUPS * 3;
       // Within groups 1 and 2's reach: the row's near count is one past the last such footprint.
-      const near = [0, 1, 2].some((c) => fractions[(t * MAX_KERNEL_GROUPS) * 3 + c] + fractions[(t * MAX_KERNEL_GROUPS + 1) * 3 + c] > NEAR_SHARE);
+      const near = fractions[at] + fractions[at + 3] > NEAR_SHARE || fractions[at + 1] + fractions[at + 4] > NEAR_SHARE || fractions[at + 2] + fractions[at + 5] > NEAR_SHARE;
       if (column > 0 && near) packed[(t - column) * 4 + 3] = column;
       for (let c = 0; c < 3; c++) {
-        const shares = unormShares(Array.from({ length: MAX_KERNEL_GROUPS }, (_, g) => fractions[(t * MAX_KERNEL_GROUPS + g) * 3 + c]));
+        for (let g = 0; g < MAX_KERNEL_GROUPS; g++) parts[g] = fractions[at + g * 3 + c];
+        unormShares(parts, shares);
         for (let g = 0; g < MAX_KERNEL_GROUPS - 1; g++) packed[t * 4 + g] |= shares[g] << (10 * c);
       }
     }

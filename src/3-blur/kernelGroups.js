@@ -354,10 +354,30 @@ export function groupEnergies({ gaussians, members }) {
  *   RGB fractions at ((r · (columns + 1) + k) · MAX_KERNEL_GROUPS + g) · 3 + c; groups past the
  *   grouping's count hold 0. Where no group has energy (past float range) the widest takes it all.
  */
-export function footprintGroupFractions(grouping, { data, columns }) {
-  const { gaussians, members, share = 1 } = grouping;
+export function footprintGroupFractions(grouping, table) {
+  const { share = 1, unfaded = grouping } = grouping;
+  let byTable = ownFractions.get(unfaded);
+  if (!byTable) ownFractions.set(unfaded, (byTable = new WeakMap()));
+  if (!byTable.has(table)) byTable.set(table, ownGroupFractions(unfaded, table));
+  const own = byTable.get(table);
+  if (share >= 1) return own;
+  // A faded grouping (fadedGrouping): each footprint's split leans to the groups' energy shares.
+  const shares = groupEnergies(unfaded);
+  const out = new Float32Array(own.length);
+  for (let texel = 0; texel < own.length; texel += MAX_KERNEL_GROUPS * 3) {
+    if (own[texel] + own[texel + 3] + own[texel + 6] + own[texel + 9] === 0) continue; // past a row's last footprint
+    shares.forEach((rgb, g) => rgb.forEach((e, c) => { out[texel + g * 3 + c] = share * own[texel + g * 3 + c] + (1 - share) * e; }));
+  }
+  return out;
+}
+
+/** grouping → footprint table → its own fractions (a faded grouping's share only mixes them). */
+const ownFractions = new WeakMap();
+
+/** footprintGroupFractions of an unfaded grouping, computed. */
+function ownGroupFractions(grouping, { data, columns }) {
+  const { gaussians, members } = grouping;
   const count = members[0].length;
-  const shares = groupEnergies(grouping); // a faded grouping's (fadedGrouping) split leans to these
   const scales = gaussians.map((g) => 1 / Math.sqrt(2 * g.varianceMm2));
   const out = new Float32Array(FOOTPRINT_ROWS * (columns + 1) * MAX_KERNEL_GROUPS * 3);
   const energies = new Float64Array(count);
@@ -372,10 +392,7 @@ export function footprintGroupFractions(grouping, { data, columns }) {
         total += energies[g];
       }
       const base = (row * (columns + 1) + column) * MAX_KERNEL_GROUPS;
-      for (let g = 0; g < count; g++) {
-        const own = total > 0 ? energies[g] / total : (g === count - 1 ? 1 : 0);
-        out[(base + g) * 3 + c] = share * own + (1 - share) * shares[g][c];
-      }
+      for (let g = 0; g < count; g++) out[(base + g) * 3 + c] = total > 0 ? energies[g] / total : (g === count - 1 ? 1 : 0);
     }
   };
   for (let row = 0; row < FOOTPRINT_ROWS; row++) {
@@ -409,6 +426,6 @@ export function fadedGrouping(grouping, share) {
   if (share >= 1) return grouping;
   let byShare = fadedGroupings.get(grouping);
   if (!byShare) fadedGroupings.set(grouping, (byShare = new Map()));
-  if (!byShare.has(share)) byShare.set(share, Object.freeze({ ...grouping, share }));
+  if (!byShare.has(share)) byShare.set(share, Object.freeze({ ...grouping, share, unfaded: grouping }));
   return byShare.get(share);
 }
