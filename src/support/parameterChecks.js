@@ -102,7 +102,9 @@ export function checkOddInteger(name, value, min, max) {
 }
 
 /**
- * Checks that `value` is an array (or typed array) of 3 finite numbers, each inside an optional interval.
+ * Checks that `value` is an array (or typed array) of 3 finite numbers, or a THREE.Color or
+ * THREE.Vector3 (three's own RGB types, read as their r, g, b or x, y, z), each inside an optional
+ * interval.
  * @param {string} name
  * @param {*} value
  * @param {{min?: number, max?: number, minExclusive?: boolean, maxExclusive?: boolean, unit?: string}} [range]
@@ -111,6 +113,8 @@ export function checkOddInteger(name, value, min, max) {
  * @throws {RangeError} "strength[1] must be in [0, 1], got 2"
  */
 export function checkRgb(name, value, range = {}) {
+  if (value?.isColor === true) value = [value.r, value.g, value.b];
+  else if (value?.isVector3 === true) value = [value.x, value.y, value.z];
   const isList = Array.isArray(value) || (ArrayBuffer.isView(value) && !(value instanceof DataView));
   if (!isList || value.length !== 3 || !Array.from(value).every((v) => typeof v === 'number' && Number.isFinite(v))) {
     throw new TypeError(`${name} must be an array of 3 finite numbers, got ${describeValue(value)}`);
