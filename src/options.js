@@ -195,7 +195,7 @@ export const PIPELINE_SCHEMA = Object.freeze({
   },
   method: {
     default: 'footprint', type: "import('./options.js').Method",
-    doc: "how the blur weighs its taps: 'footprint' (each pixel's footprint weighed exactly), 'marginal' or 'reference' (fixed taps; 'reference': Jimenez 2012's kernel); a switch between 'footprint' and the others recompiles the blur",
+    doc: "how the blur weighs its taps: 'footprint' (each pixel's footprint, exactly), 'marginal' or 'reference' (fixed taps; Jimenez 2012's kernel); a switch to or from 'footprint' recompiles",
     check: oneOf(METHODS),
   },
   samples: {
@@ -205,7 +205,7 @@ export const PIPELINE_SCHEMA = Object.freeze({
   },
   kernelGroups: {
     default: 1, type: "number|'auto'",
-    doc: `method 'footprint': 1, one separable kernel (exact along the screen axes only; the fast blur); 'auto' or 2..${MAX_KERNEL_GROUPS}: the profile's Gaussians blurred in groups, the same in every direction, each group an attachment and taps of its own ('auto': one group where one is within the isotropy budget, a far head, else ${MAX_KERNEL_GROUPS})`,
+    doc: `method 'footprint': 1, one separable kernel (exact along the screen axes; the fast blur); 'auto' or 2..${MAX_KERNEL_GROUPS}: the profile's Gaussians in groups, the same in every direction, slower ('auto': one group for a far head)`,
     check: (value, name) => checkKernelGroups(value, name),
   },
   strength: {
@@ -222,7 +222,7 @@ export const PIPELINE_SCHEMA = Object.freeze({
     check: oneOf(FOLLOW_SURFACE_MODES),
   },
   depthThresholdMm: {
-    default: 6, type: 'number', doc: "mm of depth step taken for another surface (close to the reference's constant at its field of view)",
+    default: 6, type: 'number', doc: 'mm of depth step taken for another surface',
     check: positive('mm', MAX_SCALE_MM),
   },
   foreshortening: {
@@ -441,13 +441,13 @@ export function checkMaterialOptions(options = {}, previous = MATERIAL_DEFAULTS)
  * @property {import('three').SpotLight|import('three').DirectionalLight|null} [light=null] the light shining through thin parts (transmittance); null: no transmittance
  * @property {number} [worldUnitInMm=1000] millimetres per world unit (three.js: metres, 1000)
  * @property {ProfileName|object} [profile='skin'] a preset's name ('skin', 'skinBurley', 'marble', 'milk') or a profile object (burleyProfile, dipoleProfile, gaussianSumProfile)
- * @property {Method} [method='footprint'] how the blur weighs its taps: 'footprint' (each pixel's footprint weighed exactly), 'marginal' or 'reference' (fixed taps; 'reference': Jimenez 2012's kernel); a switch between 'footprint' and the others recompiles the blur
+ * @property {Method} [method='footprint'] how the blur weighs its taps: 'footprint' (each pixel's footprint, exactly), 'marginal' or 'reference' (fixed taps; Jimenez 2012's kernel); a switch to or from 'footprint' recompiles
  * @property {number|'auto'} [samples='auto'] taps per direction, odd, 3..63 (a budget for 'footprint'); 'auto': as few as the on-screen scale needs
- * @property {number|'auto'} [kernelGroups=1] method 'footprint': 1, one separable kernel (exact along the screen axes only; the fast blur); 'auto' or 2..4: the profile's Gaussians blurred in groups, the same in every direction, each group an attachment and taps of its own ('auto': one group where one is within the isotropy budget, a far head, else 4)
+ * @property {number|'auto'} [kernelGroups=1] method 'footprint': 1, one separable kernel (exact along the screen axes; the fast blur); 'auto' or 2..4: the profile's Gaussians in groups, the same in every direction, slower ('auto': one group for a far head)
  * @property {number[]|import('three').Color} [strength] [r, g, b] or a THREE.Color, 0..1: mix with no scattering (the reference model)
  * @property {number[]} [falloff] RGB, (0, 10]: method 'reference' only, its kernel's shape
  * @property {FollowSurfaceMode} [followSurface='drop'] a tap on another surface: 'drop' (renormalise), 'lerp' (to the centre) or 'off'
- * @property {number} [depthThresholdMm=6] mm of depth step taken for another surface (close to the reference's constant at its field of view)
+ * @property {number} [depthThresholdMm=6] mm of depth step taken for another surface
  * @property {boolean} [foreshortening=true] narrow the blur on surfaces seen at grazing angles
  * @property {number} [lightDepthSize=1024] the light depth map resolution, pixels (16..8192)
  * @property {import('three').TextureDataType} [type=THREE.HalfFloatType] THREE.HalfFloatType or THREE.FloatType light targets; constructor only
@@ -466,12 +466,12 @@ export function checkMaterialOptions(options = {}, previous = MATERIAL_DEFAULTS)
  * @property {import('three').SpotLight|import('three').DirectionalLight|null} [light=null] the light shining through thin parts (transmittance); null: no transmittance
  * @property {number} [worldUnitInMm=1000] millimetres per world unit (three.js: metres, 1000)
  * @property {ProfileName|object} [profile='skin'] a preset's name ('skin', 'skinBurley', 'marble', 'milk') or a profile object (burleyProfile, dipoleProfile, gaussianSumProfile)
- * @property {Method} [method='footprint'] how the blur weighs its taps: 'footprint' (each pixel's footprint weighed exactly), 'marginal' or 'reference' (fixed taps; 'reference': Jimenez 2012's kernel); a switch between 'footprint' and the others recompiles the blur
+ * @property {Method} [method='footprint'] how the blur weighs its taps: 'footprint' (each pixel's footprint, exactly), 'marginal' or 'reference' (fixed taps; Jimenez 2012's kernel); a switch to or from 'footprint' recompiles
  * @property {number|'auto'} [samples='auto'] taps per direction, odd, 3..63 (a budget for 'footprint'); 'auto': as few as the on-screen scale needs
- * @property {number|'auto'} [kernelGroups=1] method 'footprint': 1, one separable kernel (exact along the screen axes only; the fast blur); 'auto' or 2..4: the profile's Gaussians blurred in groups, the same in every direction, each group an attachment and taps of its own ('auto': one group where one is within the isotropy budget, a far head, else 4)
+ * @property {number|'auto'} [kernelGroups=1] method 'footprint': 1, one separable kernel (exact along the screen axes; the fast blur); 'auto' or 2..4: the profile's Gaussians in groups, the same in every direction, slower ('auto': one group for a far head)
  * @property {number[]|import('three').Color} [strength] [r, g, b] or a THREE.Color, 0..1: mix with no scattering (the reference model)
  * @property {FollowSurfaceMode} [followSurface='drop'] a tap on another surface: 'drop' (renormalise), 'lerp' (to the centre) or 'off'
- * @property {number} [depthThresholdMm=6] mm of depth step taken for another surface (close to the reference's constant at its field of view)
+ * @property {number} [depthThresholdMm=6] mm of depth step taken for another surface
  * @property {boolean} [foreshortening=true] narrow the blur on surfaces seen at grazing angles
  * @property {number} [lightDepthSize=1024] the light depth map resolution, pixels (16..8192)
  * @property {boolean} [scattering=true] false: no blur, the unblurred diffuse light composed (transmittance stays)
@@ -488,13 +488,13 @@ export function checkMaterialOptions(options = {}, previous = MATERIAL_DEFAULTS)
  * @property {import('three').Camera} camera the camera drawn with, read every frame
  * @property {import('three').SpotLight|import('three').DirectionalLight|null} light the light shining through thin parts (transmittance); null: no transmittance (read-only: given to the constructor)
  * @property {number} worldUnitInMm millimetres per world unit (three.js: metres, 1000)
- * @property {Method} method how the blur weighs its taps: 'footprint' (each pixel's footprint weighed exactly), 'marginal' or 'reference' (fixed taps; 'reference': Jimenez 2012's kernel); a switch between 'footprint' and the others recompiles the blur
+ * @property {Method} method how the blur weighs its taps: 'footprint' (each pixel's footprint, exactly), 'marginal' or 'reference' (fixed taps; Jimenez 2012's kernel); a switch to or from 'footprint' recompiles
  * @property {number|'auto'} samples taps per direction, odd, 3..63 (a budget for 'footprint'); 'auto': as few as the on-screen scale needs
- * @property {number|'auto'} kernelGroups method 'footprint': 1, one separable kernel (exact along the screen axes only; the fast blur); 'auto' or 2..4: the profile's Gaussians blurred in groups, the same in every direction, each group an attachment and taps of its own ('auto': one group where one is within the isotropy budget, a far head, else 4)
+ * @property {number|'auto'} kernelGroups method 'footprint': 1, one separable kernel (exact along the screen axes; the fast blur); 'auto' or 2..4: the profile's Gaussians in groups, the same in every direction, slower ('auto': one group for a far head)
  * @property {number[]|import('three').Color|undefined} strength [r, g, b] or a THREE.Color, 0..1: mix with no scattering (the reference model)
  * @property {number[]|undefined} falloff RGB, (0, 10]: method 'reference' only, its kernel's shape
  * @property {FollowSurfaceMode} followSurface a tap on another surface: 'drop' (renormalise), 'lerp' (to the centre) or 'off'
- * @property {number} depthThresholdMm mm of depth step taken for another surface (close to the reference's constant at its field of view)
+ * @property {number} depthThresholdMm mm of depth step taken for another surface
  * @property {boolean} foreshortening narrow the blur on surfaces seen at grazing angles
  * @property {number} lightDepthSize the light depth map resolution, pixels (16..8192)
  * @property {number|'auto'} multisampling MSAA samples of the scene split, 0..16; 'auto': the composer buffer's `samples` (the node: its scene pass's)
@@ -511,12 +511,12 @@ export function checkMaterialOptions(options = {}, previous = MATERIAL_DEFAULTS)
  * @typedef {object} NodeSettings
  * @property {import('three').SpotLight|import('three').DirectionalLight|null} light the light shining through thin parts (transmittance); null: no transmittance (read-only: given to the constructor)
  * @property {number} worldUnitInMm millimetres per world unit (three.js: metres, 1000)
- * @property {Method} method how the blur weighs its taps: 'footprint' (each pixel's footprint weighed exactly), 'marginal' or 'reference' (fixed taps; 'reference': Jimenez 2012's kernel); a switch between 'footprint' and the others recompiles the blur
+ * @property {Method} method how the blur weighs its taps: 'footprint' (each pixel's footprint, exactly), 'marginal' or 'reference' (fixed taps; Jimenez 2012's kernel); a switch to or from 'footprint' recompiles
  * @property {number|'auto'} samples taps per direction, odd, 3..63 (a budget for 'footprint'); 'auto': as few as the on-screen scale needs
- * @property {number|'auto'} kernelGroups method 'footprint': 1, one separable kernel (exact along the screen axes only; the fast blur); 'auto' or 2..4: the profile's Gaussians blurred in groups, the same in every direction, each group an attachment and taps of its own ('auto': one group where one is within the isotropy budget, a far head, else 4)
+ * @property {number|'auto'} kernelGroups method 'footprint': 1, one separable kernel (exact along the screen axes; the fast blur); 'auto' or 2..4: the profile's Gaussians in groups, the same in every direction, slower ('auto': one group for a far head)
  * @property {number[]|import('three').Color|undefined} strength [r, g, b] or a THREE.Color, 0..1: mix with no scattering (the reference model)
  * @property {FollowSurfaceMode} followSurface a tap on another surface: 'drop' (renormalise), 'lerp' (to the centre) or 'off'
- * @property {number} depthThresholdMm mm of depth step taken for another surface (close to the reference's constant at its field of view)
+ * @property {number} depthThresholdMm mm of depth step taken for another surface
  * @property {boolean} foreshortening narrow the blur on surfaces seen at grazing angles
  * @property {number} lightDepthSize the light depth map resolution, pixels (16..8192)
  * @property {boolean} scattering false: no blur, the unblurred diffuse light composed (transmittance stays)
