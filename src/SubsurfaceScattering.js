@@ -88,6 +88,8 @@ export class SubsurfaceScattering extends PassWithSettings {
     this._otherLookups = new Map();
     /** @internal Stage 1, for transmittance (null without a light). */
     this._lightDepth = o.light ? new LightDepthTarget(o.light, { size: o.lightDepthSize }) : null;
+    /** @internal Whether a material of this pipeline transmits (the light depth map holds its thickness). */
+    this._transmitsThrough = (m) => this._subsurfaceMaterials.entries.get(m)?.options.transmittance === true;
     /** @internal The size setSize last gave, device pixels (checked against the GPU's limits on the next frame). */
     this._size = { width: 1, height: 1 };
     /** @internal The GPU's render target limits, known from the first frame on. */
@@ -181,8 +183,33 @@ export class SubsurfaceScattering extends PassWithSettings {
       case 'lightDepthSize':
         this._lightDepth?.setSize(value);
         return;
+      case 'light':
+        this._setLight(value, previous);
+        return;
       default: // scene, camera, multisampling: read each frame
     }
+  }
+
+  /**
+   * Another light, or none: the map follows it from the next frame; from none to a light
+   * transmittance turns on (as the constructor's default), to none off.
+   * @private
+   */
+  _setLight(light, previous) {
+    if (light === previous) return;
+    if (light === null) checkNeedsLight('debugView', this.debugView, null); // a light's view stays: refused
+    if (light !== null && previous !== null) {
+      this._lightDepth.setLight(light); // the materials keep reading the same map
+      return;
+    }
+    if (light === null) {
+      this._lightDepth.dispose();
+      this._lightDepth = null;
+    } else {
+      this._lightDepth = new LightDepthTarget(light, { size: this.lightDepthSize });
+    }
+    this._settings.transmittance = light !== null;
+    this._subsurfaceMaterials.rebindAll();
   }
 
   /**
@@ -251,7 +278,9 @@ export class SubsurfaceScattering extends PassWithSettings {
     const checks = this._checks.begin();
     checks.camera(camera);
     checks.scene(scene);
-    const lightWorks = this._lightDepth !== null && checks.light(this._lightDepth, scene, this.transmittance);
+    // The light's checks fit its map to the meshes, as the scene split's render will place them.
+    if (this._lightDepth !== null && scene.matrixWorldAutoUpdate === true) scene.updateMatrixWorld();
+    const lightWorks = this._lightDepth !== null && checks.light(this._lightDepth, scene, this.transmittance, this._transmitsThrough);
     checks.end();
     // 1. Light depth: linear depth seen from the light, for transmittance (not for a light that is
     //    off, nor one that reaches no subsurface mesh from behind: its map would go unread).
@@ -316,10 +345,9 @@ export class SubsurfaceScattering extends PassWithSettings {
    */
   _transmits(scene, camera) {
     if (materialOutputOf(this.debugView) === 'thickness') return true;
-    // The matrices as the scene split's render will see them (three updates them the same way).
-    if (scene.matrixWorldAutoUpdate === true) scene.updateMatrixWorld();
+    // The camera's matrices as the scene split's render will see them (the scene's are: render step 0).
     if (camera.parent === null && camera.matrixWorldAutoUpdate === true) camera.updateMatrixWorld();
-    return lightReachesFromBehind(this._lightDepth.light, scene, camera, (m) => this._subsurfaceMaterials.entries.get(m)?.options.transmittance);
+    return lightReachesFromBehind(this._lightDepth.light, scene, camera, this._transmitsThrough);
   }
 
   /** The largest on-screen size of a profile mm over the subsurface meshes the split drew. @private */

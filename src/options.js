@@ -152,8 +152,8 @@ export const PIPELINE_SCHEMA = Object.freeze({
     },
   },
   light: {
-    default: null, access: 'readonly', type: "import('three').SpotLight|import('three').DirectionalLight|null",
-    doc: 'the light shining through thin parts (transmittance); null: no transmittance',
+    default: null, type: "import('three').SpotLight|import('three').DirectionalLight|null",
+    doc: 'the light shining through thin parts (transmittance); null: no transmittance (assigned: a light after none turns `transmittance` on, null off)',
     check(light, name) {
       if (light !== null && !(light?.isSpotLight || light?.isDirectionalLight)) {
         throw new TypeError(`${name} must be a THREE.SpotLight, THREE.DirectionalLight or null, got ${describe(light)}`);
@@ -329,7 +329,7 @@ export const LIGHT_VIEWS = Object.freeze(['thickness', 'transmittance']);
 export function checkNeedsLight(name, value, light) {
   const needs = name === 'transmittance' ? value === true : name === 'debugView' && LIGHT_VIEWS.includes(value);
   if (needs && !light) {
-    throw new TypeError(`${name} = ${JSON.stringify(value)} needs a light (a THREE.SpotLight or THREE.DirectionalLight given as \`light\` to the constructor); there is none`);
+    throw new TypeError(`${name} = ${JSON.stringify(value)} needs a light (a THREE.SpotLight or THREE.DirectionalLight as \`light\`); there is none`);
   }
   return value;
 }
@@ -416,7 +416,7 @@ export function checkMaterialOptions(options = {}, previous = MATERIAL_DEFAULTS)
  * @typedef {object} SubsurfaceScatteringOptions
  * @property {import('three').Scene} scene the scene drawn, read every frame
  * @property {import('three').Camera} camera the camera drawn with, read every frame
- * @property {import('three').SpotLight|import('three').DirectionalLight|null} [light=null] the light shining through thin parts (transmittance); null: no transmittance
+ * @property {import('three').SpotLight|import('three').DirectionalLight|null} [light=null] the light shining through thin parts (transmittance); null: no transmittance (assigned: a light after none turns `transmittance` on, null off)
  * @property {number} [worldUnitInMm=1000] millimetres per world unit (three.js: metres, 1000)
  * @property {ProfileName|object} [profile='skin'] a preset's name ('skin', 'skinBurley', 'marble', 'milk') or a profile object (burleyProfile, dipoleProfile, gaussianSumProfile)
  * @property {Method} [method='footprint'] how the blur weighs its taps: 'footprint' (each pixel's footprint weighed exactly), 'marginal' or 'reference' (fixed taps; 'reference': Jimenez 2012's kernel); a switch between 'footprint' and the others recompiles the blur
@@ -441,7 +441,7 @@ export function checkMaterialOptions(options = {}, previous = MATERIAL_DEFAULTS)
 /**
  * subsurfaceScattering(scenePass, { ... }) (the WebGPU node): the defaults are NODE_DEFAULTS.
  * @typedef {object} SubsurfaceScatteringNodeOptions
- * @property {import('three').SpotLight|import('three').DirectionalLight|null} [light=null] the light shining through thin parts (transmittance); null: no transmittance
+ * @property {import('three').SpotLight|import('three').DirectionalLight|null} [light=null] the light shining through thin parts (transmittance); null: no transmittance (assigned: a light after none turns `transmittance` on, null off)
  * @property {number} [worldUnitInMm=1000] millimetres per world unit (three.js: metres, 1000)
  * @property {ProfileName|object} [profile='skin'] a preset's name ('skin', 'skinBurley', 'marble', 'milk') or a profile object (burleyProfile, dipoleProfile, gaussianSumProfile)
  * @property {Method} [method='footprint'] how the blur weighs its taps: 'footprint' (each pixel's footprint weighed exactly), 'marginal' or 'reference' (fixed taps; 'reference': Jimenez 2012's kernel); a switch between 'footprint' and the others recompiles the blur
@@ -464,7 +464,7 @@ export function checkMaterialOptions(options = {}, previous = MATERIAL_DEFAULTS)
  * @typedef {object} PipelineSettings
  * @property {import('three').Scene} scene the scene drawn, read every frame
  * @property {import('three').Camera} camera the camera drawn with, read every frame
- * @property {import('three').SpotLight|import('three').DirectionalLight|null} light the light shining through thin parts (transmittance); null: no transmittance (read-only: given to the constructor)
+ * @property {import('three').SpotLight|import('three').DirectionalLight|null} light the light shining through thin parts (transmittance); null: no transmittance (assigned: a light after none turns `transmittance` on, null off)
  * @property {number} worldUnitInMm millimetres per world unit (three.js: metres, 1000)
  * @property {ProfileName|object} profile a preset's name ('skin', 'skinBurley', 'marble', 'milk') or a profile object (burleyProfile, dipoleProfile, gaussianSumProfile)
  * @property {Method} method how the blur weighs its taps: 'footprint' (each pixel's footprint weighed exactly), 'marginal' or 'reference' (fixed taps; 'reference': Jimenez 2012's kernel); a switch between 'footprint' and the others recompiles the blur
@@ -488,7 +488,7 @@ export function checkMaterialOptions(options = {}, previous = MATERIAL_DEFAULTS)
 /**
  * SubsurfaceScatteringNode's settings, as properties (assigning one checks it as the constructor does).
  * @typedef {object} NodeSettings
- * @property {import('three').SpotLight|import('three').DirectionalLight|null} light the light shining through thin parts (transmittance); null: no transmittance (read-only: given to the constructor)
+ * @property {import('three').SpotLight|import('three').DirectionalLight|null} light the light shining through thin parts (transmittance); null: no transmittance (assigned: a light after none turns `transmittance` on, null off)
  * @property {number} worldUnitInMm millimetres per world unit (three.js: metres, 1000)
  * @property {ProfileName|object} profile a preset's name ('skin', 'skinBurley', 'marble', 'milk') or a profile object (burleyProfile, dipoleProfile, gaussianSumProfile)
  * @property {Method} method how the blur weighs its taps: 'footprint' (each pixel's footprint weighed exactly), 'marginal' or 'reference' (fixed taps; 'reference': Jimenez 2012's kernel); a switch between 'footprint' and the others recompiles the blur

@@ -3,12 +3,39 @@
 // renderer's subclass brings the target (two-channel float: linear depth in world units, 0 = no
 // surface, and the entry cosine), the depth material and the render; this class places the camera
 // on the light, checks its frustum and says which materials the light sees.
-import { OrthographicCamera, PerspectiveCamera, Vector3 } from 'three';
+import { Matrix4, OrthographicCamera, PerspectiveCamera, Vector3 } from 'three';
+import { localBoundsOf } from '../support/meshBounds.js';
 import { checkInteger, checkNumber, checkOptions } from '../support/parameterChecks.js';
 import { describe } from '../support/rendererSupport.js';
 import { LIGHT_DEPTH_SIZES, PIPELINE_DEFAULTS } from '../options.js';
 
 const _target = new Vector3();
+const _corner = new Vector3();
+const _inverse = new Matrix4();
+
+/**
+ * What the fitted range leaves around what it holds, as a fraction of its depth (the bounds of a
+ * mesh whose pose moved since they were taken), and the nearest a spot light's near may be, as a
+ * fraction of its far (the depth buffer orders the surfaces: 24 bits over near..far).
+ */
+export const FIT = Object.freeze({ MARGIN: 0.02, MIN_NEAR: 1e-3 });
+
+/** The light view depths of `object`'s bounds' corners, [nearest, farthest], or null where it has none. */
+function depthRange(object, view) {
+  const box = localBoundsOf(object);
+  if (!box || box.isEmpty()) return null;
+  let near = Infinity;
+  let far = -Infinity;
+  for (let k = 0; k < 8; k++) {
+    _corner.set(k & 1 ? box.max.x : box.min.x, k & 2 ? box.max.y : box.min.y, k & 4 ? box.max.z : box.min.z)
+      .applyMatrix4(object.matrixWorld).applyMatrix4(view);
+    near = Math.min(near, -_corner.z);
+    far = Math.max(far, -_corner.z);
+  }
+  return [near, far];
+}
+
+const nameOf = (object) => (object.name ? `mesh "${object.name}"` : `an unnamed ${object.type}`);
 
 /**
  * Whether a material's own shape matters from the light: a cut-out (alphaTest with a map or an
@@ -33,6 +60,13 @@ export function lightSees(material) {
   return Boolean(material) && material.visible !== false && material.transparent !== true && !(material.transmission > 0);
 }
 
+/** Refuses what is not a SpotLight or DirectionalLight, naming `who`. */
+function checkLight(who, light) {
+  if (!light || !(light.isSpotLight || light.isDirectionalLight)) {
+    throw new TypeError(`${who}: light must be a THREE.SpotLight or THREE.DirectionalLight, got ${describe(light)}`);
+  }
+}
+
 /** What the light pass leaves out whatever its material: they bound no volume. */
 export const boundsNoVolume = (object) => object.isPoints === true || object.isLine === true || object.isSprite === true;
 
@@ -50,15 +84,16 @@ export class LightDepthView {
    *   pixels (16..8192, default 1024); near and far: world units (default: the light's shadow camera)
    */
   constructor(who, light, options = {}) {
-    if (!light || !(light.isSpotLight || light.isDirectionalLight)) {
-      throw new TypeError(`${who}: light must be a THREE.SpotLight or THREE.DirectionalLight, got ${describe(light)}`);
-    }
+    checkLight(who, light);
     const { size = PIPELINE_DEFAULTS.lightDepthSize, near, far } = checkOptions(`${who} options`, options, ['size', 'near', 'far']);
     if (near !== undefined) checkNumber('near', near, { min: 0, minExclusive: true, unit: 'world units' });
     if (far !== undefined) checkNumber('far', far, { min: near ?? 0, minExclusive: true, unit: 'world units' });
+    this.who = who;
     this.light = light;
     this.near = near;
     this.far = far;
+    /** The near and far fitted to what the map must hold (fit), or null: the light's shadow camera's. */
+    this.fitted = null;
     this.camera = light.isSpotLight ? new PerspectiveCamera() : new OrthographicCamera();
     /** The target's resolution, pixels: checked by the subclass's setSize(this.size) once it has its target. */
     this.size = size;
@@ -132,6 +167,65 @@ export class LightDepthView {
     this.renderTarget.setSize(size, size);
   }
 
+  /**
+   * Follows another SpotLight or DirectionalLight from the next render on (the target and the
+   * materials reading it stay); the camera changes kind with the light's (onCameraChange).
+   * @param {import('three').SpotLight | import('three').DirectionalLight} light
+   */
+  setLight(light) {
+    checkLight(this.who, light);
+    const kindChanges = Boolean(light.isSpotLight) !== Boolean(this.light.isSpotLight);
+    this.light = light;
+    this.fitted = null;
+    this.valid = false;
+    if (!kindChanges) return;
+    this.camera = light.isSpotLight ? new PerspectiveCamera() : new OrthographicCamera();
+    this.onCameraChange?.();
+  }
+
+  /**
+   * Fits the light camera's near and far to what the map must hold: every visible mesh with a
+   * material for which `transmits(material)` holds, and whatever the light sees in front of them
+   * (it counts as thickness). The light's shadow camera keeps its angle or extent; its near and
+   * far clipped a mesh away silently (0.5 by default: a light 0.45 m from a disc sent nothing).
+   * @param {import('three').Scene} scene (world matrices up to date)
+   * @param {(material: import('three').Material) => boolean} transmits
+   * @returns {string|null} what cannot be fitted: a spot light inside a transmitting mesh's bounds
+   */
+  fit(scene, transmits) {
+    this.updateCamera();
+    const view = this.camera.matrixWorldInverse;
+    const spot = this.light.isSpotLight;
+    const targets = [];
+    const seen = [];
+    let inside = null;
+    scene.traverseVisible((object) => {
+      if (!object.isMesh) return;
+      const materials = Array.isArray(object.material) ? object.material : [object.material];
+      const range = materials.some(lightSees) ? depthRange(object, view) : null;
+      if (!range) return;
+      seen.push(range);
+      if (!materials.some((m) => m && transmits(m))) return;
+      targets.push(range);
+      if (spot && range[0] <= 0 && !inside) {
+        _corner.setFromMatrixPosition(this.light.matrixWorld).applyMatrix4(_inverse.copy(object.matrixWorld).invert());
+        if (localBoundsOf(object).containsPoint(_corner)) inside = object;
+      }
+    });
+    const far = Math.max(...targets.map(([, f]) => f));
+    if (!(spot ? far > 0 : targets.length > 0)) { // nothing to hold: the map goes unread
+      this.fitted = null;
+      return null;
+    }
+    // Whatever lies before the farthest transmitting surface may stand between it and the light.
+    let near = Math.min(...seen.filter(([n, f]) => f > (spot ? 0 : -Infinity) && n < far).map(([n]) => n));
+    const margin = FIT.MARGIN * Math.max(far - near, Math.abs(far), Math.abs(near)) || FIT.MARGIN; // a flat mesh in the light's plane: some depth
+    near -= margin;
+    if (spot) near = Math.max(near, FIT.MIN_NEAR * far);
+    this.fitted = { near, far: far + margin };
+    return inside ? `the spot light is inside the bounds of ${nameOf(inside)}, so its parts nearer than ${Number(this.fitted.near.toPrecision(3))} world units to the light are not in the light's depth map (no transmittance there): move the light out of it` : null;
+  }
+
   /** Places the light camera on the light, looking at its target, with its angle or extent. */
   updateCamera() {
     const { light, camera } = this;
@@ -140,8 +234,8 @@ export class LightDepthView {
     const shadowCamera = light.shadow.camera;
     camera.position.setFromMatrixPosition(light.matrixWorld);
     camera.lookAt(_target.setFromMatrixPosition(light.target.matrixWorld));
-    camera.near = this.near ?? shadowCamera.near;
-    camera.far = this.far ?? shadowCamera.far;
+    camera.near = this.near ?? this.fitted?.near ?? shadowCamera.near;
+    camera.far = this.far ?? this.fitted?.far ?? shadowCamera.far;
     if (light.isSpotLight) {
       camera.fov = (2 * light.angle * 180) / Math.PI;
       camera.aspect = 1;

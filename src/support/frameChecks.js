@@ -141,9 +141,11 @@ export class FrameChecks {
    * @param {import('../1-light-depth/LightDepthTarget.js').LightDepthTarget} lightDepth
    * @param {import('three').Scene} scene
    * @param {boolean} transmittance
+   * @param {(material: import('three').Material) => boolean} transmits the materials whose
+   *   thickness the map must hold (its near and far are fitted to them: LightDepthView.fit)
    * @returns {boolean} whether transmittance can be drawn from it this frame
    */
-  light(lightDepth, scene, transmittance) {
+  light(lightDepth, scene, transmittance, transmits) {
     const { light } = lightDepth;
     const { r, g, b } = light.color;
     if (!(Number.isFinite(r) && Number.isFinite(g) && Number.isFinite(b) && Number.isFinite(light.intensity))) {
@@ -160,6 +162,8 @@ export class FrameChecks {
         'or set transmittance to false');
       return false;
     }
+    const unfit = lightDepth.fit(scene, transmits);
+    if (unfit) this.problem('lightInside', unfit);
     const frustum = lightDepth.frustumProblem();
     if (frustum) {
       this.problem('lightFrustum', `the light's depth map has no valid frustum (${frustum}): there is no transmittance until it has one`);

@@ -93,8 +93,8 @@ export class SubsurfaceScatteringNode extends NodeWithSettings {
       resolution: uniform(new Vector2(1, 1)), depthFalloff: uniform(1), perspective: uniform(1), mmToWorld: uniform(1e-3),
       marginalRangeMm: uniform(1), debugView: debugViewUniform(), debugDepthRange: uniform(1), debugThicknessRangeMm: uniform(1),
     };
-    /** Stage 1 and the materials' transmittance uniforms, before the scene pass (null without a light). */
-    this._lightStage = o.light === null ? null : new LightStageNode(this, o.light, o.lightDepthSize);
+    /** Stage 1 and the materials' transmittance uniforms, before the scene pass (built with or without a light: `light` is assignable). */
+    this._lightStage = new LightStageNode(this, o.light, o.lightDepthSize);
     for (const name of ['worldUnitInMm', 'samples', 'strength', 'debugView', 'debugDepthRange', 'debugThicknessRangeMm']) this._applySetting(name, o[name]);
     /** What the last frame ran: { samples, kernelPixels, blur, passes, groups, groupings } (see src/3-blur/blurPlan.js). */
     this.plan = { samples: 0, kernelPixels: 0, blur: false, passes: 'separable', groups: 1, groupings: null };
@@ -126,9 +126,9 @@ export class SubsurfaceScatteringNode extends NodeWithSettings {
   /**
    * Acts on a setting just assigned (already checked and kept; a throw here puts the old value
    * back). The node reads the rest (kernelGroups, followSurface, foreshortening, scattering) each frame.
-   * @private @param {string} name @param {*} value
+   * @private @param {string} name @param {*} value @param {*} [previous]
    */
-  _applySetting(name, value) {
+  _applySetting(name, value, previous) {
     const u = this._uniforms;
     switch (name) {
       case 'worldUnitInMm': case 'depthThresholdMm':
@@ -150,6 +150,12 @@ export class SubsurfaceScatteringNode extends NodeWithSettings {
       case 'transmittance':
         checkNeedsLight(name, value, this.light);
         return;
+      case 'light': // as the WebGL pipeline: a light after none turns transmittance on, null off
+        if (value === previous) return;
+        if (value === null) checkNeedsLight('debugView', this.debugView, null);
+        this._lightStage.setLight(value);
+        if (value === null || previous === null) this._settings.transmittance = value !== null;
+        return;
       case 'debugView':
         checkNeedsLight(name, value, this.light);
         u.debugView.value = DEBUG_VIEWS.indexOf(value);
@@ -158,17 +164,17 @@ export class SubsurfaceScatteringNode extends NodeWithSettings {
         u[name].value = value;
         return;
       case 'lightDepthSize':
-        this.lightDepth?.setSize(value);
+        this._lightStage?.lightDepth?.setSize(value); // kept while the light is null, for the next one
         return;
       default:
     }
   }
 
   /** What the last frame found wrong with the light, one message each (empty when all is well). @type {readonly string[]} */
-  get problems() { return this._lightStage?.checks.current ?? []; }
+  get problems() { return this._lightStage.checks.current; }
 
   /** Stage 1: the light depth map for transmittance, or null without a light. @type {import('./1-light-depth/LightDepthNodeTarget.js').LightDepthNodeTarget|null} */
-  get lightDepth() { return this._lightStage?.lightDepth ?? null; }
+  get lightDepth() { return this.light === null ? null : this._lightStage.lightDepth; }
 
   /** @returns {import('three/webgpu').TextureNode} the scattered diffuse light, premultiplied by its coverage */
   getTextureNode() {
@@ -314,7 +320,7 @@ export class SubsurfaceScatteringNode extends NodeWithSettings {
   setup(builder) {
     // three runs a node's inputs' updateBefore first (in the order they were built), so the
     // scene pass would draw before this node's updateBefore: the light stage is built ahead of it.
-    this._lightStage?.build(builder);
+    this._lightStage.build(builder);
     // WebGPU multisamples no 32-bit float format (RGBA32Float): an MSAA scene pass keeps the
     // surface in half float there (depth steps of 1/2048 of the distance; WebGL 2 keeps 32 bits).
     if (builder.renderer.backend.isWebGPUBackend && this.scenePass.renderTarget.samples > 0) {
@@ -336,7 +342,7 @@ export class SubsurfaceScatteringNode extends NodeWithSettings {
    * subsurface materials it drew lose their transmittance (they are rebuilt without it).
    */
   dispose() {
-    this._lightStage?.dispose();
+    this._lightStage.dispose();
     this._horizontalTarget.dispose();
     this._scatteredTarget.dispose();
     this._freeGroupTarget();

@@ -369,5 +369,42 @@ async function labScenePlain({ backend = 'webgpu', width = 96, height = 54, scen
   return image;
 }
 
-window.wgpu = { THREE, NODE, pass, createRenderer, readFloats, subsurfacePipeline, flat, disposeFlatRig, head, disposal, plainDraw, debugViews, labScene, labScenePlain, lightDepthCards };
+/**
+ * The node's `light` assigned at any time (issue 36): the lab's back-lit slab with its directional
+ * light and a spot light beside it; the diffuse attachment of a node made with each light, then of
+ * one node made without a light after each assignment (none, the directional, the spot, none),
+ * with `light` and `transmittance` as they read.
+ */
+async function lightAssigned({ backend = 'webgpu', width = 96, height = 54 }) {
+  const renderer = await sharedRenderer(backend, width, height);
+  const built = window.lab.buildScene('backlit', { width, height, thicknessMm: 1 });
+  const spot = new THREE.SpotLight(0xffffff, Math.PI * 113, 0, Math.PI / 12, 0.5, 2);
+  spot.position.set(3, 2, -10);
+  built.scene.add(spot, spot.target);
+  const sun = built.light;
+  const skin = NODE.subsurfaceMaterial(built.subsurface[0], { widthMm: 1, shrinkMm: 0.6 });
+  built.scene.traverse((object) => { if (object.material === built.subsurface[0]) object.material = skin; });
+  const frames = async (light, steps) => {
+    const { scenePass, node, pipeline } = subsurfacePipeline(renderer, built.scene, built.camera, { type: THREE.FloatType, sss: { worldUnitInMm: 10, light } });
+    const out = {};
+    for (const [label, step] of steps(node)) {
+      step();
+      pipeline.render();
+      out[label] = { diffuse: await readFloats(renderer, scenePass.renderTarget, 'diffuse'), light: node.light === sun ? 'sun' : node.light === spot ? 'spot' : node.light, transmittance: node.transmittance };
+    }
+    node.dispose();
+    pipeline.dispose();
+    scenePass.dispose();
+    return out;
+  };
+  const made = { sun: (await frames(sun, () => [['made', () => {}]])).made, spot: (await frames(spot, () => [['made', () => {}]])).made };
+  const assigned = await frames(null, (node) => [
+    ['none', () => {}], ['sun', () => { node.light = sun; }], ['spot', () => { node.light = spot; }], ['null', () => { node.light = null; }], ['sun again', () => { node.light = sun; }],
+  ]);
+  skin.dispose();
+  built.subsurface[0].dispose();
+  return { made, assigned };
+}
+
+window.wgpu = { THREE, NODE, pass, createRenderer, readFloats, subsurfacePipeline, flat, disposeFlatRig, head, disposal, plainDraw, debugViews, labScene, labScenePlain, lightDepthCards, lightAssigned };
 window.testReady = true;

@@ -1,0 +1,186 @@
+// The lights a user has (issue 36), on the WebGL pipeline: `sss.light` assigned at any time (another
+// light, of either kind, or none) gives what a pipeline made with that light gives; a light nearer
+// than its shadow camera's near (0.5 by default) still shines through, its map fitted to the
+// meshes, against the float64 oracle; what cannot be fitted is said in `sss.problems`.
+import { describe, it, expect, beforeAll, afterAll } from 'vitest';
+import { evaluateFloats, openPage } from '../../harness/page.js';
+import { transmittedFractionOracle } from '../../oracle/transmittance.js';
+
+let page;
+beforeAll(async () => { page = await openPage('/test/pages/lab.html'); });
+afterAll(async () => {
+  expect(page.problems).toEqual([]);
+  await page.close();
+});
+
+/**
+ * In the page: a white slab `thicknessMm` thick (metres, 0.2 m wide) seen from the front, the
+ * lights given by `lights(THREE)` (name → light, added to the scene, none shining from the front),
+ * a pipeline made with the light named `made` (or none), and `steps(sss, lights)` (default: one
+ * frame, 'made'): an array of [label, action] run in turn, each followed by a frame whose
+ * diffuse attachment (float) is returned under its label, with `sss.light` and
+ * `sss.transmittance` as they read then and the frame's problems.
+ */
+function slabFrames(options) {
+  return evaluateFloats(page, async ({ thicknessMm, size, made, lightsSource, stepsSource }) => {
+    const { THREE, SSS, createRenderer, createComposer, read } = window.lab;
+    // eslint-disable-next-line no-new-func
+    const lights = new Function('THREE', `return (${lightsSource})(THREE)`)(THREE);
+    // eslint-disable-next-line no-new-func
+    const steps = new Function(`return (${stepsSource})`)();
+    const renderer = createRenderer(size, size);
+    const scene = new THREE.Scene();
+    const camera = new THREE.PerspectiveCamera(30, 1, 0.01, 10);
+    camera.position.set(0, 0, 0.3);
+    const skin = new THREE.MeshStandardMaterial({ color: 0xffffff, roughness: 1, metalness: 0 });
+    const slab = new THREE.Mesh(new THREE.BoxGeometry(0.2, 0.2, thicknessMm / 1000), skin);
+    slab.name = 'slab';
+    scene.add(slab);
+    for (const light of Object.values(lights)) scene.add(light, light.target);
+    const sss = new SSS.SubsurfaceScattering({ scene, camera, light: made ? lights[made] : null, worldUnitInMm: 1000, type: THREE.FloatType });
+    sss.makeSubsurface(skin);
+    const composer = createComposer(renderer, { type: THREE.FloatType });
+    composer.addPass(sss);
+    const out = {};
+    for (const [label, action] of steps(sss, lights, { THREE, SSS, scene, camera, skin, slab })) {
+      action();
+      composer.render();
+      const name = Object.entries(lights).find(([, l]) => l === sss.light)?.[0] ?? (sss.light === null ? null : 'another');
+      out[label] = { diffuse: await read(renderer, sss._scenePass.renderTarget, 1), light: name, transmittance: sss.transmittance, problems: [...sss.problems] };
+    }
+    sss.dispose();
+    composer.dispose();
+    renderer.dispose();
+    return out;
+  }, { ...options, lightsSource: options.lights.toString(), stepsSource: (options.steps ?? (() => [['made', () => {}]])).toString() });
+}
+
+/** Mean RGB over the middle `share` of a square image's width and height. */
+function middle(rgba, size, share = 0.3) {
+  const lo = Math.round(size * (0.5 - share / 2));
+  const hi = Math.round(size * (0.5 + share / 2));
+  const sum = [0, 0, 0];
+  for (let y = lo; y < hi; y++) for (let x = lo; x < hi; x++) for (let c = 0; c < 3; c++) sum[c] += rgba[(y * size + x) * 4 + c];
+  return sum.map((v) => v / (hi - lo) ** 2);
+}
+
+const worst = (a, b) => a.reduce((m, v, i) => (i % 4 === 3 ? m : Math.max(m, Math.abs(v - b[i]))), 0);
+
+describe('sss.light, assigned', () => {
+  it('a light after none, another of the other kind, then none: each frame is the frame of a pipeline made with that light', async () => {
+    const lights = (THREE) => {
+      const sun = new THREE.DirectionalLight(0xffffff, Math.PI);
+      sun.position.set(0, 0, -2); // straight behind
+      Object.assign(sun.shadow.camera, { left: -0.15, right: 0.15, bottom: -0.15, top: 0.15, near: 0.5, far: 5 });
+      const spot = new THREE.SpotLight(0xffffff, 4 * Math.PI, 0, Math.PI / 8, 0, 2);
+      spot.position.set(0.1, 0.05, -1.5);
+      Object.assign(spot.shadow.camera, { near: 0.5, far: 5 });
+      return { sun, spot };
+    };
+    const r = await slabFrames({
+      thicknessMm: 1, size: 64, lights,
+      steps: (sss, { sun, spot }, { SSS, scene, camera, skin }) => {
+        const made = (light) => () => { // a pipeline made with `light`, drawn once, for comparison
+          const own = new SSS.SubsurfaceScattering({ scene, camera, light, worldUnitInMm: 1000 });
+          own.makeSubsurface(skin);
+          own.dispose();
+        };
+        return [
+          ['none', () => {}],
+          ['sun', () => { sss.light = sun; }],
+          ['spot', () => { sss.light = spot; }],
+          ['spot again', made(spot)], // the binding of a pipeline made and disposed leaves ours as it was
+          ['null', () => { sss.light = null; }],
+          ['sun again', () => { sss.light = sun; }],
+        ];
+      },
+    });
+    expect(r.none.light).toBe(null);
+    expect(r.none.transmittance).toBe(false);
+    expect(Math.max(...r.none.diffuse.filter((_, i) => i % 4 !== 3))).toBe(0); // nothing lights the front
+    expect(r.sun).toMatchObject({ light: 'sun', transmittance: true, problems: [] });
+    expect(middle(r.sun.diffuse, 64)[0]).toBeGreaterThan(0.3); // 1 mm of skin: red through
+    expect(r.spot).toMatchObject({ light: 'spot', transmittance: true, problems: [] });
+    expect(worst(r.spot.diffuse, r.sun.diffuse)).toBeGreaterThan(0.05); // the spot's picture, not the sun's
+    expect(worst(r['spot again'].diffuse, r.spot.diffuse)).toBe(0);
+    expect(r.null).toMatchObject({ light: null, transmittance: false });
+    expect(worst(r.null.diffuse, r.none.diffuse)).toBe(0);
+    expect(worst(r['sun again'].diffuse, r.sun.diffuse)).toBe(0);
+  });
+
+  it('equals a pipeline made with the light, to the bit, after a swap from the other kind', async () => {
+    const lights = (THREE) => {
+      const sun = new THREE.DirectionalLight(0xffffff, Math.PI);
+      sun.position.set(0.05, 0, -2);
+      Object.assign(sun.shadow.camera, { left: -0.15, right: 0.15, bottom: -0.15, top: 0.15 });
+      const spot = new THREE.SpotLight(0xffffff, 4 * Math.PI, 0, Math.PI / 8, 0.2, 2);
+      spot.position.set(0.1, 0.05, -1.5);
+      return { sun, spot };
+    };
+    const swapped = await slabFrames({
+      thicknessMm: 1, size: 48, lights,
+      steps: (sss, { sun, spot }) => [['spot', () => { sss.light = spot; }], ['sun', () => { sss.light = sun; }]],
+    });
+    const made = await slabFrames({ thicknessMm: 1, size: 48, lights, steps: (sss, { sun }) => [['sun', () => { sss.light = sun; }]] });
+    expect(middle(made.sun.diffuse, 48)[0]).toBeGreaterThan(0.3);
+    expect(worst(swapped.sun.diffuse, made.sun.diffuse)).toBe(0);
+  });
+});
+
+describe('a light nearer than its shadow camera\'s near', () => {
+  const SHRINK_MM = 0.6;
+  // Straight behind, intensity π, wrap 1, entry cosine 1, white: the diffuse light is T(1 mm).
+  const oracle = transmittedFractionOracle({ thicknessMm: 1, profile: 'skin', shrinkMm: SHRINK_MM, towardLightViewZ: -1 });
+
+  it('a DirectionalLight 0.3 m behind a 1 mm slab (near 0.5 by default): the oracle\'s T(1 mm) within 2 % (before: 0)', async () => {
+    const r = await slabFrames({
+      thicknessMm: 1, size: 48,
+      lights: (THREE) => {
+        const sun = new THREE.DirectionalLight(0xffffff, Math.PI);
+        sun.position.set(0, 0, -0.3);
+        Object.assign(sun.shadow.camera, { left: -0.15, right: 0.15, bottom: -0.15, top: 0.15 }); // near 0.5, far 500: three's
+        return { sun };
+      },
+      made: 'sun',
+    });
+    const mean = middle(r.made.diffuse, 48);
+    expect(oracle[0]).toBeGreaterThan(0.3);
+    for (let c = 0; c < 3; c++) {
+      if (oracle[c] > 0.01) expect(Math.abs(mean[c] / oracle[c] - 1), `channel ${c}: GPU ${mean[c]}, oracle ${oracle[c]}`).toBeLessThan(0.02);
+      else expect(Math.abs(mean[c] - oracle[c])).toBeLessThan(2e-4);
+    }
+    expect(r.made.problems).toEqual([]);
+  });
+
+  it("the README's first page with its spot light 0.45 m from the disc lights as many pixels through as at 0.56 m (before: 227 of 3809)", async () => {
+    const lights = (THREE) => {
+      const near = new THREE.SpotLight(0xffffff, 20, 0, Math.PI / 6, 0.3);
+      near.position.set(0.2, 0.15, -0.5).setLength(0.45);
+      const far = new THREE.SpotLight(0xffffff, 20, 0, Math.PI / 6, 0.3);
+      far.position.set(0.2, 0.15, -0.5); // the README's, 0.56 m away
+      return { near, far };
+    };
+    const disc = (sss, lights, { slab }) => { slab.rotation.y = 0.4; return [['made', () => {}]]; }; // the first page's disc, a square here
+    const near = (await slabFrames({ thicknessMm: 4, size: 64, lights, made: 'near', steps: disc })).made;
+    const far = (await slabFrames({ thicknessMm: 4, size: 64, lights, made: 'far', steps: disc })).made;
+    const lit = (rgba) => rgba.filter((v, i) => i % 4 === 0 && v > 1e-3).length;
+    expect(lit(far.diffuse)).toBeGreaterThan(1000);
+    expect(lit(near.diffuse), `lit at 0.45 m: ${lit(near.diffuse)}, at 0.56 m: ${lit(far.diffuse)}`).toBeGreaterThan(0.9 * lit(far.diffuse));
+    expect(near.problems).toEqual([]);
+  });
+
+  it('a spot light inside a transmitting mesh\'s bounds is said once in sss.problems, naming the mesh', async () => {
+    const r = await slabFrames({
+      thicknessMm: 1, size: 32,
+      lights: (THREE) => {
+        const inside = new THREE.SpotLight(0xffffff, 10, 0, Math.PI / 4);
+        inside.position.set(0.05, 0, 0); // in the slab's box, pointing away from the camera
+        inside.target.position.set(0.05, 0, -1);
+        return { inside };
+      },
+      made: 'inside',
+      steps: (sss, lights, { camera }) => [['inside', () => { camera.position.set(0, 0, -0.3); camera.lookAt(0, 0, 0); }], ['again', () => {}]],
+    });
+    expect(r.again.problems).toEqual([expect.stringMatching(/^the spot light is inside the bounds of mesh "slab", so its parts nearer than .* world units to the light are not in the light's depth map/)]);
+  });
+});

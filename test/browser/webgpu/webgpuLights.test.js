@@ -1,0 +1,35 @@
+// The lights a user has (issue 36), on the WebGPU node, both backends: `node.light` assigned at
+// any time (a light after none, the other kind, none) gives the diffuse light of a node made with
+// that light, to the bit.
+import { describe, it, expect, beforeAll, afterAll } from 'vitest';
+import { evaluateFloats } from '../../harness/page.js';
+import { BACKENDS, openWebgpuPage } from '../../harness/webgpuBrowser.js';
+
+let page;
+beforeAll(async () => { page = await openWebgpuPage('/test/pages/webgpu.html'); });
+afterAll(async () => {
+  expect(page.problems).toEqual([]);
+  await page.close();
+});
+
+const worst = (a, b) => a.reduce((m, v, i) => (i % 4 === 3 ? m : Math.max(m, Math.abs(v - b[i]))), 0);
+const brightest = (a) => a.reduce((m, v, i) => (i % 4 === 3 ? m : Math.max(m, v)), 0);
+
+for (const backend of BACKENDS) {
+  describe(`the node's lights, ${backend}`, () => {
+    it('node.light assigned: a light after none, the other kind, none, the first again: each frame the frame of a node made with that light', async () => {
+      const { made, assigned: a } = await evaluateFloats(page, (b) => window.wgpu.lightAssigned({ backend: b }), backend);
+      expect(brightest(made.sun.diffuse)).toBeGreaterThan(0.3); // 1 mm of skin, back-lit: red through
+      expect(worst(made.spot.diffuse, made.sun.diffuse)).toBeGreaterThan(0.05); // two different pictures
+      expect(a.none).toMatchObject({ light: null, transmittance: false });
+      expect(brightest(a.none.diffuse)).toBe(0);
+      expect(a.sun).toMatchObject({ light: 'sun', transmittance: true });
+      expect(worst(a.sun.diffuse, made.sun.diffuse)).toBe(0);
+      expect(a.spot).toMatchObject({ light: 'spot', transmittance: true });
+      expect(worst(a.spot.diffuse, made.spot.diffuse)).toBe(0);
+      expect(a.null).toMatchObject({ light: null, transmittance: false });
+      expect(brightest(a.null.diffuse)).toBe(0);
+      expect(worst(a['sun again'].diffuse, made.sun.diffuse)).toBe(0);
+    });
+  });
+}
