@@ -119,7 +119,9 @@ export class SubsurfaceScatteringNode extends NodeWithSettings {
     this._groupEnergies = Array.from({ length: MAX_KERNEL_GROUPS }, () => uniform(new Vector3()));
     this._profileNode = texture(this.profileLookup.texture);
     this._footprintNode = texture(this.footprintTable.update(this.samples === 'auto' ? 'auto' : this.samples));
-    this.updateBeforeType = NodeUpdateType.FRAME;
+    // Planned per render, not per frame: a setting changed between two renders of one animation
+    // frame (scattering, samples) is this render's (the scene pass still draws once a frame).
+    this.updateBeforeType = NodeUpdateType.RENDER;
     this.isSubsurfaceScatteringNode = true;
   }
 
@@ -262,7 +264,7 @@ export class SubsurfaceScatteringNode extends NodeWithSettings {
   }
 
   /**
-   * Stage 3 before the frame (three calls it once a frame: updateBeforeType FRAME).
+   * Stage 3 before the frame (three calls it once a render: updateBeforeType RENDER).
    * @param {import('three/webgpu').NodeFrame} frame
    * @returns {undefined}
    */

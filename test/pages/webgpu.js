@@ -406,5 +406,44 @@ async function lightAssigned({ backend = 'webgpu', width = 96, height = 54 }) {
   return { made, assigned };
 }
 
-window.wgpu = { THREE, NODE, pass, createRenderer, readFloats, subsurfacePipeline, flat, disposeFlatRig, head, disposal, plainDraw, debugViews, labScene, labScenePlain, lightDepthCards, lightAssigned };
+/**
+ * A setting changed between two renders of one animation frame (issue 36): the lab's noisy slab
+ * through the node, its output (linear float) blurred; then, in one task, scattering off, a render,
+ * scattering on, a render; then, a frame later, scattering off.
+ */
+async function sameFrame({ backend = 'webgpu', width = 96, height = 54 }) {
+  const renderer = await sharedRenderer(backend, width, height);
+  const built = window.lab.buildScene('slab', { width, height, pattern: 'noise' });
+  const skin = NODE.subsurfaceMaterial(built.subsurface[0], { widthMm: 1 });
+  built.scene.traverse((object) => { if (object.material === built.subsurface[0]) object.material = skin; });
+  const { scenePass, node, pipeline } = subsurfacePipeline(renderer, built.scene, built.camera, { type: THREE.FloatType, sss: { worldUnitInMm: 10 } });
+  const target = new THREE.RenderTarget(width, height, { type: THREE.FloatType });
+  const render = () => {
+    renderer.setRenderTarget(target);
+    pipeline.render();
+    renderer.setRenderTarget(null);
+  };
+  const nextFrame = () => new Promise((resolve) => { requestAnimationFrame(() => resolve()); });
+  render();
+  const blurred = await readFloats(renderer, target);
+  await nextFrame();
+  node.scattering = false;
+  render();
+  node.scattering = true;
+  render(); // the same animation frame
+  const onAgain = await readFloats(renderer, target);
+  await nextFrame();
+  node.scattering = false;
+  render();
+  const unblurred = await readFloats(renderer, target);
+  node.dispose();
+  pipeline.dispose();
+  scenePass.dispose();
+  target.dispose();
+  skin.dispose();
+  built.subsurface[0].dispose();
+  return { blurred, onAgain, unblurred };
+}
+
+window.wgpu = { THREE, NODE, pass, createRenderer, readFloats, subsurfacePipeline, flat, disposeFlatRig, head, disposal, plainDraw, debugViews, labScene, labScenePlain, lightDepthCards, lightAssigned, sameFrame };
 window.testReady = true;

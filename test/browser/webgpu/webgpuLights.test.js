@@ -1,6 +1,7 @@
 // The lights a user has (issue 36), on the WebGPU node, both backends: `node.light` assigned at
 // any time (a light after none, the other kind, none) gives the diffuse light of a node made with
-// that light, to the bit.
+// that light, to the bit; and a setting changed between two renders of one animation frame is that
+// render's (the node plans per render, not per frame).
 import { describe, it, expect, beforeAll, afterAll } from 'vitest';
 import { evaluateFloats } from '../../harness/page.js';
 import { BACKENDS, openWebgpuPage } from '../../harness/webgpuBrowser.js';
@@ -30,6 +31,12 @@ for (const backend of BACKENDS) {
       expect(a.null).toMatchObject({ light: null, transmittance: false });
       expect(brightest(a.null.diffuse)).toBe(0);
       expect(worst(a['sun again'].diffuse, made.sun.diffuse)).toBe(0);
+    });
+
+    it('scattering turned on between two renders of one animation frame: the second render is blurred (before: the unblurred image again)', async () => {
+      const r = await evaluateFloats(page, (b) => window.wgpu.sameFrame({ backend: b }), backend);
+      expect(worst(r.blurred, r.unblurred), 'the blur shows').toBeGreaterThan(0.01);
+      expect(worst(r.onAgain, r.blurred), `from the unblurred: ${worst(r.onAgain, r.unblurred)}`).toBeLessThan(1e-6);
     });
   });
 }
