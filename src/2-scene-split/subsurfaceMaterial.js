@@ -28,7 +28,7 @@ import finiteGlsl from '../../shaders/common/finite.glsl?raw';
 import carriedDepthGlsl from '../../shaders/common/carriedDepth.glsl?raw';
 import { assembleGlsl, enumDefines } from '../support/glsl.js';
 import { checkOneOf, checkOptions } from '../support/parameterChecks.js';
-import { describe } from '../support/rendererSupport.js';
+import { describe, refuseTransmission } from '../support/rendererSupport.js';
 import { checkThreeRevision, supportedThreeNote, threeRelease } from '../support/threeVersion.js';
 import { MATERIAL_DEFAULTS, MATERIAL_SCHEMA, PIPELINE_SCHEMA, checkOption } from '../options.js';
 import { ATTACHMENT_DEFINES, DRAW_PHASES, currentDraw, diffuseCarriesDepth } from './subsurfaceTarget.js';
@@ -206,6 +206,7 @@ export function makeSubsurface(material, options = {}, owner = STANDALONE) {
   if (!material || material.isMeshStandardMaterial !== true) {
     throw new TypeError(`makeSubsurface: material must be a THREE.MeshStandardMaterial or MeshPhysicalMaterial, got ${describe(material)}`);
   }
+  refuseTransmission(material, 'makeSubsurface');
   // With its depth prepass (scenePass.depthPrepass) the scene pass draws subsurface materials
   // twice (depth, then everything) and relies on the second draw passing the depth test at equal depth.
   if (material.depthFunc !== LessEqualDepth) {

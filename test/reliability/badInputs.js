@@ -118,6 +118,8 @@ export const CALL_CASES = [
 
   // Materials
   ['makeSubsurface(null)', (t) => t.sss.makeSubsurface(null), 'TypeError', /makeSubsurface: material must be a THREE\.MeshStandardMaterial or MeshPhysicalMaterial, got null/],
+  ['makeSubsurface(a material with transmission)', (t) => t.sss.makeSubsurface(new t.THREE.MeshPhysicalMaterial({ name: 'glTF skin', transmission: 0.6 })), 'TypeError', /^(makeSubsurface|subsurfaceMaterial): MeshPhysicalMaterial 'glTF skin' has transmission 0\.6, which subsurface scattering cannot draw/],
+  ['makeSubsurface(an unnamed material with transmission)', (t) => t.sss.makeSubsurface(new t.THREE.MeshPhysicalMaterial({ transmission: 1 })), 'TypeError', /: a MeshPhysicalMaterial has transmission 1, /],
   ['makeSubsurface(a MeshBasicMaterial)', (t) => t.sss.makeSubsurface(new t.THREE.MeshBasicMaterial()), 'TypeError', /material must be a THREE\.MeshStandardMaterial or MeshPhysicalMaterial, got a MeshBasicMaterial/],
   ['makeSubsurface(material, null)', (t) => t.sss.makeSubsurface(t.material, null), 'TypeError', /makeSubsurface options must be an object, got null/],
   ["makeSubsurface(material, 'skin')", (t) => t.sss.makeSubsurface(t.material, 'skin'), 'TypeError', /makeSubsurface options must be an object, got "skin"/],

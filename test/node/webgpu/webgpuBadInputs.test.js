@@ -18,7 +18,7 @@ const NODE_LINES = [
   /^foreshortening: /, /^sss\.worldUnitInMm = /, /^samples = /, /^method = /, /^profile = /, /^strength = /, /^followSurface = /,
   /^depthThresholdMm = /, /^foreshortening = /, /^debugView = /, /^debugDepthRange = /, /^widthMm: /,
   /^light: /, /^lightDepthSize: /, /^transmittance = /, /^transmittance: /, /^translucency: /, /^shrinkMm: /, /^debugThicknessRangeMm = /,
-  /^debugView: /, /^sss\.scattering = /, /^sss\.transmittance = /, /^sss\.light = /, /^kernelGroups: (\d+|'\w+')$/,
+  /^debugView: /, /^sss\.scattering = /, /^sss\.transmittance = /, /^sss\.light = /, /^kernelGroups: (\d+|'\w+')$/, /with transmission\)$/,
 ];
 const NODE_OPTIONS = Object.keys(NODE.NODE_DEFAULTS);
 
