@@ -100,6 +100,20 @@ export const SAMPLE_RANGE = Object.freeze({ min: 3, max: 63 });
 /** The light depth map's resolution, pixels. */
 export const LIGHT_DEPTH_SIZES = Object.freeze({ min: 16, max: 8192 });
 
+/** The most lights transmittance is drawn from at once (`light` as a list), each with its own map. */
+export const MAX_LIGHTS = 4;
+
+/** A SpotLight or DirectionalLight (or null where `orNull`), else a TypeError naming `name`. */
+function checkOneLight(light, name, orNull = true) {
+  if ((light !== null || !orNull) && !(light?.isSpotLight || light?.isDirectionalLight)) {
+    throw new TypeError(`${name} must be a THREE.SpotLight${orNull ? ', THREE.DirectionalLight, a list of them or null' : ' or THREE.DirectionalLight'}, got ${describe(light)}`);
+  }
+  return light;
+}
+
+/** The lights of a `light` setting, as a list (null: none). @param {*} light */
+export const lightsOf = (light) => (light === null ? [] : Array.isArray(light) ? light : [light]);
+
 /** The widest material accepted, mm of material per profile mm (a metre of skin is a mistake). */
 export const MAX_WIDTH_MM = 1000;
 
@@ -152,13 +166,14 @@ export const PIPELINE_SCHEMA = Object.freeze({
     },
   },
   light: {
-    default: null, type: "import('three').SpotLight|import('three').DirectionalLight|null",
-    doc: 'the light shining through thin parts (transmittance); null: no transmittance (assigned: a light after none turns `transmittance` on, null off)',
+    default: null, type: "import('three').SpotLight|import('three').DirectionalLight|Array<import('three').SpotLight|import('three').DirectionalLight>|null",
+    doc: `the light shining through thin parts (transmittance), or a list of up to ${MAX_LIGHTS}, each with its own depth map (the pipeline only); null: no transmittance (assigned: a light after none turns \`transmittance\` on, null off)`,
     check(light, name) {
-      if (light !== null && !(light?.isSpotLight || light?.isDirectionalLight)) {
-        throw new TypeError(`${name} must be a THREE.SpotLight, THREE.DirectionalLight or null, got ${describe(light)}`);
-      }
-      return light;
+      if (!Array.isArray(light)) return checkOneLight(light, name);
+      if (light.length < 1 || light.length > MAX_LIGHTS) throw new RangeError(`${name} must list 1 to ${MAX_LIGHTS} lights, got ${light.length}`);
+      light.forEach((each, i) => checkOneLight(each, `${name}[${i}]`, false));
+      if (new Set(light).size < light.length) throw new RangeError(`${name} lists a light twice`);
+      return Object.freeze([...light]); // read back as given, not changed behind the pipeline's back
     },
   },
   worldUnitInMm: {
@@ -416,7 +431,7 @@ export function checkMaterialOptions(options = {}, previous = MATERIAL_DEFAULTS)
  * @typedef {object} SubsurfaceScatteringOptions
  * @property {import('three').Scene} scene the scene drawn, read every frame
  * @property {import('three').Camera} camera the camera drawn with, read every frame
- * @property {import('three').SpotLight|import('three').DirectionalLight|null} [light=null] the light shining through thin parts (transmittance); null: no transmittance (assigned: a light after none turns `transmittance` on, null off)
+ * @property {import('three').SpotLight|import('three').DirectionalLight|Array<import('three').SpotLight|import('three').DirectionalLight>|null} [light=null] the light shining through thin parts (transmittance), or a list of up to 4, each with its own depth map (the pipeline only); null: no transmittance (assigned: a light after none turns `transmittance` on, null off)
  * @property {number} [worldUnitInMm=1000] millimetres per world unit (three.js: metres, 1000)
  * @property {ProfileName|object} [profile='skin'] a preset's name ('skin', 'skinBurley', 'marble', 'milk') or a profile object (burleyProfile, dipoleProfile, gaussianSumProfile)
  * @property {Method} [method='footprint'] how the blur weighs its taps: 'footprint' (each pixel's footprint weighed exactly), 'marginal' or 'reference' (fixed taps; 'reference': Jimenez 2012's kernel); a switch between 'footprint' and the others recompiles the blur
@@ -441,7 +456,7 @@ export function checkMaterialOptions(options = {}, previous = MATERIAL_DEFAULTS)
 /**
  * subsurfaceScattering(scenePass, { ... }) (the WebGPU node): the defaults are NODE_DEFAULTS.
  * @typedef {object} SubsurfaceScatteringNodeOptions
- * @property {import('three').SpotLight|import('three').DirectionalLight|null} [light=null] the light shining through thin parts (transmittance); null: no transmittance (assigned: a light after none turns `transmittance` on, null off)
+ * @property {import('three').SpotLight|import('three').DirectionalLight|Array<import('three').SpotLight|import('three').DirectionalLight>|null} [light=null] the light shining through thin parts (transmittance), or a list of up to 4, each with its own depth map (the pipeline only); null: no transmittance (assigned: a light after none turns `transmittance` on, null off)
  * @property {number} [worldUnitInMm=1000] millimetres per world unit (three.js: metres, 1000)
  * @property {ProfileName|object} [profile='skin'] a preset's name ('skin', 'skinBurley', 'marble', 'milk') or a profile object (burleyProfile, dipoleProfile, gaussianSumProfile)
  * @property {Method} [method='footprint'] how the blur weighs its taps: 'footprint' (each pixel's footprint weighed exactly), 'marginal' or 'reference' (fixed taps; 'reference': Jimenez 2012's kernel); a switch between 'footprint' and the others recompiles the blur
@@ -464,7 +479,7 @@ export function checkMaterialOptions(options = {}, previous = MATERIAL_DEFAULTS)
  * @typedef {object} PipelineSettings
  * @property {import('three').Scene} scene the scene drawn, read every frame
  * @property {import('three').Camera} camera the camera drawn with, read every frame
- * @property {import('three').SpotLight|import('three').DirectionalLight|null} light the light shining through thin parts (transmittance); null: no transmittance (assigned: a light after none turns `transmittance` on, null off)
+ * @property {import('three').SpotLight|import('three').DirectionalLight|Array<import('three').SpotLight|import('three').DirectionalLight>|null} light the light shining through thin parts (transmittance), or a list of up to 4, each with its own depth map (the pipeline only); null: no transmittance (assigned: a light after none turns `transmittance` on, null off)
  * @property {number} worldUnitInMm millimetres per world unit (three.js: metres, 1000)
  * @property {ProfileName|object} profile a preset's name ('skin', 'skinBurley', 'marble', 'milk') or a profile object (burleyProfile, dipoleProfile, gaussianSumProfile)
  * @property {Method} method how the blur weighs its taps: 'footprint' (each pixel's footprint weighed exactly), 'marginal' or 'reference' (fixed taps; 'reference': Jimenez 2012's kernel); a switch between 'footprint' and the others recompiles the blur
@@ -488,7 +503,7 @@ export function checkMaterialOptions(options = {}, previous = MATERIAL_DEFAULTS)
 /**
  * SubsurfaceScatteringNode's settings, as properties (assigning one checks it as the constructor does).
  * @typedef {object} NodeSettings
- * @property {import('three').SpotLight|import('three').DirectionalLight|null} light the light shining through thin parts (transmittance); null: no transmittance (assigned: a light after none turns `transmittance` on, null off)
+ * @property {import('three').SpotLight|import('three').DirectionalLight|Array<import('three').SpotLight|import('three').DirectionalLight>|null} light the light shining through thin parts (transmittance), or a list of up to 4, each with its own depth map (the pipeline only); null: no transmittance (assigned: a light after none turns `transmittance` on, null off)
  * @property {number} worldUnitInMm millimetres per world unit (three.js: metres, 1000)
  * @property {ProfileName|object} profile a preset's name ('skin', 'skinBurley', 'marble', 'milk') or a profile object (burleyProfile, dipoleProfile, gaussianSumProfile)
  * @property {Method} method how the blur weighs its taps: 'footprint' (each pixel's footprint weighed exactly), 'marginal' or 'reference' (fixed taps; 'reference': Jimenez 2012's kernel); a switch between 'footprint' and the others recompiles the blur

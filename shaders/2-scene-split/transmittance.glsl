@@ -36,14 +36,15 @@ vec3 sssTransmittanceProfile( const in float thicknessWorld ) {
 // The map is read a little inward along the (vertex, not bump-mapped) normal, so that a lit surface
 // finds itself and not a texel of whatever lies beside it (REFERENCE §5's shrink, about 0.6 mm);
 // the thickness is measured from the point itself, so the shrink does not shorten it.
-vec3 sssTransmittance( const in vec3 viewPosition, const in vec3 viewVertexNormal ) {
+// The map and the light's matrices are arguments: the material reads one map per light.
+vec3 sssTransmittanceFrom( sampler2D lightDepthMap, const in mat4 viewToLightView, const in mat4 lightProjection, const in vec3 viewPosition, const in vec3 viewVertexNormal ) {
 	vec3 shrunk = viewPosition - sssShrinkWorld * viewVertexNormal;
-	vec4 lightView = sssViewToLightView * vec4( shrunk, 1.0 );
-	vec4 clip = sssLightProjection * lightView;
+	vec4 lightView = viewToLightView * vec4( shrunk, 1.0 );
+	vec4 clip = lightProjection * lightView;
 	vec3 ndc = clip.xyz / clip.w;
 	if ( clip.w <= 0.0 || any( greaterThan( abs( ndc.xy ), vec2( 1.0 ) ) ) ) return vec3( 0.0 );
-	float depth = - ( sssViewToLightView * vec4( viewPosition, 1.0 ) ).z; // the point's own light depth
-	ivec2 size = textureSize( sssLightDepthMap, 0 );
+	float depth = - ( viewToLightView * vec4( viewPosition, 1.0 ) ).z; // the point's own light depth
+	ivec2 size = textureSize( lightDepthMap, 0 );
 	vec2 texel = ( ndc.xy * 0.5 + 0.5 ) * vec2( size ) - 0.5;
 	ivec2 base = ivec2( floor( texel ) );
 	vec2 f = texel - vec2( base );
@@ -51,7 +52,7 @@ vec3 sssTransmittance( const in vec3 viewPosition, const in vec3 viewVertexNorma
 	for ( int k = 0; k < 4; k ++ ) {
 		ivec2 offset = ivec2( k & 1, k >> 1 );
 		float weight = ( offset.x == 1 ? f.x : 1.0 - f.x ) * ( offset.y == 1 ? f.y : 1.0 - f.y );
-		vec2 recorded = texelFetch( sssLightDepthMap, clamp( base + offset, ivec2( 0 ), size - 1 ), 0 ).rg; // depth, entry cosine
+		vec2 recorded = texelFetch( lightDepthMap, clamp( base + offset, ivec2( 0 ), size - 1 ), 0 ).rg; // depth, entry cosine
 		float thickness = depth - recorded.r;
 		if ( recorded.r > 0.0 && thickness > 0.0 ) light += weight * recorded.g * sssTransmittanceProfile( thickness );
 	}
@@ -60,11 +61,20 @@ vec3 sssTransmittance( const in vec3 viewPosition, const in vec3 viewVertexNorma
 
 // The thickness the light crosses to this point (world units, the map's nearest texel), for the
 // debug view; negative where nothing was recorded or the point is not behind the recorded surface.
-float sssThicknessWorld( const in vec3 viewPosition, const in vec3 viewVertexNormal ) {
-	vec4 clip = sssLightProjection * sssViewToLightView * vec4( viewPosition - sssShrinkWorld * viewVertexNormal, 1.0 );
+float sssThicknessWorldFrom( sampler2D lightDepthMap, const in mat4 viewToLightView, const in mat4 lightProjection, const in vec3 viewPosition, const in vec3 viewVertexNormal ) {
+	vec4 clip = lightProjection * viewToLightView * vec4( viewPosition - sssShrinkWorld * viewVertexNormal, 1.0 );
 	vec3 ndc = clip.xyz / clip.w;
 	if ( clip.w <= 0.0 || any( greaterThan( abs( ndc.xy ), vec2( 1.0 ) ) ) ) return - 1.0;
-	float nearest = texture( sssLightDepthMap, ndc.xy * 0.5 + 0.5 ).r;
-	float thickness = - ( sssViewToLightView * vec4( viewPosition, 1.0 ) ).z - nearest;
+	float nearest = texture( lightDepthMap, ndc.xy * 0.5 + 0.5 ).r;
+	float thickness = - ( viewToLightView * vec4( viewPosition, 1.0 ) ).z - nearest;
 	return nearest > 0.0 && thickness > 0.0 ? thickness : - 1.0;
+}
+
+// The same for the one light of the uniforms above (a custom ShaderMaterial's).
+vec3 sssTransmittance( const in vec3 viewPosition, const in vec3 viewVertexNormal ) {
+	return sssTransmittanceFrom( sssLightDepthMap, sssViewToLightView, sssLightProjection, viewPosition, viewVertexNormal );
+}
+
+float sssThicknessWorld( const in vec3 viewPosition, const in vec3 viewVertexNormal ) {
+	return sssThicknessWorldFrom( sssLightDepthMap, sssViewToLightView, sssLightProjection, viewPosition, viewVertexNormal );
 }

@@ -27,7 +27,7 @@ import { isPerspective } from '../support/screenScale.js';
 import { describe } from '../support/rendererSupport.js';
 import { LightStageNode } from './1-light-depth/LightStageNode.js';
 import { subsurfaceMeshesOf } from './2-scene-split/subsurfaceNodeMaterial.js';
-import { NODE_SCHEMA, checkNeedsLight, checkNodeOptions, propertiesOf } from '../options.js';
+import { NODE_SCHEMA, checkNeedsLight, checkNodeOptions, lightsOf, propertiesOf } from '../options.js';
 import { withSettings } from '../support/settings.js';
 import { WEBGPU_THREE, checkThreeRevision } from '../support/threeVersion.js';
 import { ATTACHMENT_NAMES } from './2-scene-split/attachments.js';
@@ -39,6 +39,13 @@ import { DEBUG_VIEWS } from '../4-compose/debugViews.js';
 
 /** The methods the node has: the WebGL pipeline's default (the fixed-tap ones are the WebGL pipeline's only). */
 export const NODE_METHODS = Object.freeze(['footprint']);
+
+/** The node's one light (or none): a list of more is the WebGL pipeline's, refused naming it. */
+function nodeLight(light) {
+  const lights = lightsOf(light);
+  if (lights.length > 1) throw new RangeError(`light: the WebGPU node takes one light, got a list of ${lights.length} (several lights are the WebGL pipeline's)`);
+  return lights[0] ?? null;
+}
 
 /** A method of the schema the node lacks is refused, naming the pipeline that has it. */
 function checkNodeMethod(method) {
@@ -80,6 +87,7 @@ export class SubsurfaceScatteringNode extends NodeWithSettings {
     if (!scenePass || scenePass.isPassNode !== true) throw new TypeError(`subsurfaceScattering: scenePass must be a PassNode (pass(scene, camera)), got ${describe(scenePass)}`);
     const o = checkNodeOptions(options); // every option checked here, once, against the schema
     checkNodeMethod(o.method);
+    nodeLight(o.light);
     /** @internal The settings' values (read and assigned through their properties). */
     this._settings = Object.fromEntries(propertiesOf(NODE_SCHEMA).map(({ name }) => [name, o[name]]));
     if (Object.hasOwn(options ?? {}, 'transmittance')) checkNeedsLight('transmittance', o.transmittance, o.light);
@@ -94,7 +102,7 @@ export class SubsurfaceScatteringNode extends NodeWithSettings {
       marginalRangeMm: uniform(1), debugView: debugViewUniform(), debugDepthRange: uniform(1), debugThicknessRangeMm: uniform(1),
     };
     /** Stage 1 and the materials' transmittance uniforms, before the scene pass (built with or without a light: `light` is assignable). */
-    this._lightStage = new LightStageNode(this, o.light, o.lightDepthSize);
+    this._lightStage = new LightStageNode(this, nodeLight(o.light), o.lightDepthSize);
     for (const name of ['worldUnitInMm', 'samples', 'strength', 'debugView', 'debugDepthRange', 'debugThicknessRangeMm']) this._applySetting(name, o[name]);
     /** What the last frame ran: { samples, kernelPixels, blur, passes, groups, groupings } (see src/3-blur/blurPlan.js). */
     this.plan = { samples: 0, kernelPixels: 0, blur: false, passes: 'separable', groups: 1, groupings: null };
@@ -155,7 +163,7 @@ export class SubsurfaceScatteringNode extends NodeWithSettings {
       case 'light': // as the WebGL pipeline: a light after none turns transmittance on, null off
         if (value === previous) return;
         if (value === null) checkNeedsLight('debugView', this.debugView, null);
-        this._lightStage.setLight(value);
+        this._lightStage.setLight(nodeLight(value));
         if (value === null || previous === null) this._settings.transmittance = value !== null;
         return;
       case 'debugView':

@@ -184,3 +184,62 @@ describe('a light nearer than its shadow camera\'s near', () => {
     expect(r.again.problems).toEqual([expect.stringMatching(/^the spot light is inside the bounds of mesh "slab", so its parts nearer than .* world units to the light are not in the light's depth map/)]);
   });
 });
+
+describe('several lights', () => {
+  it('up to four, each with its own map: each alone, summed, equals all together (float read-backs), and the list reads back', async () => {
+    const lights = (THREE) => {
+      const behind = new THREE.DirectionalLight(0xffffff, Math.PI);
+      behind.position.set(0, 0, -2);
+      const oblique = new THREE.DirectionalLight(0xffccaa, 2);
+      oblique.position.set(1.2, 0.3, -1.5);
+      const spot = new THREE.SpotLight(0xaaccff, 6 * Math.PI, 0, Math.PI / 10, 0.3, 2);
+      spot.position.set(-0.1, 0.05, -1.2);
+      const low = new THREE.SpotLight(0xffffff, 3 * Math.PI, 0, Math.PI / 6, 0.5, 2);
+      low.position.set(0.05, -0.4, -0.8);
+      for (const sun of [behind, oblique]) Object.assign(sun.shadow.camera, { left: -0.15, right: 0.15, bottom: -0.15, top: 0.15 });
+      return { behind, oblique, spot, low };
+    };
+    const r = await slabFrames({
+      thicknessMm: 1.5, size: 48, lights,
+      steps: (sss, l) => [
+        ['behind', () => { sss.light = l.behind; }], ['oblique', () => { sss.light = [l.oblique]; }],
+        ['spot', () => { sss.light = l.spot; }], ['low', () => { sss.light = l.low; }],
+        ['all', () => { sss.light = [l.behind, l.oblique, l.spot, l.low]; }],
+        ['two', () => { sss.light = [l.spot, l.behind]; }],
+      ],
+    });
+    const names = ['behind', 'oblique', 'spot', 'low'];
+    for (const name of names) expect(Math.max(...r[name].diffuse.filter((_, i) => i % 4 === 0)), name).toBeGreaterThan(0.01); // each sends light
+    const sum = (labels) => r.all.diffuse.map((_, i) => labels.reduce((s, label) => s + r[label].diffuse[i], 0));
+    const relative = (a, b) => a.reduce((m, v, i) => (i % 4 === 3 ? m : Math.max(m, Math.abs(v - b[i]) / Math.max(1e-3, Math.abs(b[i])))), 0);
+    expect(relative(r.all.diffuse, sum(names)), 'four together against the four alone, summed').toBeLessThan(1e-5);
+    expect(relative(r.two.diffuse, sum(['spot', 'behind'])), 'two').toBeLessThan(1e-5);
+    expect(r.all.light).toBe('another'); // a list (not one of the lights)
+    expect(r.all.problems).toEqual([]);
+  });
+
+  it('a list is read back as given, frozen; more than four or a light twice are refused', async () => {
+    const r = await page.evaluate(() => {
+      const { THREE, SSS } = window.lab;
+      const scene = new THREE.Scene();
+      const camera = new THREE.PerspectiveCamera();
+      const a = new THREE.SpotLight();
+      const b = new THREE.DirectionalLight();
+      const sss = new SSS.SubsurfaceScattering({ scene, camera, light: [a, b] });
+      const errors = [];
+      for (const bad of [[a, b, a], [a, b, new THREE.SpotLight(), new THREE.SpotLight(), new THREE.SpotLight()], [], [a, new THREE.PointLight()]]) {
+        try { sss.light = bad; } catch (error) { errors.push(`${error.name}: ${error.message}`); }
+      }
+      const out = { same: sss.light[0] === a && sss.light[1] === b && sss.light.length === 2, frozen: Object.isFrozen(sss.light), transmittance: sss.transmittance, errors };
+      sss.dispose();
+      return out;
+    });
+    expect(r).toMatchObject({ same: true, frozen: true, transmittance: true });
+    expect(r.errors).toEqual([
+      'RangeError: light lists a light twice',
+      'RangeError: light must list 1 to 4 lights, got 5',
+      'RangeError: light must list 1 to 4 lights, got 0',
+      'TypeError: light[1] must be a THREE.SpotLight or THREE.DirectionalLight, got a PointLight',
+    ]);
+  });
+});
