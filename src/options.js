@@ -48,6 +48,10 @@ export const METHOD_TABLE = Object.freeze({
  * The preset diffusion profiles by name (src/profiles/presets.js's `profiles`).
  * @typedef {'skin'|'skinBurley'|'marble'|'milk'} ProfileName
  */
+/**
+ * A light transmittance is drawn from.
+ * @typedef {import('three').SpotLight|import('three').DirectionalLight|import('three').PointLight} TransmittingLight
+ */
 
 export { DEBUG_VIEWS };
 
@@ -103,10 +107,10 @@ export const LIGHT_DEPTH_SIZES = Object.freeze({ min: 16, max: 8192 });
 /** The most lights transmittance is drawn from at once (`light` as a list), each with its own map. */
 export const MAX_LIGHTS = 4;
 
-/** A SpotLight or DirectionalLight (or null where `orNull`), else a TypeError naming `name`. */
+/** A SpotLight, DirectionalLight or PointLight (or null where `orNull`), else a TypeError naming `name`. */
 function checkOneLight(light, name, orNull = true) {
-  if ((light !== null || !orNull) && !(light?.isSpotLight || light?.isDirectionalLight)) {
-    throw new TypeError(`${name} must be a THREE.SpotLight${orNull ? ', THREE.DirectionalLight, a list of them or null' : ' or THREE.DirectionalLight'}, got ${describe(light)}`);
+  if ((light !== null || !orNull) && !(light?.isSpotLight || light?.isDirectionalLight || light?.isPointLight)) {
+    throw new TypeError(`${name} must be a THREE.SpotLight, THREE.DirectionalLight${orNull ? ', THREE.PointLight, a list of them or null' : ' or THREE.PointLight'}, got ${describe(light)}`);
   }
   return light;
 }
@@ -166,7 +170,7 @@ export const PIPELINE_SCHEMA = Object.freeze({
     },
   },
   light: {
-    default: null, type: "import('three').SpotLight|import('three').DirectionalLight|Array<import('three').SpotLight|import('three').DirectionalLight>|null",
+    default: null, type: "import('./options.js').TransmittingLight|import('./options.js').TransmittingLight[]|null",
     doc: `the light shining through thin parts (transmittance), or a list of up to ${MAX_LIGHTS}, each with its own depth map (the pipeline only); null: no transmittance (assigned: a light after none turns \`transmittance\` on, null off)`,
     check(light, name) {
       if (!Array.isArray(light)) return checkOneLight(light, name);
@@ -431,7 +435,7 @@ export function checkMaterialOptions(options = {}, previous = MATERIAL_DEFAULTS)
  * @typedef {object} SubsurfaceScatteringOptions
  * @property {import('three').Scene} scene the scene drawn, read every frame
  * @property {import('three').Camera} camera the camera drawn with, read every frame
- * @property {import('three').SpotLight|import('three').DirectionalLight|Array<import('three').SpotLight|import('three').DirectionalLight>|null} [light=null] the light shining through thin parts (transmittance), or a list of up to 4, each with its own depth map (the pipeline only); null: no transmittance (assigned: a light after none turns `transmittance` on, null off)
+ * @property {TransmittingLight|TransmittingLight[]|null} [light=null] the light shining through thin parts (transmittance), or a list of up to 4, each with its own depth map (the pipeline only); null: no transmittance (assigned: a light after none turns `transmittance` on, null off)
  * @property {number} [worldUnitInMm=1000] millimetres per world unit (three.js: metres, 1000)
  * @property {ProfileName|object} [profile='skin'] a preset's name ('skin', 'skinBurley', 'marble', 'milk') or a profile object (burleyProfile, dipoleProfile, gaussianSumProfile)
  * @property {Method} [method='footprint'] how the blur weighs its taps: 'footprint' (each pixel's footprint weighed exactly), 'marginal' or 'reference' (fixed taps; 'reference': Jimenez 2012's kernel); a switch between 'footprint' and the others recompiles the blur
@@ -456,7 +460,7 @@ export function checkMaterialOptions(options = {}, previous = MATERIAL_DEFAULTS)
 /**
  * subsurfaceScattering(scenePass, { ... }) (the WebGPU node): the defaults are NODE_DEFAULTS.
  * @typedef {object} SubsurfaceScatteringNodeOptions
- * @property {import('three').SpotLight|import('three').DirectionalLight|Array<import('three').SpotLight|import('three').DirectionalLight>|null} [light=null] the light shining through thin parts (transmittance), or a list of up to 4, each with its own depth map (the pipeline only); null: no transmittance (assigned: a light after none turns `transmittance` on, null off)
+ * @property {TransmittingLight|TransmittingLight[]|null} [light=null] the light shining through thin parts (transmittance), or a list of up to 4, each with its own depth map (the pipeline only); null: no transmittance (assigned: a light after none turns `transmittance` on, null off)
  * @property {number} [worldUnitInMm=1000] millimetres per world unit (three.js: metres, 1000)
  * @property {ProfileName|object} [profile='skin'] a preset's name ('skin', 'skinBurley', 'marble', 'milk') or a profile object (burleyProfile, dipoleProfile, gaussianSumProfile)
  * @property {Method} [method='footprint'] how the blur weighs its taps: 'footprint' (each pixel's footprint weighed exactly), 'marginal' or 'reference' (fixed taps; 'reference': Jimenez 2012's kernel); a switch between 'footprint' and the others recompiles the blur
@@ -479,7 +483,7 @@ export function checkMaterialOptions(options = {}, previous = MATERIAL_DEFAULTS)
  * @typedef {object} PipelineSettings
  * @property {import('three').Scene} scene the scene drawn, read every frame
  * @property {import('three').Camera} camera the camera drawn with, read every frame
- * @property {import('three').SpotLight|import('three').DirectionalLight|Array<import('three').SpotLight|import('three').DirectionalLight>|null} light the light shining through thin parts (transmittance), or a list of up to 4, each with its own depth map (the pipeline only); null: no transmittance (assigned: a light after none turns `transmittance` on, null off)
+ * @property {TransmittingLight|TransmittingLight[]|null} light the light shining through thin parts (transmittance), or a list of up to 4, each with its own depth map (the pipeline only); null: no transmittance (assigned: a light after none turns `transmittance` on, null off)
  * @property {number} worldUnitInMm millimetres per world unit (three.js: metres, 1000)
  * @property {ProfileName|object} profile a preset's name ('skin', 'skinBurley', 'marble', 'milk') or a profile object (burleyProfile, dipoleProfile, gaussianSumProfile)
  * @property {Method} method how the blur weighs its taps: 'footprint' (each pixel's footprint weighed exactly), 'marginal' or 'reference' (fixed taps; 'reference': Jimenez 2012's kernel); a switch between 'footprint' and the others recompiles the blur
@@ -503,7 +507,7 @@ export function checkMaterialOptions(options = {}, previous = MATERIAL_DEFAULTS)
 /**
  * SubsurfaceScatteringNode's settings, as properties (assigning one checks it as the constructor does).
  * @typedef {object} NodeSettings
- * @property {import('three').SpotLight|import('three').DirectionalLight|Array<import('three').SpotLight|import('three').DirectionalLight>|null} light the light shining through thin parts (transmittance), or a list of up to 4, each with its own depth map (the pipeline only); null: no transmittance (assigned: a light after none turns `transmittance` on, null off)
+ * @property {TransmittingLight|TransmittingLight[]|null} light the light shining through thin parts (transmittance), or a list of up to 4, each with its own depth map (the pipeline only); null: no transmittance (assigned: a light after none turns `transmittance` on, null off)
  * @property {number} worldUnitInMm millimetres per world unit (three.js: metres, 1000)
  * @property {ProfileName|object} profile a preset's name ('skin', 'skinBurley', 'marble', 'milk') or a profile object (burleyProfile, dipoleProfile, gaussianSumProfile)
  * @property {Method} method how the blur weighs its taps: 'footprint' (each pixel's footprint weighed exactly), 'marginal' or 'reference' (fixed taps; 'reference': Jimenez 2012's kernel); a switch between 'footprint' and the others recompiles the blur

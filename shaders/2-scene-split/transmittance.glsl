@@ -22,6 +22,23 @@ vec3 sssTransmittanceProfile( const in float thicknessWorld ) {
 	return fade * sssReadProfile( sssProfileLookup, 0, thicknessWorld * sssThicknessToProfileMm, sssTransmittanceRangeMm );
 }
 
+// T times the entry cosine over the four texels around `texel` (continuous, texel centres at .5)
+// of the map's part from `origin`, `size` texels (the whole map, or a point light's face: a texel
+// beyond its edge is its edge's), for a point at light depth `depth` (see below).
+vec3 sssTransmittanceAround( sampler2D lightDepthMap, const in vec2 texel, const in ivec2 origin, const in ivec2 size, const in float depth ) {
+	ivec2 base = ivec2( floor( texel ) );
+	vec2 f = texel - vec2( base );
+	vec3 light = vec3( 0.0 );
+	for ( int k = 0; k < 4; k ++ ) {
+		ivec2 offset = ivec2( k & 1, k >> 1 );
+		float weight = ( offset.x == 1 ? f.x : 1.0 - f.x ) * ( offset.y == 1 ? f.y : 1.0 - f.y );
+		vec2 recorded = texelFetch( lightDepthMap, origin + clamp( base + offset, ivec2( 0 ), size - 1 ), 0 ).rg; // depth, entry cosine
+		float thickness = depth - recorded.r;
+		if ( recorded.r > 0.0 && thickness > 0.0 ) light += weight * recorded.g * sssTransmittanceProfile( thickness );
+	}
+	return light;
+}
+
 // The light through this point, per RGB: T of the thickness between the light's nearest surface and
 // the point, times the share of the light that entered there (the entry cosine |N·L|, the map's g:
 // a grazing entry near the light's terminator lets little in), as a fraction of the light,
@@ -45,18 +62,27 @@ vec3 sssTransmittanceFrom( sampler2D lightDepthMap, const in mat4 viewToLightVie
 	if ( clip.w <= 0.0 || any( greaterThan( abs( ndc.xy ), vec2( 1.0 ) ) ) ) return vec3( 0.0 );
 	float depth = - ( viewToLightView * vec4( viewPosition, 1.0 ) ).z; // the point's own light depth
 	ivec2 size = textureSize( lightDepthMap, 0 );
-	vec2 texel = ( ndc.xy * 0.5 + 0.5 ) * vec2( size ) - 0.5;
-	ivec2 base = ivec2( floor( texel ) );
-	vec2 f = texel - vec2( base );
-	vec3 light = vec3( 0.0 );
-	for ( int k = 0; k < 4; k ++ ) {
-		ivec2 offset = ivec2( k & 1, k >> 1 );
-		float weight = ( offset.x == 1 ? f.x : 1.0 - f.x ) * ( offset.y == 1 ? f.y : 1.0 - f.y );
-		vec2 recorded = texelFetch( lightDepthMap, clamp( base + offset, ivec2( 0 ), size - 1 ), 0 ).rg; // depth, entry cosine
-		float thickness = depth - recorded.r;
-		if ( recorded.r > 0.0 && thickness > 0.0 ) light += weight * recorded.g * sssTransmittanceProfile( thickness );
-	}
-	return light;
+	return sssTransmittanceAround( lightDepthMap, ( ndc.xy * 0.5 + 0.5 ) * vec2( size ) - 0.5, ivec2( 0 ), size, depth );
+}
+
+// A point light's map (LightDepthView's POINT_FACES): six faces side by side, three across and two
+// up, face k = 2 · axis (x, y, z) + (1 where it looks along −axis), its up +y (+z for the ±y
+// faces). `viewToLight` takes view space to the light's place with the world's axes; the face is
+// the one the shrunk point's largest axis falls in, its depth the distance along that axis.
+vec3 sssPointTransmittanceFrom( sampler2D lightDepthMap, const in mat4 viewToLight, const in vec3 viewPosition, const in vec3 viewVertexNormal ) {
+	vec3 shrunk = ( viewToLight * vec4( viewPosition - sssShrinkWorld * viewVertexNormal, 1.0 ) ).xyz;
+	vec3 a = abs( shrunk );
+	int axis = a.x >= a.y && a.x >= a.z ? 0 : ( a.y >= a.z ? 1 : 2 );
+	vec3 forward = vec3( 0.0 );
+	forward[ axis ] = shrunk[ axis ] < 0.0 ? - 1.0 : 1.0;
+	vec3 up = axis == 1 ? vec3( 0.0, 0.0, 1.0 ) : vec3( 0.0, 1.0, 0.0 );
+	vec3 x = normalize( cross( up, - forward ) );
+	vec3 y = cross( - forward, x );
+	vec2 ndc = vec2( dot( shrunk, x ), dot( shrunk, y ) ) / dot( shrunk, forward );
+	float depth = dot( ( viewToLight * vec4( viewPosition, 1.0 ) ).xyz, forward ); // the point's own, on that face
+	int face = 2 * axis + ( shrunk[ axis ] < 0.0 ? 1 : 0 );
+	ivec2 size = textureSize( lightDepthMap, 0 ) / ivec2( 3, 2 );
+	return sssTransmittanceAround( lightDepthMap, ( ndc * 0.5 + 0.5 ) * vec2( size ) - 0.5, ivec2( face % 3, face / 3 ) * size, size, depth );
 }
 
 // The thickness the light crosses to this point (world units, the map's nearest texel), for the

@@ -21,8 +21,8 @@ function uvTransform(texture, into) {
 }
 
 /**
- * Renders the scene from a SpotLight (perspective) or DirectionalLight (orthographic) into a
- * two-channel float target: r the linear depth in world units (0 means "no surface"), g the entry
+ * Renders the scene from a SpotLight (perspective), DirectionalLight (orthographic) or PointLight
+ * (six perspective faces side by side: LightDepthView.pointFace) into a two-channel float target: r the linear depth in world units (0 means "no surface"), g the entry
  * cosine |N·L| there (0..1).
  * The camera follows the light (position, target, angle) on every `render` (LightDepthView).
  */
@@ -91,6 +91,22 @@ export class LightDepthTarget extends LightDepthView {
     u.opacity.value = material.opacity;
   }
 
+  /** A point light's six faces, each into its viewport of the target (LightDepthView.pointFace). */
+  _renderFaces(renderer, scene) {
+    const { renderTarget, camera } = this;
+    camera.matrixWorldAutoUpdate = false; // the faces' turns are set by hand
+    try {
+      for (let k = 0; k < 6; k++) {
+        renderTarget.viewport.set(...this.pointFace(k));
+        renderer.setRenderTarget(renderTarget); // three takes the viewport when the target is set
+        renderer.render(scene, camera);
+      }
+    } finally {
+      camera.matrixWorldAutoUpdate = true;
+      renderTarget.viewport.set(0, 0, renderTarget.width, renderTarget.height);
+    }
+  }
+
   /**
    * Renders `scene` from the light, each mesh drawn with `depthMaterialOf(mesh)` (its own material
    * is put back after, also on an exception). Restores the renderer's render target, clear
@@ -127,7 +143,8 @@ export class LightDepthTarget extends LightDepthView {
         renderer.setClearColor(0x000000, 0); // 0 = no surface
         renderer.autoClear = false;
         renderer.clear(true, true, false);
-        renderer.render(scene, this.camera);
+        if (this.isCube) this._renderFaces(renderer, scene);
+        else renderer.render(scene, this.camera);
         this.valid = true;
       } finally {
         for (const [object, material] of swapped) object.material = material;

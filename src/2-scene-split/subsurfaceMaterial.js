@@ -66,7 +66,7 @@ const LIGHT_ARRAYS = Object.freeze({
   sssLightPositionView: 'sssLightPositionsView', sssLightDirectionView: 'sssLightDirectionsView',
   sssLightCutoffDistance: 'sssLightCutoffDistances', sssLightDecay: 'sssLightDecays', sssSpotConeCos: 'sssSpotConeCosines',
   sssSpotPenumbraCos: 'sssSpotPenumbraCosines', sssLightDepthMap: 'sssLightDepthMaps', sssViewToLightView: 'sssViewToLightViews',
-  sssLightProjection: 'sssLightProjections',
+  sssLightProjection: 'sssLightProjections', sssLightCube: 'sssLightCubes',
 });
 
 /** The arrays of LIGHT_ARRAYS, each element a fresh slot's first value. */

@@ -44,6 +44,7 @@ export const NODE_METHODS = Object.freeze(['footprint']);
 function nodeLight(light) {
   const lights = lightsOf(light);
   if (lights.length > 1) throw new RangeError(`light: the WebGPU node takes one light, got a list of ${lights.length} (several lights are the WebGL pipeline's)`);
+  if (lights[0]?.isPointLight) throw new TypeError('light: the WebGPU node takes a SpotLight or DirectionalLight, got a PointLight (the WebGL pipeline takes point lights)');
   return lights[0] ?? null;
 }
 

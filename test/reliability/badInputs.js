@@ -20,7 +20,7 @@ export const CALL_CASES = [
   ['scene: {}', (t) => t.make({ scene: {} }), 'TypeError', /scene must be a THREE\.Scene, got Object/],
   ['no camera', (t) => t.make({ camera: undefined }), 'TypeError', /camera must be a THREE\.Camera, got undefined/],
   ['camera: an Object3D', (t) => t.make({ camera: new t.THREE.Object3D() }), 'TypeError', /camera must be a THREE\.Camera, got an Object3D/],
-  ['light: a PointLight', (t) => t.make({ light: new t.THREE.PointLight() }), 'TypeError', /light must be a THREE\.SpotLight, THREE\.DirectionalLight, a list of them or null, got a PointLight/],
+  ['light: a HemisphereLight', (t) => t.make({ light: new t.THREE.HemisphereLight() }), 'TypeError', /light must be a THREE\.SpotLight, THREE\.DirectionalLight, THREE\.PointLight, a list of them or null, got a HemisphereLight/],
   ['light: undefined', (t) => t.make({ light: undefined }), 'TypeError', /light must be .* or null, got undefined/],
   ["light: 'sun'", (t) => t.make({ light: 'sun' }), 'TypeError', /light must be .*got "sun"/],
   ['worldUnitInMm: NaN', (t) => t.make({ worldUnitInMm: NaN }), 'TypeError', /worldUnitInMm must be a finite number, got NaN/],
@@ -87,7 +87,7 @@ export const CALL_CASES = [
   ['sss.worldUnitInMm = NaN', (t) => { t.sss.worldUnitInMm = NaN; }, 'TypeError', /worldUnitInMm must be a finite number, got NaN/],
   ['sss.worldUnitInMm = 1e-9', (t) => { t.sss.worldUnitInMm = 1e-9; }, 'RangeError', /worldUnitInMm must be in .*got 1e-9/],
   ["transmittance = 'no'", (t) => { t.sss.transmittance = 'no'; }, 'TypeError', /transmittance must be a boolean \(true or false\), got "no"/],
-  ['sss.light = a PointLight', (t) => { t.sss.light = new t.THREE.PointLight(); }, 'TypeError', /^light must be a THREE\.SpotLight, THREE\.DirectionalLight, a list of them or null, got a PointLight/],
+  ['sss.light = an AmbientLight', (t) => { t.sss.light = new t.THREE.AmbientLight(); }, 'TypeError', /^light must be a THREE\.SpotLight, THREE\.DirectionalLight, THREE\.PointLight, a list of them or null, got an AmbientLight/],
   ["sss.light = null with debugView 'thickness'", (t) => { t.sss.debugView = 'thickness'; t.sss.light = null; }, 'TypeError', /^debugView = "thickness" needs a light/],
   ["debugView = 'thickness' without a light", (t) => { t.make({ light: null }).debugView = 'thickness'; }, 'TypeError', /^debugView = "thickness" needs a light/],
   ["debugView: 'transmittance' without a light", (t) => t.make({ light: null, debugView: 'transmittance' }), 'TypeError', /^debugView = "transmittance" needs a light/],
@@ -150,7 +150,7 @@ export const CALL_CASES = [
   ['makeSubsurface on its own, a misspelt option', (t) => t.SSS.makeSubsurface(new t.THREE.MeshStandardMaterial(), { worldUnit: 10 }), 'TypeError', /unknown option "worldUnit"/],
 
   // The stages used on their own
-  ['new LightDepthTarget(null)', (t) => new t.SSS.LightDepthTarget(null), 'TypeError', /LightDepthTarget: light must be a THREE\.SpotLight or THREE\.DirectionalLight, got null/],
+  ['new LightDepthTarget(null)', (t) => new t.SSS.LightDepthTarget(null), 'TypeError', /LightDepthTarget: light must be a THREE\.SpotLight, THREE\.DirectionalLight or THREE\.PointLight, got null/],
   ['LightDepthTarget size: 10', (t) => new t.SSS.LightDepthTarget(t.light, { size: 10 }), 'RangeError', /^size must be an integer in 16\.\.8192 pixels, got 10$/],
   ['LightDepthTarget options: null', (t) => new t.SSS.LightDepthTarget(t.light, null), 'TypeError', /LightDepthTarget options must be an object, got null/],
   ['LightDepthTarget near: NaN', (t) => new t.SSS.LightDepthTarget(t.light, { near: NaN }), 'TypeError', /near must be a finite number, got NaN/],

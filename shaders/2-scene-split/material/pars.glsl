@@ -32,6 +32,7 @@ uniform float sssSpotPenumbraCosines[ SSS_MAX_LIGHTS ];
 uniform sampler2D sssLightDepthMaps[ SSS_MAX_LIGHTS ];
 uniform mat4 sssViewToLightViews[ SSS_MAX_LIGHTS ];
 uniform mat4 sssLightProjections[ SSS_MAX_LIGHTS ];
+uniform bool sssLightCubes[ SSS_MAX_LIGHTS ];           // the map is a point light's six faces (else one view: sssLightProjections)
 
 #include "common/finite.glsl"
 #include "2-scene-split/transmittance.glsl"
@@ -49,15 +50,18 @@ vec3 sssTransmittedFrom( const in int i, sampler2D lightDepthMap, const in vec3 
 	if ( ! sssLightTransmits[ i ] ) return vec3( 0.0 );
 	vec3 toLight = sssLightDirectionsView[ i ];
 	float attenuation = 1.0;
-	if ( sssLightTypes[ i ] == SSS_LIGHT_TYPE_SPOT ) {
+	if ( sssLightTypes[ i ] != SSS_LIGHT_TYPE_DIRECTIONAL ) {
 		vec3 lightVector = sssLightPositionsView[ i ] - position;
 		float lightDistance = length( lightVector );
 		toLight = lightVector / lightDistance;
-		attenuation = getSpotAttenuation( sssSpotConeCosines[ i ], sssSpotPenumbraCosines[ i ], dot( toLight, sssLightDirectionsView[ i ] ) )
-			* getDistanceAttenuation( lightDistance, sssLightCutoffDistances[ i ], sssLightDecays[ i ] );
+		attenuation = getDistanceAttenuation( lightDistance, sssLightCutoffDistances[ i ], sssLightDecays[ i ] );
+		if ( sssLightTypes[ i ] == SSS_LIGHT_TYPE_SPOT ) attenuation *= getSpotAttenuation( sssSpotConeCosines[ i ], sssSpotPenumbraCosines[ i ], dot( toLight, sssLightDirectionsView[ i ] ) );
 	}
 	float wrap = saturate( SSS_WRAP_OFFSET + dot( - normal, toLight ) ) * smoothstep( 0.0, SSS_FROM_BEHIND_RANGE, - toLight.z );
 	float weight = attenuation * wrap;
 	if ( weight <= 0.0 ) return vec3( 0.0 );
-	return sssLightColors[ i ] * weight * sssTransmittanceFrom( lightDepthMap, sssViewToLightViews[ i ], sssLightProjections[ i ], position, normal );
+	vec3 through = sssLightCubes[ i ]
+		? sssPointTransmittanceFrom( lightDepthMap, sssViewToLightViews[ i ], position, normal )
+		: sssTransmittanceFrom( lightDepthMap, sssViewToLightViews[ i ], sssLightProjections[ i ], position, normal );
+	return sssLightColors[ i ] * weight * through;
 }

@@ -14,8 +14,8 @@
 		// A degenerate light set-up must not turn the whole material NaN (outside the pipeline too).
 		if ( ! sssFinite( sssTransmitted ) ) sssTransmitted = vec3( 0.0 );
 		reflectedLight.directDiffuse += sssTransmitted;
-		// The thickness view shows the first light's.
-		if ( sssDebugOutput == SSS_OUTPUT_THICKNESS ) {
+		// The thickness view shows the first light's (not from a point light's six faces: none).
+		if ( sssDebugOutput == SSS_OUTPUT_THICKNESS && ! sssLightCubes[ 0 ] ) {
 			sssThicknessMm = sssThicknessWorldFrom( sssLightDepthMaps[ 0 ], sssViewToLightViews[ 0 ], sssLightProjections[ 0 ], sssPosition, nonPerturbedNormal ) * sssThicknessToProfileMm;
 		}
 	}
