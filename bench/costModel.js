@@ -1,7 +1,7 @@
 // The bench's cost model (issue 19): what each stage of a frame writes and reads per screen pixel,
 // and the memory of the pipeline's targets, from the attachment formats
 // (src/2-scene-split/subsurfaceTarget.js, src/3-blur/BlurStage.js), the passes and their taps
-// (shaders/3-blur/subsurfaceBlur.frag.glsl). SwiftShader times are CPU times; a GPU is mostly
+// (shaders/3-blur/blurTaps.glsl). SwiftShader times are CPU times; a GPU is mostly
 // bound by memory traffic, which this counts instead.
 //
 // Cache assumption ("compulsory traffic"): every texel a pass reads comes from memory once per pass
@@ -23,7 +23,7 @@ export const TARGETS = Object.freeze([
   { name: 'diffuse (multi-target 1)', format: 'rgba16f', carriedFormat: 'rgba32f', multisampled: true, carriedWithMsaa: false },
   { name: 'surface (multi-target 2)', format: 'rg32f', multisampled: true },
   { name: 'depth (multi-target)', format: 'depth24', multisampled: true },
-  // RGBA32F while it carries the depth (BlurStage.lightCarriesDepth, the default), else the pipeline's type.
+  // RGBA32F: it carries the depth to the vertical pass.
   { name: 'horizontal blur', format: 'rgba16f', carriedFormat: 'rgba32f', multisampled: false },
   { name: 'horizontal blur, isotropic groups (two attachments; built when groups are possible)', format: 'rgba32ui', attachments: 2, multisampled: false, groups: true },
   { name: 'scattered light', format: 'rgba16f', multisampled: false },

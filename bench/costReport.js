@@ -1,4 +1,4 @@
-// docs/BENCH.md's issue 19 sections (bench/report.js puts them in): the issue's four ratios,
+// docs/BENCH.md's cost sections (bench/report.js puts them in): the four cost ratios,
 // version 0.2's next to this run's, and the cost model (bench/costModel.js) with the coverage the
 // side-by-side measured on the head.
 import { spread } from './analysis.js';
@@ -43,14 +43,14 @@ const ROWS = [
   ['msaa', 'what MSAA 4 adds / what it adds to a plain frame', 2],
 ];
 
-/** Issue 19's table: each ratio per resolution, version 0.2's run next to this one's. */
+/** The cost table: each ratio per resolution, version 0.2's run next to this one's. */
 export function issueTableSection(json) {
   const before = json.peersVersion02?.peers ?? [];
   const now = json.peers ?? [];
   if (now.length === 0) return '';
   const resolutions = now.map((p) => p.resolution);
   const when = json.peersRun ? `\`${json.peersRun.command}\`, ${json.peersRun.createdAt.slice(0, 10)}` : `\`${json.command}\``;
-  const lines = ['## Issue 19: separable as the fast method', '',
+  const lines = ['## The separable blur as the fast method: its cost against a plain frame', '',
     `Each ratio is taken per round from the stage and frame timers of that round, then the median and range (min–max) over the rounds (timer queries, and after "CPU" the same ratio by the GPU process's CPU time, which other load on the machine swells less; the stage timer has no CPU counterpart). `
     + `SwiftShader's times are CPU times; on a machine shared with other work a timer query also counts the time its process waited, so a round's ratio can even come out negative: the spreads say how far to trust a median. `
     + `Version 0.2: the side-by-side of ${json.peersVersion02 ? `the run of ${json.peersVersion02.createdAt.slice(0, 10)}` : 'no earlier run'}; now: ${when}. MSAA: the features block's rounds (version 0.2 measured it at 1280×720 only).`, '',
@@ -112,7 +112,7 @@ export function costModelSection(json) {
     return `${name}: ${bytes(t)} B (×${(t / traffic(before.total)).toFixed(2)} of before)`;
   });
   const isotropic = traffic(frameTraffic(ISOTROPIC, scene).total);
-  lines.push('', `The isotropic blur (issue 20, \`kernelGroups: 'auto'\`, four groups carried between the passes in two RGBA32UI texels, the depth in their alphas): ${bytes(isotropic)} B per pixel (×${(isotropic / traffic(before.total)).toFixed(2)} of before), ${bytes(isotropic - traffic(after.total))} B more than one kernel.`);
+  lines.push('', `The isotropic blur (\`kernelGroups: 'auto'\`, four groups carried between the passes in two RGBA32UI texels, the depth in their alphas): ${bytes(isotropic)} B per pixel (×${(isotropic / traffic(before.total)).toFixed(2)} of before), ${bytes(isotropic - traffic(after.total))} B more than one kernel.`);
   lines.push('', `Not built, modelled on top of after (what they would save; the surface's coverage-weighted MSAA resolve has no depth-texture equivalent): ${modelled.join('; ')}.`);
   const memory = targetMemory(1920, 1080);
   const msaa = targetMemory(1920, 1080, { samples: 4 });

@@ -1,7 +1,7 @@
 // The browser side of the speed-accuracy bench (bench/run.js drives it; test/browser/3-blur/dense.test.js
 // uses it too): `window.bench` builds a scene with the real pipeline in a real EffectComposer,
-// renders the dense 2D reference once per profile (the pipeline's own method 'dense'), then
-// measures each setting's error against it and its time, all through the library's public API.
+// renders the dense 2D reference once per profile (the pipeline's own, through internals' useDenseReference), then
+// measures each setting's error against it and its time, all through the library's API.
 //
 // Times: `gpuMs` = EXT_disjoint_timer_query_webgl2 around the SSS stage (both blurs, or the dense
 // pass), from the pipeline's stage timer (dev/gpuTimer.js); `ms` = a whole composer.render()
@@ -12,8 +12,9 @@ import {
 } from 'three';
 import { EffectComposer } from 'three/addons/postprocessing/EffectComposer.js';
 import { OutputPass } from 'three/addons/postprocessing/OutputPass.js';
-import { SubsurfaceScattering, pixelsPerMm } from '/src/index.js';
-import { AUTO_SAMPLES, footprintTable } from '/src/internals.js';
+import { SubsurfaceScattering } from '/src/index.js';
+import { pixelsPerMm } from '/src/stages.js';
+import { AUTO_SAMPLES, footprintTable, useDenseReference } from '/src/internals.js';
 import { ATTACHMENTS } from '/src/2-scene-split/subsurfaceTarget.js';
 import { AUTO_STEP_ERROR, footprintRowOf } from '/src/profiles/footprints.js';
 import { readRenderTargetFloats } from '/dev/readback.js';
@@ -128,10 +129,9 @@ function useProfile(profile) {
 
 /** The dense reference with `coverage` as the pipeline's blur stage. */
 function useDense(coverage) {
-  const { sss } = session;
-  sss.method = 'dense';
-  sss._blur.densePass.setCoverage(coverage);
-  return sss._blur.densePass;
+  const dense = useDenseReference(session.sss);
+  dense.setCoverage(coverage);
+  return dense;
 }
 
 /**
@@ -181,7 +181,7 @@ async function autoTaps() {
       max = Math.max(max, taps);
       min = Math.min(min, taps);
       // Footprints one pixel wide, snapped as the shader snaps them: their two taps sit on texel
-      // centres (one texel fetched each with blur.skipsEmptyTexels).
+      // centres (one texel fetched each).
       for (let k = 0, lastEdge = 0; k < (taps - 1) / 2; k++) {
         const edgeMm = data[2 * (row * columns + k)];
         if (!Number.isFinite(edgeMm)) break; // the tail
@@ -247,6 +247,7 @@ async function measure({ kind, profile, method, samples, coverage, frames, sssFr
   } else {
     // 'auto': 'footprint' picks per pixel; the fixed-tap methods per frame, when the frame starts.
     const auto = samples === 'auto';
+    useDenseReference(sss, false);
     Object.assign(sss, { method, samples });
     if (auto) composer.render();
     const perPixel = auto && method === 'footprint';

@@ -76,41 +76,21 @@ export async function openPeers(session) {
   return peers;
 }
 
-/**
- * The switch each undone optimization (bench/peerPlan.js's UNDONE_OPTIMIZATIONS) flips, as
- * [object of the pipeline, field, value that undoes it]: documented-internal flags of the passes.
- */
-const UNDO_SWITCHES = Object.freeze({
-  lightDepthEveryFrame: (sss) => [sss, 'skipsUnreadLightDepth', false],
-  composeAsBefore: (sss) => [sss._composePass, 'fetchesEverywhere', true],
-  depthPrepass: (sss) => [sss._scenePass, 'depthPrepass', true],
-  fullFrameBlur: (sss) => [sss._blur, 'confineToSubsurface', false],
-  bothTexelsFetched: (sss) => [sss._blur, 'skipsEmptyTexels', false],
-  depthFromSurface: (sss) => [sss._blur, 'lightCarriesDepth', false],
-  maskInDiffuse: (sss) => [sss._scenePass, 'diffuseCarriesDepth', false],
-  maskFromDiffuse: (sss) => [sss._composePass, 'maskFromScattered', false],
-  msaaDepthResolvedTwice: (sss) => [sss._scenePass, 'resolvesDepthOnce', false],
-  isotropicDepthFromSurface: (sss) => [sss._blur, 'groupsCarryDepth', false], // with isotropic's switch too (applyFeature)
-});
-
-/** The additions switched on or off by a field (bench/peerPlan.js's ADDITIONS), as UNDO_SWITCHES. */
+/** The additions switched on by a field (bench/peerPlan.js's ADDITIONS), as [object of the pipeline, field, value]. */
 const ADDITION_SWITCHES = Object.freeze({
-  noDepthWrite: (sss) => [sss._composePass, 'writesDepth', false],
   isotropic: (sss) => [sss, 'kernelGroups', 'auto'],
 });
 
 /** The features measured with MSAA 4 in the scene split (and the plain frame in a 4-sample buffer). */
-const MSAA_FEATURES = Object.freeze(['msaa4', 'msaaDepthResolvedTwice']);
+const MSAA_FEATURES = Object.freeze(['msaa4']);
 
 /**
  * Turns `feature` on for the session's head (FEATURES) and returns what turns it off again.
  * msaa4: the scene split multisampled 4 times (the plain frame draws into a 4-sample buffer too);
- * transparent: a half see-through pane in front of the chin; noDepthWrite: the compose writes
- * colour only (version 0.1's compose handed no depth on, `composePass.writesDepth`); isotropic: the
- * blur in groups (`kernelGroups: 'auto'`; the default is one kernel);
- * threeProfiles: a marble and a milk ball beside the head, each with its own profile (three in
- * the frame), threeObjects: the same balls in the head's profile; the optimizations undone flip
- * their switch (UNDO_SWITCHES), the isotropic blur's with the isotropic blur on.
+ * transparent: a half see-through pane in front of the chin; isotropic: the blur in groups
+ * (`kernelGroups: 'auto'`; the default is one kernel); threeProfiles: a marble and a milk ball
+ * beside the head, each with its own profile (three in the frame), threeObjects: the same balls in
+ * the head's profile.
  */
 function applyFeature(peers, session, feature) {
   const { sss, built } = session;
@@ -138,15 +118,10 @@ function applyFeature(peers, session, feature) {
       off();
     };
   }
-  // An isotropic optimization undone: the isotropic blur on as well (it is measured against it).
-  const switches = [ADDITION_SWITCHES[feature] ?? UNDO_SWITCHES[feature], ...(feature.startsWith('isotropic') && feature !== 'isotropic' ? [ADDITION_SWITCHES.isotropic] : [])];
-  const undo = switches.map((of) => {
-    const [object, field, value] = of(sss);
-    const before = object[field];
-    object[field] = value;
-    return () => { object[field] = before; };
-  });
-  return () => { undo.forEach((restore) => restore()); msaaOff(); };
+  const [object, field, value] = ADDITION_SWITCHES[feature](sss);
+  const before = object[field];
+  object[field] = value;
+  return () => { object[field] = before; msaaOff(); };
 }
 
 /** Renders `variant` once with one timer query around the whole frame. */

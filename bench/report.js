@@ -5,7 +5,6 @@ import { surfaceTruthSummary } from './surfaceTruth/report.js';
 import {
   autoAgainstFixed, deviceName, dominates, isDefaultSetting, median, paretoFront, percent as pct, ratio, rowsOf, SAME_ERROR, SATURATION, settingName, spread, table,
 } from './analysis.js';
-import { MEASURED_BY_ABSENCE, undoneAgainst } from './peerPlan.js';
 const MAIN = { scene: 'head', resolution: '1280x720' };
 
 /** The series a row belongs to on the chart. */
@@ -144,7 +143,7 @@ function syntheticSection(results) {
 const robustTime = (rows) => (rows.length > 0 && rows.every((r) => r.sssCpuMs > 0) ? 'sssCpuMs' : 'gpuMs');
 const clockName = (time) => (time === 'sssCpuMs' ? 'CPU time' : 'timer queries');
 
-/** samples 'auto' against the fixed budgets of every scene (issue 11's goal: within 1.2 × the cheapest of equal error). */
+/** samples 'auto' against the fixed budgets of every scene (the goal: within 1.2 × the cheapest of equal error). */
 function autoSection(results, moduleInfo) {
   const time = robustTime(results.filter((r) => r.kind === 'separable'));
   const comparisons = autoAgainstFixed(results, time);
@@ -230,68 +229,8 @@ function peersSection(json) {
 }
 
 const stageSum = (st) => Object.values(st).reduce((sum, v) => sum + (Number.isFinite(v) ? v : 0), 0);
-const stageOf = (st, k) => (Number.isFinite(st[k]) ? st[k] : 0);
 
-/**
- * Issue 10's optimizations, each undone in the features block's rounds (bench/peerPlan.js's
- * UNDONE_OPTIMIZATIONS): per round, the stage it touches without it minus with it (the stage
- * timer times that stage alone, so the saving is not lost in the whole frame's spread), then the
- * median and range over the rounds; and the whole frame's (sum of stages) difference.
- */
-function optimizationsSection(json) {
-  const block = (json.peers ?? []).find((p) => p.features?.every((r) => r.lightDepthEveryFrame && r.composeAsBefore));
-  if (!block) return '';
-  const rounds = block.features;
-  const plain = median(rounds.map((r) => r.none.threePlain.timerMs));
-  // An optimization of the MSAA path is held against the MSAA frame with it (msaa4).
-  const baseOf = undoneAgainst;
-  const saved = (feature, f) => spread(rounds.map((r) => f(r[feature].stages) - f(r[baseOf(feature)].stages)));
-  const range = (x, digits = 1) => `${x.median.toFixed(digits)} ms (${x.min.toFixed(digits)} to ${x.max.toFixed(digits)})`;
-  const plainCpu = median(rounds.map((r) => r.none.threePlain.cpuMs));
-  // Paid: the stages were faster with it in every round (the range stays above 0), by the stage
-  // timer or by the CPU time of the whole frame.
-  const verdict = (x, cpu) => (x.min > 0 ? `yes: ${(x.median / plain).toFixed(3)} × the plain three.js frame`
-    : cpu?.min > 0 ? `yes, by CPU time: ${(cpu.median / plainCpu).toFixed(3)} × the plain three.js frame's` : 'not measurably (kept: same image)');
-  const rows = [
-    ['lightDepthEveryFrame', ['lightDepth'], 'the light depth pass skipped while the light reaches no subsurface mesh from behind (on the head the light is on the camera\'s side)'],
-    ['composeAsBefore', ['compose'], 'the compose reads the scattered light on subsurface pixels only, and the surface attachment in the depth view only'],
-    ['depthPrepass', ['scene'], 'each subsurface object drawn once: no depth prepass in the scene split (`scenePass.depthPrepass`; shadows and occlusion kept)'],
-    ['fullFrameBlur', ['blurH', 'blurV'], 'both blur passes scissored to the subsurface pixels\' screen box (`blur.confineToSubsurface`)'],
-    ['bothTexelsFetched', ['blurH', 'blurV'], 'the blur fetches only the texels a tap weighs: one, not two, for a tap on a texel centre (`blur.skipsEmptyTexels`)'],
-    ['depthFromSurface', ['blurV'], 'the horizontal blur hands the depth on in its light\'s alpha (a float target), so a vertical tap fetches one texel, not two (light and surface; `blur.lightCarriesDepth`)'],
-    ['maskInDiffuse', ['scene', 'blurH', 'compose'], 'the diffuse attachment carries the depth in its alpha (float, without MSAA), so a horizontal tap fetches one texel, not two (`scenePass.diffuseCarriesDepth`)'],
-    ['maskFromDiffuse', ['compose'], 'the compose reads the mask from the scattered light\'s alpha inside the subsurface pixels\' box, and nothing outside it (`composePass.maskFromScattered`)'],
-    ['isotropicDepthFromSurface', ['blurV'], 'the isotropic blur\'s groups carry the depth between the passes (the group target\'s alphas, without MSAA), so a vertical tap reads no surface texel with one profile (`blur.groupsCarryDepth`; against the isotropic frame)'],
-    ['msaaDepthResolvedTwice', ['scene'], 'with MSAA 4, the scene split\'s depth resolved once, after its second call (three resolved it after each call, once per attachment; `scenePass.resolvesDepthOnce`)'],
-  ].filter(([feature]) => rounds.every((r) => r[feature] && r[baseOf(feature)]));
-  const cpuSaved = (feature) => (rounds.every((r) => Number.isFinite(r[feature].cpuMs) && Number.isFinite(r[baseOf(feature)].cpuMs))
-    ? spread(rounds.map((r) => r[feature].cpuMs - r[baseOf(feature)].cpuMs)) : null);
-  const lines = [`## Optimizations tried (head, ${block.resolution.replace('x', '×')}, ${rounds.length} rounds)`, ''];
-  lines.push('Each optimization kept is undone for one measure of the same rounds (bench/peerPlan.js\'s UNDONE_OPTIMIZATIONS: a switch of the passes each), so the frame without it is timed next to the frame with it. '
-    + 'Saving: the stages it touches without it minus with it, per round (stage timer), then the median and range over the rounds; the whole frame (sum of all stages, and the GPU process\'s CPU time per frame, which other load swells less) is shown too, but its spread between rounds is larger than these savings. '
-    + `No optimization changes the image (test/browser/costSwitches.test.js: each switch undone gives the same floats), and every row of this report is measured with all of them. The plain three.js frame: ${ms(plain)}.`, '');
-  lines.push('| optimization | stages, without / with it | saving on those stages | whole frame, without − with | by CPU time | paid? |', '|---|---|---|---|---|---|');
-  for (const [feature, stages, what] of rows) {
-    const of = (st) => stages.reduce((sum, k) => sum + stageOf(st, k), 0);
-    const without = median(rounds.map((r) => of(r[feature].stages)));
-    const withIt = median(rounds.map((r) => of(r[baseOf(feature)].stages)));
-    const saving = saved(feature, of);
-    const cpu = cpuSaved(feature);
-    lines.push(`| ${what} | ${stages.join(' + ')} ${without.toFixed(1)} / ${withIt.toFixed(1)} ms | ${range(saving)} | ${range(saved(feature, stageSum), 0)} | ${cpu ? range(cpu, 0) : '—'} | ${verdict(saving, cpu)} |`);
-  }
-  lines.push('', 'Also in the first one\'s commit: the materials read the light depth map and the profile only where the wrap weight is above 0 (nowhere on the front-lit head); the bench cannot undo it, so it is not measured apart.', '',
-    'Not tried yet: the thickness from the shadow map instead of a second render from the light (on the head the pass is skipped anyway), the compose fused into the last blur, fewer and smaller attachments (the surface from the depth texture and a half-float width), the colour attachments resolved once with MSAA (three resolves every attachment after each of the split\'s two calls; only the depth could be held back through its API; an A/B that hid the diffuse and surface attachments from three during the first call, a hack not kept, saved 10 % of the MSAA scene split: 597 → 538 ms, a flat plane at 1280×720, 6 rounds), and bilinear taps away from edges.', '',
-    'Tried on the blur\'s fetches and not kept (2026-12-02; a scratch harness, not the bench: both blurs re-run over the scene split of the bench\'s head scene at 1280×720, which for these runs held the stand-in bust, the scan\'s files not being in public/assets; variants interleaved, 5 rounds of 5 re-runs each unless said, stage-timer medians). '
-    + 'The machine\'s speed moved by up to ±25 % between runs within the hour (the same horizontal pass took 90 to 149 ms), so only differences inside one run are read, and those under about 10 % are not resolved. '
-    + 'Where the time goes, by hacks that change the image: G(x) read from one nearest texel instead of two interpolated ones saves 21 % and 22 % of the horizontal pass in two runs (174 → 137 ms, 166 → 129 ms) and 20 % of the vertical (207 → 165, 208 → 157 ms); skipping every tap\'s second texel saves 38 % and 33 % (174 → 107 ms, 207 → 139 ms). '
-    + 'Exact ways to fewer fetches, none faster here: both ends of G(x)\'s interval packed in one RGBA32UI texel (21-bit fixed point, within 1.2e-7 of the float table), slower in each of three runs (4-10 % per pass: the unpacking costs more than the fetch it saves); the footprint table two footprints to an RGBA texel (horizontal 105 → 112 ms, vertical 128 → 129 ms); the float table filtered by the sampler (`texture()`, OES_texture_float_linear: an optional extension, and GPUs interpolate with 8-bit weights), 3 % and 6 %, not resolved; G(x) in closed form for the Gaussian-sum profiles (six erf), 84 % and 60 % slower; the light between the passes stored transposed so that the vertical taps step along texture rows, 34 % and 30 % slower (142 → 190 ms, 159 → 207 ms): the vertical pass is not slower for its memory layout. '
-    + 'Skipping the NaN and Inf test of each tap texel where the light is float and sanitised by its writer: no difference in 10 rounds (horizontal 119.9 → 118.6 ms, vertical 141.9 → 145.8 ms). '
-    + 'On a GPU the packed pairs and the paired table would each save a fetch per footprint from a small cached table, which only a `--gpu` run can weigh. '
-    + 'What stands in the way of the blur goal here: the taps\' light texels themselves (a tap\'s second texel is a third of the blur), which only fewer taps or one filtered fetch of both texels would cut (Jimenez\'s bilinear taps: they blend the depths the tap rule compares, so they change the image at depth edges).');
-  return lines.join('\n');
-}
-
-/** What version 0.2's additions cost (bench/peerPlan.js's ADDITIONS), at the resolution measured. */
+/** What the features beyond the default frame cost (bench/peerPlan.js's ADDITIONS), at the resolution measured. */
 function featuresSection(json) {
   const block = (json.peers ?? []).find((p) => p.features);
   if (!block) return '';
@@ -301,22 +240,17 @@ function featuresSection(json) {
   const rows = [
     ['MSAA 4 (`multisampling: 4`; the plain frame into a 4-sample buffer)', 'msaa4', ['scene', 'blurH', 'blurV', 'compose']],
     ['a transparent pane over the chin (drawn after the compose)', 'transparent', ['transparent']],
-    ["the compose's depth write (measured by switching it off)", 'noDepthWrite', ['compose']],
     ['a marble and a milk ball beside the head, in the head\'s skin profile (one profile)', 'threeObjects', ['scene', 'blurH', 'blurV', 'compose']],
     ['the same balls in their own profiles (three profiles on screen)', 'threeProfiles', ['scene', 'blurH', 'blurV', 'compose']],
     ["the isotropic blur (`kernelGroups: 'auto'`; the default blurs with one kernel)", 'isotropic', ['blurH', 'blurV']],
   ].filter(([, feature]) => rounds.every((r) => r[feature]));
-  const lines = [`## What version 0.2's additions cost (head, ${block.resolution.replace('x', '×')}, ${rounds.length} rounds)`, ''];
+  const lines = [`## What the features cost (head, ${block.resolution.replace('x', '×')}, ${rounds.length} rounds)`, ''];
   lines.push('| addition | ours: frame (sum of stages) with it − without | stages it touches, with / without | plain three.js frame with it − without |', '|---|---|---|---|');
   for (const [name, feature, stages] of rows) {
-    const sign = MEASURED_BY_ABSENCE.includes(feature) ? -1 : 1;
-    const ours = sign * (of(feature, (x) => stageSum(x.stages)) - base((x) => stageSum(x.stages)));
-    const plain = sign * (of(feature, (x) => x.threePlain.timerMs) - base((x) => x.threePlain.timerMs));
-    const touched = stages.map((k) => {
-      const [w, wo] = sign > 0 ? [of(feature, (x) => x.stages[k] ?? 0), base((x) => x.stages[k] ?? 0)] : [base((x) => x.stages[k] ?? 0), of(feature, (x) => x.stages[k] ?? 0)];
-      return `${k} ${w.toFixed(1)} / ${wo.toFixed(1)}`;
-    }).join(', ');
-    const plainCell = { noDepthWrite: '— (no compose)', isotropic: '— (no blur)' }[feature] ?? `${plain >= 0 ? '+' : ''}${ms(plain)}`;
+    const ours = of(feature, (x) => stageSum(x.stages)) - base((x) => stageSum(x.stages));
+    const plain = of(feature, (x) => x.threePlain.timerMs) - base((x) => x.threePlain.timerMs);
+    const touched = stages.map((k) => `${k} ${of(feature, (x) => x.stages[k] ?? 0).toFixed(1)} / ${base((x) => x.stages[k] ?? 0).toFixed(1)}`).join(', ');
+    const plainCell = feature === 'isotropic' ? '— (no blur)' : `${plain >= 0 ? '+' : ''}${ms(plain)}`;
     lines.push(`| ${name} | ${ours >= 0 ? '+' : ''}${ms(ours)} | ${touched} | ${plainCell} |`);
   }
   if (rounds.every((r) => r.threeProfiles && r.threeObjects)) {
@@ -330,7 +264,7 @@ function featuresSection(json) {
     // Issue 20's budget: the isotropic blur against the same release's one-kernel blur, per round.
     const blur = (x) => (x.stages.blurH ?? 0) + (x.stages.blurV ?? 0);
     const ratio = spread(rounds.map((r) => blur(r.isotropic) / blur(r.none)));
-    lines.push('', `The isotropic blur against one kernel on the same frame (issue 20's budget: ≤ 1.3×), per round: both blurs ×${ratio.median.toFixed(2)} (${ratio.min.toFixed(2)}–${ratio.max.toFixed(2)}).`);
+    lines.push('', `The isotropic blur against one kernel on the same frame (the budget: ≤ 1.3×), per round: both blurs ×${ratio.median.toFixed(2)} (${ratio.min.toFixed(2)}–${ratio.max.toFixed(2)}).`);
   }
   lines.push('', 'Stage times in ms (stage timer, median over rounds); "with − without" from the same rounds. Noise: timer queries of identical frames spread by about ±25 % on this shared machine, so differences under a tenth of the frame are not resolved.');
   return lines.join('\n');
@@ -387,7 +321,7 @@ function webgpuSection(webgpu) {
     `The head at ${webgpu.width}×${webgpu.height} with the module's defaults, each frame closed by a read-back, in ${webgpu.rounds} interleaved rounds of ${webgpu.frames} frames (bench/webgpu/page.js), on SwiftShader (WebGPU on its Vulkan, WebGL 2 on ANGLE): wall times of software rendering, to compare as ratios within the run only.`, '',
     '| frame | median ms | the node over its backend\'s plain frame |', '|---|---|---|',
     ...rows.map(([name, t, r]) => `| ${name} | ${t.toFixed(0)} | ${r === null ? '—' : `×${r.toFixed(2)}`} |`),
-    ...(isotropic.length === 0 ? [] : ['', 'The isotropic blur (issue 20) in the same rounds, each path against itself with one kernel (the default):', '',
+    ...(isotropic.length === 0 ? [] : ['', 'The isotropic blur (`kernelGroups: \'auto\'`) in the same rounds, each path against itself with one kernel (the default):', '',
       '| frame | median ms | over the same path with one kernel |', '|---|---|---|',
       ...isotropic.map(([name, t, r]) => `| ${name} | ${t.toFixed(0)} | ×${r.toFixed(2)} |`)])].join('\n');
 }
@@ -422,7 +356,7 @@ export function benchMarkdown(json, beyond = {}) {
     ? `On the head at 1280×720${standIn}, the default setting (footprint kernel, skin profile, samples 'auto') is within **${pct(def.rmse)}** relative RMSE of the dense 2D reference (maximum error ${def.maxError.toFixed(3)}, PSNR ${def.psnr.toFixed(1)} dB, SSIM ${def.ssim.toFixed(4)}); the reference kernel (Jimenez 2012) at 17 taps is at **${pct(ref17.rmse)}** (maximum error ${ref17.maxError.toFixed(3)}, PSNR ${ref17.psnr.toFixed(1)} dB, SSIM ${ref17.ssim.toFixed(4)})${marginal17 ? ` and the marginal kernel at ${pct(marginal17.rmse)}` : ''}. Their SSS passes took ${ms(def.gpuMs)}, ${ms(ref17.gpuMs)}${marginal17 ? ` and ${ms(marginal17.gpuMs)}` : ''} on ${device}.${autoCost}`
     : 'The default or the reference kernel at 17 taps was not measured.';
   const gpuNote = /SwiftShader/.test(device)
-    ? `**No GPU**: no GPU machine was available for this run, so there are no 1920×1080 GPU timings (issue 10's aim there: both SSS passes ≤ 0.15 ms); \`npm run bench -- --gpu\` measures them where a GPU is. These results are SwiftShader's (software WebGL 2 on ${json.machine.cores} CPU cores), so every time is a CPU time; compare them only as ratios within this run.`
+    ? `**No GPU**: no GPU machine was available for this run, so there are no 1920×1080 GPU timings (the aim there: both SSS passes ≤ 0.15 ms); \`npm run bench -- --gpu\` measures them where a GPU is. These results are SwiftShader's (software WebGL 2 on ${json.machine.cores} CPU cores), so every time is a CPU time; compare them only as ratios within this run.`
     : `Device: ${device}.`;
   const defaultNote = "The bench's default is the module's own (`PIPELINE_DEFAULTS`): the footprint kernel with `samples: 'auto'`, skin; every side-by-side frame of ours and every row marked \"(default)\" is that setting.";
   return `# Speed and accuracy
@@ -459,8 +393,6 @@ ${issueTableSection(json)}
 ${costModelSection(json)}
 
 ${featuresSection(json)}
-
-${optimizationsSection(json)}
 
 ${autoSection(results, json.module)}
 

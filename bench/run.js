@@ -13,7 +13,7 @@ import { withBenchPage, chromiumFlags } from './browser.js';
 import { autoAgainstFixed, isDefaultSetting, median, peerSummary } from './analysis.js';
 import { benchMarkdown, chartData } from './report.js';
 import { peerRounds } from './peerRun.js';
-import { ADDITIONS, FEATURES, RECOMPILING_FEATURES } from './peerPlan.js';
+import { FEATURES, RECOMPILING_FEATURES } from './peerPlan.js';
 import { gpuProcessClock } from '../dev/processClock.js';
 
 const root = join(dirname(fileURLToPath(import.meta.url)), '..');
@@ -81,7 +81,7 @@ const FULL_PEERS = [
   { width: 640, height: 360, rounds: 7, frames: 3, image: true },
 ];
 
-// --peers: the four ratios of issue 19 at both resolutions, every switch undone once per round.
+// --peers: the four ratios of issue 19 at both resolutions, each of version 0.2's additions once per round.
 const PEERS_ONLY = [
   { width: 1280, height: 720, rounds: 3, frames: 2, features: { rounds: 3, frames: 1 } },
   { width: 640, height: 360, rounds: 5, frames: 3, image: true, features: { rounds: 3, frames: 2 } },
@@ -201,21 +201,17 @@ async function runPeers(page, plan, imagePaths, clock) {
 }
 
 /**
- * What version 0.2's additions cost and what issue 10's optimizations save (FEATURES), ours stage
- * by stage, in interleaved rounds; the plain frame with each addition too (an optimization undone
- * leaves it as it is).
+ * What version 0.2's additions cost (FEATURES), ours stage by stage, in interleaved rounds; the
+ * plain frame with each addition too.
  */
 async function runFeatures(page, clock, { rounds, frames }) {
-  const measures = [null, ...FEATURES].flatMap((feature) => [
-    { measure: 'stages', feature },
-    ...(feature === null || ADDITIONS.includes(feature) ? [{ measure: 'threePlain', feature }] : []),
-  ]);
+  const measures = [null, ...FEATURES].flatMap((feature) => [{ measure: 'stages', feature }, { measure: 'threePlain', feature }]);
   const perRound = [];
   for (let round = 0; round < rounds; round++) {
     const entry = {};
     for (let k = 0; k < measures.length; k++) {
       const { measure, feature } = measures[(k + round) % measures.length];
-      // A feature that recompiles is warmed up in the timed call (its switch is undone between calls).
+      // A feature that recompiles is warmed up in the timed call (it is switched off between calls).
       const recompiles = RECOMPILING_FEATURES.includes(feature);
       if (!recompiles) await page.evaluate((o) => window.bench.peerMeasure(o), { measure, feature, frames: 0, warmUp: 1 });
       const before = clock?.nowMs();

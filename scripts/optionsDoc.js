@@ -33,9 +33,12 @@ function optionLines(schema) {
   });
 }
 
-/** Properties: the settings but the constructor's own, each always there (undefined where it has no default). */
+/**
+ * Properties: the settings but the constructor's own, each always there (undefined where it has no
+ * default); those read back as another type are the classes' own accessors.
+ */
 function settingLines(schema) {
-  return Object.entries(schema).filter(([, spec]) => spec.access !== 'constructor').map(([name, spec]) => {
+  return Object.entries(schema).filter(([, spec]) => spec.access !== 'constructor' && !spec.readType).map(([name, spec]) => {
     const type = spec.default === undefined && !spec.required ? `${typeOf(spec)}|undefined` : typeOf(spec);
     const access = spec.access === 'readonly' ? ' (read-only: given to the constructor)' : '';
     return ` * @property {${type}} ${name} ${spec.doc}${access}`;

@@ -37,7 +37,6 @@ import { PipelineMaterials } from './2-scene-split/PipelineMaterials.js';
 import { isShining, lightReachesFromBehind } from './2-scene-split/transmittanceModel.js';
 import { SubsurfaceScenePass } from './2-scene-split/SubsurfaceScenePass.js';
 import { BlurStage } from './3-blur/BlurStage.js';
-import { checkProfileCount } from './3-blur/blurPlan.js';
 import { SubsurfaceComposePass } from './4-compose/SubsurfaceComposePass.js';
 import { materialOutputOf } from './4-compose/debugViews.js';
 
@@ -100,7 +99,6 @@ export class SubsurfaceScattering extends PassWithSettings {
     // Stages 2, 3 and 4.
     /** @internal */
     this._scenePass = new SubsurfaceScenePass(o.scene, o.camera, { type: o.type, owner: this });
-    this._scenePass.diffuseCarriesDepth = true; // without MSAA: the blur's taps read light and depth in one fetch
     /** @internal */
     this._blur = new BlurStage({
       type: o.type, profileLookup: this._profileLookup, method: o.method, samples: o.samples, strength: o.strength, falloff: o.falloff, kernelGroups: o.kernelGroups,
@@ -118,7 +116,6 @@ export class SubsurfaceScattering extends PassWithSettings {
       scatteredTexture: this._blur.scatteredTarget.texture,
       depthTexture: this._scenePass.depthTexture,
     });
-    this._composePass.maskFromScattered = true; // its blur writes the mask into the scattered light's alpha
     this._composePass.setDebugView(o.debugView, { depthRange: o.debugDepthRange, thicknessRangeMm: o.debugThicknessRangeMm });
     this._composePass.setSplit(o.split);
     /** @internal The materials made subsurface through this pipeline (see makeSubsurface; `materials` is the public view). */
@@ -213,6 +210,16 @@ export class SubsurfaceScattering extends PassWithSettings {
 
   /** @internal The first light's map, or null (the tests' and the bench's handle on stage 1). */
   get _lightDepth() { return this._lightDepths[0] ?? null; }
+
+  /**
+   * The diffusion profile of the materials that name none: a preset's name or a profile object,
+   * read back as the profile object; the tables are refilled only on a change.
+   * @type {import('./options.js').DiffusionProfile}
+   */
+  get profile() { return super.profile; }
+
+  /** @param {import('./options.js').ProfileName|object} profile */
+  set profile(profile) { super.profile = profile; }
 
   /**
    * As RenderPass: the clear colour of the scene (null: the renderer's).
@@ -328,7 +335,6 @@ export class SubsurfaceScattering extends PassWithSettings {
    * @private @param {import('three').WebGLRenderer} renderer
    */
   _renderScattering(renderer) {
-    this._blur.diffuseCarriesDepth = this._scenePass.diffuseHoldsDepth; // its layout, as MSAA and the switch left it
     this._blur.render(renderer, this.camera, (stage, draw) => this._stage(stage, draw), this.plan, this._scenePass.subsurfaceBox);
   }
 
@@ -404,7 +410,7 @@ export class SubsurfaceScattering extends PassWithSettings {
    * @private
    */
   _checkProfiles(method, profiles, fallback, caller) {
-    checkProfileCount(method, profileSlots(profiles, fallback, caller).profiles.length);
+    this._blur.checkProfileCount(method, profileSlots(profiles, fallback, caller).profiles.length);
   }
 
   /**
@@ -428,7 +434,7 @@ export class SubsurfaceScattering extends PassWithSettings {
 
   /**
    * The materials made subsurface through this pipeline, each with its binding and options.
-   * @type {Map<import('three').MeshStandardMaterial, { hook: import('./2-scene-split/subsurfaceMaterial.js').SubsurfaceBinding, options: SubsurfaceMaterialOptions }>}
+   * @type {Map<import('three').MeshStandardMaterial, { hook: import('./2-scene-split/subsurfaceMaterial.js').SubsurfaceBinding, options: import('./options.js').SubsurfaceMaterialOptions }>}
    */
   get materials() { return this._subsurfaceMaterials.entries; }
 

@@ -18,27 +18,25 @@ import {
 /**
  * How the blur weighs its taps, and what each method needs:
  * - kernel: which computeKernel method builds the separable passes' taps ('marginal' or 'reference');
- * - blur: the blur stage's mode ('footprint' or 'taps' of SubsurfaceBlurPass, or 'dense' for
- *   DenseSubsurfacePass instead of the two separable passes); src/3-blur/blurPlan.js dispatches on it;
+ * - blur: the mode of SubsurfaceBlurPass ('footprint' or 'taps'); src/3-blur/blurPlan.js dispatches on it;
  * - profiles: how many profiles (materials' `profile`) it blurs in one frame: 'footprint' reads each
  *   pixel's own tables, 'marginal' its own kernel; 'reference' blurs every profile with its built-in
- *   kernel (the profile drives transmittance only); 'dense' holds one profile's table.
+ *   kernel (the profile drives transmittance only).
  * 'footprint' (default): per pixel, footprints of whole pixels weighed exactly (the sampling model,
  * item 8, in docs/ARCHITECTURE.md, "Stage 3: the sampling model"); 'marginal' and 'reference':
- * computeKernel's fixed taps ('reference' is Jimenez 2012's kernel, its profile built in); 'dense':
- * the brute-force 2D reference, for validation only (its cost grows with the square of the
- * on-screen radius).
+ * computeKernel's fixed taps ('reference' is Jimenez 2012's kernel, its profile built in). The dense
+ * 2D reference the tests and the bench validate them against is no method: internals'
+ * useDenseReference.
  */
 export const METHOD_TABLE = Object.freeze({
   footprint: Object.freeze({ kernel: 'marginal', blur: 'footprint', profiles: MAX_PROFILES }),
   marginal: Object.freeze({ kernel: 'marginal', blur: 'taps', profiles: MAX_PROFILES }),
   reference: Object.freeze({ kernel: 'reference', blur: 'taps', profiles: MAX_PROFILES }),
-  dense: Object.freeze({ kernel: 'marginal', blur: 'dense', profiles: 1 }), // the kernel only waits for a switch back
 });
 
 /**
  * How the blur weighs its taps (METHOD_TABLE).
- * @typedef {'footprint'|'marginal'|'reference'|'dense'} Method
+ * @typedef {'footprint'|'marginal'|'reference'} Method
  */
 /**
  * What a tap on another surface does (FOLLOW_SURFACE_MODES).
@@ -51,6 +49,19 @@ export const METHOD_TABLE = Object.freeze({
 /**
  * A light transmittance is drawn from.
  * @typedef {import('three').SpotLight|import('three').DirectionalLight|import('three').PointLight} TransmittingLight
+ */
+
+/**
+ * A diffusion profile as the pipeline reads it back: a preset of `profiles`, or one made by
+ * burleyProfile, dipoleProfile, gaussianSumProfile or radialProfile (src/profiles/). Distances in
+ * mm, one value per RGB channel.
+ * @typedef {object} DiffusionProfile
+ * @property {string} name
+ * @property {(rMm: number) => number[]} R the radial profile R(r)
+ * @property {(xMm: number) => number[]} marginal R integrated along a line
+ * @property {(aMm: number, bMm: number) => number[]} marginalIntegral the marginal's energy in [a, b]
+ * @property {(sMm: number) => number[]} transmittance T(s) through s mm of material
+ * @property {(fraction: number) => number[]} radiusMm the radius holding `fraction` of the energy
  */
 
 export { DEBUG_VIEWS };
@@ -135,9 +146,21 @@ export const MAX_WIDTH_MM = 1000;
  *   (default), a property read only (it sizes or binds what the constructor built: make another
  *   pipeline), or an option of the constructor only
  * @property {boolean} [webgpu] whether the WebGPU node has it too (default true)
+ * @property {string} [readType] the type it reads back as, where it differs from what it takes:
+ *   the classes declare that property themselves (TypeScript's accessors), the settings' typedefs
+ *   leave it out
  */
 
 const SCALE_RANGE = Object.freeze({ min: MIN_SCALE_MM, max: MAX_SCALE_MM, unit: 'mm' });
+
+/** A boolean setting: true or false, nothing else (a TypeError naming it). */
+const isBoolean = (value, name) => checkBoolean(name, value);
+
+/** A setting that takes a number above 0, up to `max`, in `unit` (an error naming it and the range otherwise). */
+const positive = (unit, max = Infinity) => (value, name) => checkNumber(name, value, { min: 0, minExclusive: true, max, unit });
+
+/** A setting that takes one of `list` (a RangeError naming it and the list otherwise). */
+const oneOf = (list) => (value, name) => checkOneOf(name, value, list);
 
 /** A preset's name or a profile object (getProfile throws a TypeError naming `profile` and the presets). */
 const checkProfile = (value) => getProfile(value);
@@ -185,14 +208,14 @@ export const PIPELINE_SCHEMA = Object.freeze({
     check: (value, name) => checkNumber(name, value, SCALE_RANGE),
   },
   profile: {
-    default: 'skin', type: "import('./options.js').ProfileName|object",
+    default: 'skin', type: "import('./options.js').ProfileName|object", readType: "import('./options.js').DiffusionProfile",
     doc: "a preset's name ('skin', 'skinBurley', 'marble', 'milk') or a profile object (burleyProfile, dipoleProfile, gaussianSumProfile)",
     check: checkProfile,
   },
   method: {
     default: 'footprint', type: "import('./options.js').Method",
     doc: "how the blur weighs its taps: 'footprint' (each pixel's footprint weighed exactly), 'marginal' or 'reference' (fixed taps; 'reference': Jimenez 2012's kernel); a switch between 'footprint' and the others recompiles the blur",
-    check: (value, name) => checkOneOf(name, value, METHODS),
+    check: oneOf(METHODS),
   },
   samples: {
     default: 'auto', type: "number|'auto'",
@@ -215,15 +238,15 @@ export const PIPELINE_SCHEMA = Object.freeze({
   followSurface: {
     default: 'drop', type: "import('./options.js').FollowSurfaceMode",
     doc: "a tap on another surface: 'drop' (renormalise), 'lerp' (to the centre) or 'off'",
-    check: (value, name) => checkOneOf(name, value, FOLLOW_SURFACE_MODES),
+    check: oneOf(FOLLOW_SURFACE_MODES),
   },
   depthThresholdMm: {
     default: 6, type: 'number', doc: "mm of depth step taken for another surface (close to the reference's constant at its field of view)",
-    check: (value, name) => checkNumber(name, value, { min: 0, minExclusive: true, max: MAX_SCALE_MM, unit: 'mm' }),
+    check: positive('mm', MAX_SCALE_MM),
   },
   foreshortening: {
     default: true, type: 'boolean', doc: 'narrow the blur on surfaces seen at grazing angles',
-    check: (value, name) => checkBoolean(name, value),
+    check: isBoolean,
   },
   lightDepthSize: {
     default: 1024, type: 'number', doc: 'the light depth map resolution, pixels (16..8192)',
@@ -245,24 +268,23 @@ export const PIPELINE_SCHEMA = Object.freeze({
   },
   scattering: {
     default: true, type: 'boolean', doc: 'false: no blur, the unblurred diffuse light composed (transmittance stays)',
-    check: (value, name) => checkBoolean(name, value),
+    check: isBoolean,
   },
   transmittance: {
     default: true, type: 'boolean', doc: "light through thin parts for every material (a uniform); needs `light`",
-    check: (value, name) => checkBoolean(name, value),
+    check: isBoolean,
   },
   debugView: {
-    default: 'final', type: "import('./4-compose/debugViews.js').DebugView",
+    default: 'final', type: "import('./4-compose/debugViews.js').DebugView", check: oneOf(DEBUG_VIEWS),
     doc: "the final image or one ingredient: 'final', 'diffuse', 'specular', 'depth', 'mask', and with `light` 'thickness', 'transmittance'",
-    check: (value, name) => checkOneOf(name, value, DEBUG_VIEWS),
   },
   debugDepthRange: {
     default: 10, type: 'number', doc: "world units of view depth the 'depth' view maps from white (near) to black",
-    check: (value, name) => checkNumber(name, value, { min: 0, minExclusive: true, unit: 'world units' }),
+    check: positive('world units'),
   },
   debugThicknessRangeMm: {
     default: 10, type: 'number', doc: "profile mm of thickness the 'thickness' view maps from black to white",
-    check: (value, name) => checkNumber(name, value, { min: 0, minExclusive: true, unit: 'mm' }),
+    check: positive('mm'),
   },
   split: {
     default: 0, webgpu: false, type: 'number', doc: 'the fraction of the width, from the left, shown without scattering, 0..1',
@@ -277,7 +299,7 @@ export const PIPELINE_SCHEMA = Object.freeze({
 export const MATERIAL_SCHEMA = Object.freeze({
   widthMm: {
     default: 1, type: 'number', doc: 'mm of material per profile mm, (0, 1000] (1: the profile at its physical size)',
-    check: (value, name) => checkNumber(name, value, { min: 0, minExclusive: true, max: MAX_WIDTH_MM, unit: 'mm' }),
+    check: positive('mm', MAX_WIDTH_MM),
   },
   widthScale: {
     default: 1, type: 'number', doc: 'scales the width, 0..1 (0: no scattering, the light kept)',
@@ -285,7 +307,7 @@ export const MATERIAL_SCHEMA = Object.freeze({
   },
   transmittance: {
     default: true, type: 'boolean', doc: "light through thin parts (with the pipeline's light)",
-    check: (value, name) => checkBoolean(name, value),
+    check: isBoolean,
   },
   translucency: {
     default: 0, type: 'number', doc: '0..1 (exclusive): light through regardless of thickness',
@@ -298,7 +320,7 @@ export const MATERIAL_SCHEMA = Object.freeze({
   },
   profile: {
     default: undefined, type: "import('./options.js').ProfileName|object|null",
-    doc: `this material's diffusion profile, as the pipeline's \`profile\` (left out: as before, at first the pipeline's; null: back to the pipeline's); up to ${MAX_PROFILES} per pipeline, not with method 'dense'`,
+    doc: `this material's diffusion profile, as the pipeline's \`profile\` (left out: as before, at first the pipeline's; null: back to the pipeline's); up to ${MAX_PROFILES} per pipeline`,
     // null: the pipeline's again (a rebind keeps what it leaves out, so undefined cannot say it).
     check: (value) => (value === null ? undefined : (checkProfile(value), value)), // kept as given: a material's options read back as written
   },
@@ -485,7 +507,6 @@ export function checkMaterialOptions(options = {}, previous = MATERIAL_DEFAULTS)
  * @property {import('three').Camera} camera the camera drawn with, read every frame
  * @property {TransmittingLight|TransmittingLight[]|null} light the light shining through thin parts (transmittance), or a list of up to 4, each with its own depth map (the pipeline only); null: no transmittance (assigned: a light after none turns `transmittance` on, null off)
  * @property {number} worldUnitInMm millimetres per world unit (three.js: metres, 1000)
- * @property {ProfileName|object} profile a preset's name ('skin', 'skinBurley', 'marble', 'milk') or a profile object (burleyProfile, dipoleProfile, gaussianSumProfile)
  * @property {Method} method how the blur weighs its taps: 'footprint' (each pixel's footprint weighed exactly), 'marginal' or 'reference' (fixed taps; 'reference': Jimenez 2012's kernel); a switch between 'footprint' and the others recompiles the blur
  * @property {number|'auto'} samples taps per direction, odd, 3..63 (a budget for 'footprint'); 'auto': as few as the on-screen scale needs
  * @property {number|'auto'} kernelGroups method 'footprint': 1, one separable kernel (exact along the screen axes only; the fast blur); 'auto' or 2..4: the profile's Gaussians blurred in groups, the same in every direction, each group an attachment and taps of its own ('auto': one group where one is within the isotropy budget, a far head, else 4)
@@ -509,7 +530,6 @@ export function checkMaterialOptions(options = {}, previous = MATERIAL_DEFAULTS)
  * @typedef {object} NodeSettings
  * @property {TransmittingLight|TransmittingLight[]|null} light the light shining through thin parts (transmittance), or a list of up to 4, each with its own depth map (the pipeline only); null: no transmittance (assigned: a light after none turns `transmittance` on, null off)
  * @property {number} worldUnitInMm millimetres per world unit (three.js: metres, 1000)
- * @property {ProfileName|object} profile a preset's name ('skin', 'skinBurley', 'marble', 'milk') or a profile object (burleyProfile, dipoleProfile, gaussianSumProfile)
  * @property {Method} method how the blur weighs its taps: 'footprint' (each pixel's footprint weighed exactly), 'marginal' or 'reference' (fixed taps; 'reference': Jimenez 2012's kernel); a switch between 'footprint' and the others recompiles the blur
  * @property {number|'auto'} samples taps per direction, odd, 3..63 (a budget for 'footprint'); 'auto': as few as the on-screen scale needs
  * @property {number|'auto'} kernelGroups method 'footprint': 1, one separable kernel (exact along the screen axes only; the fast blur); 'auto' or 2..4: the profile's Gaussians blurred in groups, the same in every direction, each group an attachment and taps of its own ('auto': one group where one is within the isotropy budget, a far head, else 4)
@@ -533,6 +553,6 @@ export function checkMaterialOptions(options = {}, previous = MATERIAL_DEFAULTS)
  * @property {boolean} [transmittance=true] light through thin parts (with the pipeline's light)
  * @property {number} [translucency=0] 0..1 (exclusive): light through regardless of thickness
  * @property {number} [shrinkMm=0.6] how far the light depth lookup moves inwards, mm (0..1000)
- * @property {ProfileName|object|null} [profile] this material's diffusion profile, as the pipeline's `profile` (left out: as before, at first the pipeline's; null: back to the pipeline's); up to 8 per pipeline, not with method 'dense'
+ * @property {ProfileName|object|null} [profile] this material's diffusion profile, as the pipeline's `profile` (left out: as before, at first the pipeline's; null: back to the pipeline's); up to 8 per pipeline
  */
 // </options-typedef>

@@ -121,7 +121,11 @@ let classFile = null;
 for (const file of await filesUnder('src', '.js')) {
   if (/^export class SubsurfaceScattering\b/m.test(await readFile(join(root, file), 'utf8'))) { classFile = file; break; }
 }
-const base = Object.getPrototypeOf(SubsurfaceScattering);
+// The base is three's Pass: classes between it and SubsurfaceScattering (the settings' mixin) are
+// the package's own, and their names count.
+const { Pass } = await import('three/addons/postprocessing/Pass.js');
+let base = Object.getPrototypeOf(SubsurfaceScattering);
+for (let c = base; c && c !== Function.prototype; c = Object.getPrototypeOf(c)) if (c === Pass) { base = Pass; break; }
 let baseInstance = null;
 try { baseInstance = base === Function.prototype ? null : new base(); } catch { /* prototype names only */ }
 const baseNames = new Set(baseInstance ? Object.getOwnPropertyNames(baseInstance) : []);

@@ -12,7 +12,9 @@ import {
   FloatType, NearestFilter, ShaderMaterial, WebGLRenderer, WebGLRenderTarget,
 } from 'three';
 import { EffectComposer } from 'three/addons/postprocessing/EffectComposer.js';
-import { LightDepthTarget, SubsurfaceScattering } from '/src/index.js';
+import { SubsurfaceScattering } from '/src/index.js';
+import { LightDepthTarget } from '/src/stages.js';
+import { useDenseReference } from '/src/internals.js';
 import { readRenderTargetFloats } from '/dev/readback.js';
 import { GpuStageTimer, median, sssStageTimes } from '/dev/gpuTimer.js';
 import { buildScene } from '/bench/scenes.js';
@@ -348,7 +350,8 @@ function close() {
 /**
  * One frame of the pipeline with `setting` ({ method: 'none' }: no scattering and no transmittance,
  * the light the truth scatters; or the options of SubsurfaceScattering, e.g. { method: 'footprint',
- * samples: 'auto' }, and transmittance: false to turn it off); returns the diffuse light
+ * samples: 'auto' }, transmittance: false to turn it off, denseReference: true for the dense 2D
+ * reference); returns the diffuse light
  * before and after the blur (RGBA floats, alpha: not 0 on the subsurface mask: the depth it carries).
  */
 async function renderSetting(setting) {
@@ -370,12 +373,13 @@ function pipelineOf(setting) {
   const { renderer, built, widthMm, width, height } = session;
   renderer.setSize(width, height, false);
   const none = setting.method === 'none';
-  const { transmittance = !none, ...options } = none ? {} : setting; // transmittance: the pipeline's setter
+  const { transmittance = !none, denseReference = false, ...options } = none ? {} : setting; // transmittance: the pipeline's setter
   const sss = new SubsurfaceScattering({
     scene: built.scene, camera: built.camera, light: built.light, worldUnitInMm: built.worldUnitInMm, type: FloatType, ...options,
   });
   sss.makeSubsurface(built.subsurface[0], { widthMm });
   if (none) sss.scattering = false;
+  if (denseReference) useDenseReference(sss);
   if (!transmittance && sss.transmittance) sss.transmittance = false;
   const composer = new EffectComposer(renderer, new WebGLRenderTarget(width, height, { type: FloatType }));
   composer.renderToScreen = false;

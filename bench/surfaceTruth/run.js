@@ -39,12 +39,12 @@ export const LIGHTS = [
   { name: 'front', lightAzimuthDeg: 30, lightElevationDeg: 25 },
   { name: 'back', lightAzimuthDeg: 180, lightElevationDeg: 20 },
 ];
-/** Name → SubsurfaceScattering options ({ method: 'none' }: scattering off, the effect's size). */
+/** Name → SubsurfaceScattering options ({ method: 'none' }: scattering off, the effect's size; { denseReference: true }: the dense 2D reference). */
 export const SETTINGS = [
   ['default', {}],
   ['marginal17', { method: 'marginal', samples: 17 }],
   ['reference17', { method: 'reference', samples: 17 }],
-  ['dense', { method: 'dense' }],
+  ['dense', { denseReference: true }],
   // The default with other depth rules (what crosses a depth step): creases against silhouettes.
   ['default, lerp', { followSurface: 'lerp' }],
   ['default, no depth rule', { followSurface: 'off' }],

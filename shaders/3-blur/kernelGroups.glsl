@@ -13,18 +13,18 @@
 //   tGroups0: rgb = packHalf2x16(group 1, group 2) of that channel, a = the coverage's bits;
 //   tGroups1: rgb = packHalf2x16(group 3, group 4) of that channel, a = the coverage's bits again
 //             (SSS_GROUPS > 2 only; the footprints past groups 1 and 2's reach read it alone).
-// With SSS_GROUP_DEPTH (SSS_GROUPS_CARRY_DEPTH without MSAA, where the coverage is 1 on the mask
-// and 0 off it) both alphas carry the centre's linear depth instead, as the one-kernel hand-off
-// does (shaders/common/carriedDepth.glsl: 0 off the mask): the vertical pass's taps then read no
-// surface texel (BlurStage.groupsCarryDepth).
+// With SSS_GROUPS_CARRY_DEPTH (without MSAA, where the coverage is 1 on the mask and 0 off it) both
+// alphas carry the centre's linear depth instead, as the one-kernel hand-off does
+// (shaders/common/carriedDepth.glsl: 0 off the mask): the vertical pass's taps then read no
+// surface texel with one profile.
 // The groups are four named vec3s (unused ones compiled out), never an array, and SSS_GROUPS is a
 // define with one program per count (SubsurfaceBlurPass): on SwiftShader an array of groups measured
 // 9x the one-kernel blur's time, and a uniform count's branches another 1.3x.
 
-#if SSS_GROUPS_CARRY_DEPTH == 1 && SSS_COVERAGE == 0
-	#define SSS_GROUP_DEPTH 1
+#if SSS_COVERAGE == 0
+	#define SSS_GROUPS_CARRY_DEPTH 1
 #else
-	#define SSS_GROUP_DEPTH 0
+	#define SSS_GROUPS_CARRY_DEPTH 0
 #endif
 
 uniform vec3 groupEnergies[ SSS_MAX_GROUPS * PROFILE_COUNT ]; // slot p's group g: its share of the energy, per channel, at [p * SSS_MAX_GROUPS + g]
@@ -80,12 +80,12 @@ void sssAccumulate( inout vec3 sum0, inout vec3 sum1, inout vec3 sum2, inout vec
 	layout( location = 0 ) out highp uvec4 sssGroupsOut0;
 	layout( location = 1 ) out highp uvec4 sssGroupsOut1;
 
-	// Writes the groups, premultiplied by `coverage`, and the coverage or (SSS_GROUP_DEPTH) the
+	// Writes the groups, premultiplied by `coverage`, and the coverage or (SSS_GROUPS_CARRY_DEPTH) the
 	// centre's `depth` on the mask (see the header).
 	void sssWriteGroups( const in vec3 light0, const in vec3 light1, const in vec3 light2, const in vec3 light3, const in float coverage, const in float depth ) {
 		vec3 a = light0 * coverage;
 		vec3 b = light1 * coverage;
-		#if SSS_GROUP_DEPTH == 1
+		#if SSS_GROUPS_CARRY_DEPTH == 1
 			uint alpha = floatBitsToUint( coverage > 0.0 ? sssCarriedDepth( depth ) : 0.0 );
 		#else
 			uint alpha = floatBitsToUint( coverage );
@@ -114,10 +114,10 @@ void sssAccumulate( inout vec3 sum0, inout vec3 sum1, inout vec3 sum2, inout vec
 		second = vec3( r.y, g.y, b.y );
 	}
 
-	// The coverage and the carried depth (SSS_GROUP_DEPTH; else 0) a texel's alpha holds.
+	// The coverage and the carried depth (SSS_GROUPS_CARRY_DEPTH; else 0) a texel's alpha holds.
 	float sssGroupCoverage( const in uint alpha, out float depth ) {
 		float value = uintBitsToFloat( alpha );
-		#if SSS_GROUP_DEPTH == 1
+		#if SSS_GROUPS_CARRY_DEPTH == 1
 			depth = value;
 			return sssCarriesSurface( value ) ? 1.0 : 0.0;
 		#else
@@ -126,7 +126,7 @@ void sssAccumulate( inout vec3 sum0, inout vec3 sum1, inout vec3 sum2, inout vec
 		#endif
 	}
 
-	// A texel's groups with the coverage divided out, and its carried depth (SSS_GROUP_DEPTH);
+	// A texel's groups with the coverage divided out, and its carried depth (SSS_GROUPS_CARRY_DEPTH);
 	// returns the coverage (0 off the mask, or when a group is not finite).
 	float sssGroupsAt( const in ivec2 texel, out vec3 light0, out vec3 light1, out vec3 light2, out vec3 light3, out float depth ) {
 		uvec4 packed = texelFetch( tGroups0, texel, 0 );

@@ -9,7 +9,7 @@
 // (SubsurfaceScattering.setDebugView does that).
 
 uniform sampler2D tColor;      // the multi-target's colour: specular + emissive of subsurface pixels, full colour elsewhere
-uniform sampler2D tScattered;  // the blurred diffuse light
+uniform sampler2D tScattered;  // the blurred diffuse light; alpha: the mask (not 0 on it)
 uniform sampler2D tDiffuse;    // the diffuse light before the blur; alpha: the mask (1, the coverage, or a carried depth)
 uniform sampler2D tSurface;    // r: linear view depth (world units)
 uniform sampler2D tDepth;      // the multi-target's depth texture
@@ -17,7 +17,7 @@ uniform float farDepth;        // the depth buffer's cleared value: 1 (0 with a 
 uniform float splitX;          // pixels left of this column show the unblurred diffuse light
 uniform float debugDepthRange; // world units mapped to white in the depth view
 uniform float debugThicknessRangeMm; // millimetres mapped to white in the thickness view
-uniform highp ivec4 maskBox;   // MASK_FROM_SCATTERED: the subsurface pixels lie in [xy, zw) (device pixels)
+uniform highp ivec4 maskBox;   // the subsurface pixels lie in [xy, zw) (device pixels)
 
 varying vec2 vUv;
 
@@ -32,32 +32,17 @@ void main() {
 	#endif
 	gl_FragDepth = depth;
 	vec4 light = texelFetch( tColor, pixel, 0 );
-	#if FETCH_EVERYWHERE == 1
-		// As before issue 10 (SubsurfaceComposePass.fetchesEverywhere, for the bench): every pixel
-		// reads the diffuse, the scattered light and the surface (which the compiler may drop, as it could then).
-		vec4 unscattered = texelFetch( tDiffuse, pixel, 0 );
-		bool subsurface = sssCarriesSurface( unscattered.a );
-		vec2 surface = texelFetch( tSurface, pixel, 0 ).rg;
-		vec3 diffuse = gl_FragCoord.x < splitX ? unscattered.rgb : texelFetch( tScattered, pixel, 0 ).rgb;
-	#elif MASK_FROM_SCATTERED == 1
-		// The mask from the scattered light's alpha (SubsurfaceComposePass.maskFromScattered): the
-		// blur writes its centre's coverage there, 0 off the mask and outside its box (cleared), as
-		// the diffuse alpha would say, in 8 B where the diffuse is 16. Outside `maskBox` (the
-		// subsurface pixels' screen box) nothing is fetched. The diffuse attachment is read only
-		// where its unblurred light is shown: the split's left, the thickness and transmittance views.
-		bool inBox = all( greaterThanEqual( pixel, maskBox.xy ) ) && all( lessThan( pixel, maskBox.zw ) );
-		vec4 scattered = inBox ? texelFetch( tScattered, pixel, 0 ) : vec4( 0.0 );
-		bool subsurface = sssCarriesSurface( scattered.a );
-		bool showsUnscattered = gl_FragCoord.x < splitX || DEBUG_VIEW == DEBUG_VIEW_THICKNESS || DEBUG_VIEW == DEBUG_VIEW_TRANSMITTANCE;
-		vec4 unscattered = subsurface && showsUnscattered ? texelFetch( tDiffuse, pixel, 0 ) : vec4( 0.0 );
-		vec3 diffuse = gl_FragCoord.x < splitX ? unscattered.rgb : scattered.rgb;
-	#else
-		// The mask from the diffuse attachment at every pixel; only subsurface pixels read the
-		// scattered light (most of a frame is not skin).
-		vec4 unscattered = texelFetch( tDiffuse, pixel, 0 );
-		bool subsurface = sssCarriesSurface( unscattered.a );
-		vec3 diffuse = ! subsurface ? vec3( 0.0 ) : gl_FragCoord.x < splitX ? unscattered.rgb : texelFetch( tScattered, pixel, 0 ).rgb;
-	#endif
+	// The mask from the scattered light's alpha: the blur writes its centre's coverage there, 0 off
+	// the mask and outside its box (cleared), as the diffuse alpha would say, in 8 B where the
+	// diffuse is 16. Outside `maskBox` (the subsurface pixels' screen box) nothing is fetched. The
+	// diffuse attachment is read only where its unblurred light is shown: the split's left, the
+	// thickness and transmittance views.
+	bool inBox = all( greaterThanEqual( pixel, maskBox.xy ) ) && all( lessThan( pixel, maskBox.zw ) );
+	vec4 scattered = inBox ? texelFetch( tScattered, pixel, 0 ) : vec4( 0.0 );
+	bool subsurface = sssCarriesSurface( scattered.a );
+	bool showsUnscattered = gl_FragCoord.x < splitX || DEBUG_VIEW == DEBUG_VIEW_THICKNESS || DEBUG_VIEW == DEBUG_VIEW_TRANSMITTANCE;
+	vec4 unscattered = subsurface && showsUnscattered ? texelFetch( tDiffuse, pixel, 0 ) : vec4( 0.0 );
+	vec3 diffuse = gl_FragCoord.x < splitX ? unscattered.rgb : scattered.rgb;
 	vec3 colour;
 	#if DEBUG_VIEW == DEBUG_VIEW_FINAL
 		colour = light.rgb + ( subsurface ? diffuse : vec3( 0.0 ) );

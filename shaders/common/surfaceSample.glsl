@@ -7,22 +7,22 @@
 // subsurface surfaces share a pixel, their coverage-weighted mean. Needs `tSurface`, `tDiffuse`
 // and shaders/common/finite.glsl, and PROFILE_COUNT (1: one profile, the b channel unread).
 //
-// SSS_LIGHT_DEPTH 1: the light read (`tDiffuse`) carries the depth in its alpha
+// SSS_LIGHT_CARRIES_DEPTH 1: the light read (`tDiffuse`) carries the depth in its alpha
 // (shaders/common/carriedDepth.glsl): the multi-target's diffuse without MSAA, or the horizontal
-// blur's output (SSS_WRITES_DEPTH). A tap then fetches one texel, not two (light, surface). Its rgb
+// blur's output. A tap then fetches one texel, not two (light, surface). Its rgb
 // has the coverage divided out; with SSS_COVERAGE the coverage comes from `tCoverage`'s alpha (the
 // multi-target's diffuse): one number cannot hold both. Needs shaders/common/carriedDepth.glsl.
 
-#if SSS_LIGHT_DEPTH == 1 && SSS_COVERAGE == 1
+#if SSS_LIGHT_CARRIES_DEPTH == 1 && SSS_COVERAGE == 1
 	uniform sampler2D tCoverage; // the multi-target's diffuse: its alpha is the coverage
 #endif
 
 // The coverage of a texel on the mask (SSS_COVERAGE only: without MSAA it is 1): the light's alpha,
 // or tCoverage's where the light carries the depth.
 float sssCoverageAt( const in ivec2 texel ) {
-	#if SSS_LIGHT_DEPTH == 1 && SSS_COVERAGE == 1
+	#if SSS_LIGHT_CARRIES_DEPTH == 1 && SSS_COVERAGE == 1
 		return texelFetch( tCoverage, texel, 0 ).a;
-	#elif SSS_LIGHT_DEPTH == 1
+	#elif SSS_LIGHT_CARRIES_DEPTH == 1
 		return 1.0;
 	#else
 		return texelFetch( tDiffuse, texel, 0 ).a;
@@ -49,7 +49,7 @@ vec2 sssSurfaceAt( const in ivec2 texel ) {
 // The pixel a surface pass shades.
 struct SssCentre {
 	vec3 colour;    // its diffuse light (0 if not finite), coverage divided out
-	float coverage; // 0 off subsurface pixels (or NaN), 1 on them, the MSAA coverage between (the diffuse alpha, or tCoverage's with SSS_LIGHT_DEPTH)
+	float coverage; // 0 off subsurface pixels (or NaN), 1 on them, the MSAA coverage between (the diffuse alpha, or tCoverage's with SSS_LIGHT_CARRIES_DEPTH)
 	vec2 surface;   // linear view depth and world units per profile mm, coverage divided out
 };
 
@@ -57,7 +57,7 @@ SssCentre sssCentreAt( const in ivec2 pixel ) {
 	vec4 light = texelFetch( tDiffuse, pixel, 0 );
 	SssCentre centre;
 	centre.colour = sssFinite( light.rgb ) ? light.rgb : vec3( 0.0 );
-	#if SSS_LIGHT_DEPTH == 1
+	#if SSS_LIGHT_CARRIES_DEPTH == 1
 		centre.coverage = sssCarriesSurface( light.a ) ? sssCoverageAt( pixel ) : 0.0;
 	#else
 		centre.coverage = light.a > 0.0 ? light.a : 0.0;

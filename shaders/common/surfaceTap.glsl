@@ -56,13 +56,13 @@ float sssTexelRule( const in ivec2 texel, const in float coverage, const in floa
 }
 
 // The rule's weight of the light texel `texel` (tDiffuse) for a centre expecting `expectedDepth`,
-// its colour (coverage divided out, moved by 'lerp') in `colour`. With SSS_LIGHT_DEPTH the light
+// its colour (coverage divided out, moved by 'lerp') in `colour`. With SSS_LIGHT_CARRIES_DEPTH the light
 // carries its depth (one fetch; with MSAA a second for the coverage; several profiles still read
 // the surface for the slot).
 float sssTapWeight( const in ivec2 texel, const in float expectedDepth, const in vec3 centre, out vec3 colour ) {
 	vec4 light = texelFetch( tDiffuse, texel, 0 );
 	colour = light.rgb;
-	#if SSS_LIGHT_DEPTH == 1
+	#if SSS_LIGHT_CARRIES_DEPTH == 1
 		// The light carries the depth (surfaceSample.glsl): one fetch, and with MSAA the coverage's.
 		bool onMask = sssCarriesSurface( light.a );
 	#else
@@ -73,7 +73,7 @@ float sssTapWeight( const in ivec2 texel, const in float expectedDepth, const in
 		return 0.0;
 	}
 	float farness;
-	#if SSS_LIGHT_DEPTH == 1
+	#if SSS_LIGHT_CARRIES_DEPTH == 1
 		float coverage = sssCoverageAt( texel );
 		#if PROFILE_COUNT == 1
 			float weight = sssDepthRule( light.a, expectedDepth, farness );

@@ -4,16 +4,15 @@
 // write location 0 only. So the opaque scene is drawn in two calls, each with its own draw buffers
 // and the materials of one category shown:
 //   1. opaque ordinary materials into the colour attachment only; subsurface materials are HIDDEN
-//      (their triangles clipped in the vertex shader, no fragment rasterised) or, with the depth
-//      prepass (`depthPrepass`), write DEPTH only. Shadow maps are rendered here, with every caster
+//      (their triangles clipped in the vertex shader, no fragment rasterised). Shadow maps are rendered here, with every caster
 //      present: transparent materials are drawn with colour and depth writes off, only so that
 //      they still cast shadows;
 //   2. SPLIT: subsurface materials alone into all attachments, depth-tested against call 1, so
 //      occluded subsurface fragments never reach the diffuse and surface attachments, which stay 0
 //      there: the mask is exact by construction (subsurface against subsurface: the depth test
 //      within the call, as in any opaque draw).
-// Without the prepass each subsurface object is rasterised once (issue 19); the prepass pays only
-// where subsurface objects hide much of each other (it shades each pixel's split once).
+// So each subsurface object is rasterised once (a depth prepass would pay only where subsurface
+// objects hide much of each other).
 // Transparent materials come after the compose (renderTransparent): blended over the scattered
 // image, depth-tested against the scene, exactly as three blends them over its opaque pass.
 import { Color, FloatType, HalfFloatType } from 'three';
@@ -22,7 +21,7 @@ import { getSubsurface } from './subsurfaceMaterial.js';
 import { subsurfaceScreenBox } from './subsurfaceScreenBox.js';
 import { ATTACHMENTS, DRAW_BUFFERS, DRAW_PHASES, createSubsurfaceTarget, diffuseCarriesDepth, drawingInto, setDiffuseCarriesDepth, setSurfaceChannels } from './subsurfaceTarget.js';
 import { assertFloatRenderTargets, describe } from '../support/rendererSupport.js';
-import { checkBoolean, checkOptions } from '../support/parameterChecks.js';
+import { checkOptions } from '../support/parameterChecks.js';
 import { PASS_BOOLEANS, booleanFields } from '../support/booleanFields.js';
 import { preservingRendererState } from '../support/rendererState.js';
 import { checkThreeRevision } from '../support/threeVersion.js';
@@ -81,23 +80,10 @@ export class SubsurfaceScenePass extends Pass {
      * the meshes' bounds (subsurfaceScreenBox.js): the blur is scissored to it.
      */
     this.subsurfaceBox = null;
-    /**
-     * Documented-internal switch (issue 19; the bench undoes it for one measure): true draws the
-     * subsurface materials' depth in the first call (the header's DEPTH), false (default) hides
-     * them there, so each is rasterised once. The image is the same.
-     */
-    this.depthPrepass = false;
-    /**
-     * Documented-internal switch (issue 19; the bench undoes it for one measure): with MSAA, true
-     * (default) leaves the depth of call 1 unresolved (call 2 draws on into the same samples and
-     * three resolves them after it); false lets three resolve it after call 1 as well, three
-     * times over (it blits the depth with each of the three attachments). The image is the same.
-     */
-    this.resolvesDepthOnce = true;
     /** The multi-target (see subsurfaceTarget.js for what each attachment holds). */
     this.renderTarget = createSubsurfaceTarget(type);
     this._type = type;
-    this._diffuseCarriesDepth = false;
+    this._applyDiffuseLayout();
 
     this._visibility = new Map();
     this._writes = new Map();
@@ -106,7 +92,7 @@ export class SubsurfaceScenePass extends Pass {
 
   /** The colour attachment: specular + emissive of subsurface pixels, full colour elsewhere. */
   get colorTexture() { return this.renderTarget.textures[ATTACHMENTS.COLOR]; }
-  /** The diffuse attachment: the light to scatter; alpha, the mask (or the depth: diffuseHoldsDepth). */
+  /** The diffuse attachment: the light to scatter; alpha, the depth or the coverage (diffuseCarriesDepth). */
   get diffuseTexture() { return this.renderTarget.textures[ATTACHMENTS.DIFFUSE]; }
   /** The surface attachment: linear view depth and world units per profile mm. */
   get surfaceTexture() { return this.renderTarget.textures[ATTACHMENTS.SURFACE]; }
@@ -119,25 +105,14 @@ export class SubsurfaceScenePass extends Pass {
   }
 
   /**
-   * Documented-internal switch (issue 19; SubsurfaceScattering turns it on, the bench undoes it
-   * for one measure): true has the diffuse attachment carry the depth in its alpha while the
-   * target is not multisampled (subsurfaceTarget.js's setDiffuseCarriesDepth: 32-bit float), so
-   * the blur's taps read light and depth in one fetch; false (the default, for this pass before a
-   * blur of your own): its alpha is 1, the mask. `diffuseHoldsDepth` says which layout it has.
-   * @type {boolean}
+   * Whether the diffuse attachment's alpha carries the depth (shaders/common/carriedDepth.glsl):
+   * without MSAA (32-bit float), so the blur's taps read light and depth in one fetch; with MSAA
+   * its alpha is the coverage. Either way the alpha is 0 off the mask and non-zero on it.
    */
-  get diffuseCarriesDepth() { return this._diffuseCarriesDepth; }
-
-  set diffuseCarriesDepth(enabled) {
-    this._diffuseCarriesDepth = checkBoolean('SubsurfaceScenePass.diffuseCarriesDepth', enabled);
-    this._applyDiffuseLayout();
-  }
-
-  /** Whether the diffuse attachment's alpha is the depth now (diffuseCarriesDepth without MSAA), not the mask. */
-  get diffuseHoldsDepth() { return diffuseCarriesDepth(this.renderTarget); }
+  get diffuseCarriesDepth() { return diffuseCarriesDepth(this.renderTarget); }
 
   _applyDiffuseLayout() {
-    setDiffuseCarriesDepth(this.renderTarget, this._diffuseCarriesDepth && this.renderTarget.samples === 0, this._type);
+    setDiffuseCarriesDepth(this.renderTarget, this.renderTarget.samples === 0, this._type);
   }
 
   /**
@@ -207,9 +182,9 @@ export class SubsurfaceScenePass extends Pass {
     return 0;
   }
 
-  /** Shows the materials one call draws: the first call (DEPTH or HIDDEN) every category, the others their own. */
+  /** Shows the materials one call draws: the first call (HIDDEN) every category, the others their own. */
   _show(phase, category) {
-    const first = phase === DRAW_PHASES.DEPTH || phase === DRAW_PHASES.HIDDEN;
+    const first = phase === DRAW_PHASES.HIDDEN;
     for (const [material, c] of this._categories) {
       material.visible = first || c === category;
       // In the first call transparent materials only cast shadows: they draw nothing.
@@ -263,15 +238,15 @@ export class SubsurfaceScenePass extends Pass {
         renderer.clear(true, true, true);
         gl.clearBufferfv(gl.COLOR, ATTACHMENTS.DIFFUSE, ZERO);
         gl.clearBufferfv(gl.COLOR, ATTACHMENTS.SURFACE, ZERO);
-        // 1. opaque ordinary materials (+ subsurface depth with the prepass); background and shadow maps.
+        // 1. opaque ordinary materials; background and shadow maps.
         // With MSAA three resolves the target after every render() into it, the depth once per
         // attachment: after call 1 the depth is not resolved when call 2 follows and resolves it.
         // Before r186 (no storeMultisampledDepthBuffer) three also invalidates the multisampled
         // depth it does not resolve, where it invalidates (the Oculus Browser): not there.
         const keepsDepth = 'storeMultisampledDepthBuffer' in target;
-        target.resolveDepthBuffer = !(this.resolvesDepthOnce && keepsDepth && target.samples > 0 && this.subsurfaceMeshes.length > 0);
+        target.resolveDepthBuffer = !(keepsDepth && target.samples > 0 && this.subsurfaceMeshes.length > 0);
         try {
-          this._draw(renderer, this.depthPrepass ? DRAW_PHASES.DEPTH : DRAW_PHASES.HIDDEN, DRAW_BUFFERS.COLOR_ONLY);
+          this._draw(renderer, DRAW_PHASES.HIDDEN, DRAW_BUFFERS.COLOR_ONLY);
         } finally {
           target.resolveDepthBuffer = true;
         }
@@ -319,4 +294,4 @@ export class SubsurfaceScenePass extends Pass {
   }
 }
 
-booleanFields(SubsurfaceScenePass.prototype, [...PASS_BOOLEANS, 'depthPrepass', 'resolvesDepthOnce']);
+booleanFields(SubsurfaceScenePass.prototype, PASS_BOOLEANS);

@@ -18,7 +18,6 @@
 // with the library's include resolver like every other shader.
 import { LessEqualDepth } from 'three';
 import parsGlsl from '../../shaders/2-scene-split/material/pars.glsl?raw';
-import depthOnlyGlsl from '../../shaders/2-scene-split/material/depthOnly.glsl?raw';
 import hiddenGlsl from '../../shaders/2-scene-split/material/hidden.vert.glsl?raw';
 import transmittedLightGlsl from '../../shaders/2-scene-split/material/transmittedLight.glsl?raw';
 import splitGlsl from '../../shaders/2-scene-split/material/split.glsl?raw';
@@ -107,12 +106,11 @@ function inject(source, needle, replacement) {
 function patch(material) {
   const uniforms = {
     sssSplit: { value: false },
-    sssDepthOnly: { value: false },
     sssHidden: { value: false },
     sssWidthWorld: { value: 0 },
     sssWidthScale: { value: 1 },
     sssDebugOutput: { value: 0 },
-    sssDiffuseDepth: { value: false },
+    sssDiffuseCarriesDepth: { value: false },
     sssProfileSlot: { value: 0 },
     sssTransmits: { value: false },
     ...transmittanceUniformSlots(), // the shared ones (the one-light map and matrices go unread)
@@ -132,14 +130,13 @@ function patch(material) {
     shader.defines = { ...shader.defines, ...defines };
     let fs = shader.fragmentShader;
     fs = inject(fs, 'void main() {', `${declarations}\nvoid main() {`);
-    fs = inject(fs, '#include <alphahash_fragment>', `#include <alphahash_fragment>\n${depthOnlyGlsl}`);
     fs = inject(fs, '#include <lights_fragment_end>', `#include <lights_fragment_end>\n${transmittedLightGlsl}`);
     fs = inject(fs, 'vec3 outgoingLight = totalDiffuse + totalSpecular + totalEmissiveRadiance;', splitGlsl);
     fs = inject(fs, '#include <opaque_fragment>', `${clearcoatGlsl}\n#include <opaque_fragment>`);
     fs = inject(fs, '#include <dithering_fragment>', `#include <dithering_fragment>\n${outputGlsl}`);
     shader.fragmentShader = fs;
     let vs = shader.vertexShader;
-    vs = inject(vs, 'void main() {', `uniform bool sssHidden; // true in the scene split's first call without the depth prepass\nvoid main() {\n${hiddenGlsl}`);
+    vs = inject(vs, 'void main() {', `uniform bool sssHidden; // true in the scene split's first call\nvoid main() {\n${hiddenGlsl}`);
     shader.vertexShader = vs;
   };
 
@@ -154,9 +151,8 @@ function patch(material) {
     previous.onBeforeRender.call(this, renderer, scene, camera, geometry, object, group);
     const draw = currentDraw(renderer.getRenderTarget());
     uniforms.sssSplit.value = draw.phase === DRAW_PHASES.SPLIT;
-    uniforms.sssDepthOnly.value = draw.phase === DRAW_PHASES.DEPTH;
     uniforms.sssHidden.value = draw.phase === DRAW_PHASES.HIDDEN;
-    uniforms.sssDiffuseDepth.value = draw.phase === DRAW_PHASES.SPLIT && diffuseCarriesDepth(draw.target);
+    uniforms.sssDiffuseCarriesDepth.value = draw.phase === DRAW_PHASES.SPLIT && diffuseCarriesDepth(draw.target);
     const binding = draw.owner === null ? undefined : bindings.get(draw.owner) ?? latest(bindings);
     if (binding) applyBinding(uniforms, lightSlots, binding, scene, camera);
     else uniforms.sssTransmits.value = false;
@@ -248,8 +244,7 @@ export function makeSubsurface(material, options = {}, owner = STANDALONE) {
     throw new TypeError(`makeSubsurface: material must be a THREE.MeshStandardMaterial or MeshPhysicalMaterial, got ${describe(material)}`);
   }
   refuseTransmission(material, 'makeSubsurface');
-  // With its depth prepass (scenePass.depthPrepass) the scene pass draws subsurface materials
-  // twice (depth, then everything) and relies on the second draw passing the depth test at equal depth.
+  // The split draw depth-tests subsurface against subsurface as three's opaque pass does.
   if (material.depthFunc !== LessEqualDepth) {
     throw new RangeError('makeSubsurface: material.depthFunc must be THREE.LessEqualDepth (the default) for the split draw');
   }

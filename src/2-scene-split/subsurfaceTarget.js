@@ -41,14 +41,12 @@ export const ATTACHMENT_DEFINES = Object.freeze({
 
 /**
  * What a subsurface material writes, by the scene pass's call (see SubsurfaceScenePass):
- * - DEPTH: depth only (after its alpha tests), so it occludes and casts shadows in the first call
- *   (with the depth prepass);
  * - HIDDEN: nothing (its triangles are clipped in the vertex shader), so it casts shadows in the
- *   first call and is drawn once (without the depth prepass: the default);
+ *   first call and is rasterised once, in the split;
  * - SPLIT: diffuse, colour (specular + emissive) and surface into all three attachments;
  * - PLAIN: its usual full colour, as anywhere outside the pipeline.
  */
-export const DRAW_PHASES = Object.freeze({ DEPTH: 'depth', HIDDEN: 'hidden', SPLIT: 'split', PLAIN: 'plain' });
+export const DRAW_PHASES = Object.freeze({ HIDDEN: 'hidden', SPLIT: 'split', PLAIN: 'plain' });
 
 const COLOR_ATTACHMENT0 = 0x8ce0; // gl.COLOR_ATTACHMENT0
 const NONE = 0; // gl.NONE
@@ -134,7 +132,7 @@ const PLAIN_DRAW = Object.freeze({ target: undefined, phase: DRAW_PHASES.PLAIN, 
  * Runs `draw()` with hooked materials told what to write into `target` and for which pipeline
  * (`owner`, whose per-material settings they use).
  * @param {WebGLRenderTarget|null} target the target the draw goes to (null: the screen)
- * @param {'depth'|'hidden'|'split'|'plain'} phase one of DRAW_PHASES
+ * @param {'hidden'|'split'|'plain'} phase one of DRAW_PHASES
  * @param {object} owner the pipeline drawing
  * @param {() => void} draw
  */

@@ -1,6 +1,7 @@
 // Stage 3 as the orchestrator runs it: the blur's settings (method, taps, profile, strength,
 // falloff, on or off), its plan for each frame (planBlur, pure, from these settings and the
-// scene's scale), the two separable passes and the dense reference they can be swapped for, and
+// scene's scale), the two separable passes and the dense reference the tests and the bench swap
+// them for (useDenseReference), and
 // the two targets they write (the horizontal pass's output, then the scattered light). One owner:
 // the orchestrator's frame calls `blur.plan(pixelsPerMm)` then `blur.render()`, and its setters
 // forward here. Which method does what is BLUR_MODES's (src/3-blur/blurPlan.js) and METHOD_TABLE's.
@@ -12,15 +13,11 @@ import { computeKernel, kernelRadiusMm } from '../profiles/kernel.js';
 import { getProfile } from '../profiles/presets.js';
 import { AUTO_SAMPLES, METHOD_TABLE, PIPELINE_SCHEMA, checkOption } from '../options.js';
 import { blurModeOf, checkProfileCount, planBlur } from './blurPlan.js';
-import { booleanFields } from '../support/booleanFields.js';
-import { checkBoolean } from '../support/parameterChecks.js';
-import { setDefines } from '../support/glsl.js';
 import { SubsurfaceBlurPass } from './SubsurfaceBlurPass.js';
 import { DenseSubsurfacePass } from './DenseSubsurfacePass.js';
 import { KernelGroupTable } from './KernelGroupTable.js';
-import { MAX_KERNEL_GROUPS, checkKernelGroups, kernelGroupsAt } from './kernelGroups.js';
+import { MAX_KERNEL_GROUPS, checkKernelGroups } from './kernelGroups.js';
 import { tableOf } from '../profiles/FootprintTable.js';
-import { setTextureType } from '../support/textureType.js';
 
 const TRANSPARENT_BLACK = new Float32Array(4);
 const ZERO_UINTS = new Uint32Array(4);
@@ -40,7 +37,7 @@ function createGroupTarget() {
   return target;
 }
 
-/** The dense reference's loop bound, pixels of radius (method 'dense' is for validation). */
+/** The dense reference's loop bound, pixels of radius (it is for validation). */
 const DENSE_MAX_RADIUS_PX = 256;
 
 /** What the two separable passes run for a method: footprints snapped to pixels, or fixed taps. */
@@ -52,8 +49,7 @@ const KERNEL_SETTINGS = Object.freeze(['method', 'samples', 'strength', 'falloff
 export class BlurStage {
   /**
    * @param {object} options
-   * @param {number} options.type HalfFloatType or FloatType for the scattered light (and the
-   *   horizontal pass's output when it does not carry the depth: then 32-bit float)
+   * @param {number} options.type HalfFloatType or FloatType for the scattered light
    * @param {import('../profiles/ProfileLookup.js').ProfileLookup} options.profileLookup the first
    *   profile's tables (setProfiles gives the frame's profiles)
    * @param {import('../options.js').Method} options.method
@@ -73,16 +69,13 @@ export class BlurStage {
     this._settings = { profile: profileLookup.profile, method: checkOption(PIPELINE_SCHEMA, 'method', method), samples, strength, falloff };
     this._kernels = new WeakMap(); // profile → computed kernels by their arguments: 'auto' switches between a few
     this._surface = surface;
-    this._type = type;
     // Nearest: the passes fetch texels, and a 32-bit float target stays complete without float filtering.
-    this._blurTarget = new WebGLRenderTarget(1, 1, { type: FloatType, depthBuffer: false, minFilter: NearestFilter, magFilter: NearestFilter }); // it carries the depth (lightCarriesDepth)
+    this._blurTarget = new WebGLRenderTarget(1, 1, { type: FloatType, depthBuffer: false, minFilter: NearestFilter, magFilter: NearestFilter }); // 32 bits: it carries the depth
     this._blurTarget.texture.name = 'subsurface.horizontal';
     this._kernelGroups = checkKernelGroups(kernelGroups);
     this._checkGroupsMethod(method, this._kernelGroups);
     this._groupTarget = null; // built when a grouped frame first needs it
     this._groupTable = new KernelGroupTable();
-    this._warmKey = null; // the passes' defines and the setting when the groups' programs were last drawn
-    this._warmProfiles = []; // and the slots' profiles (a profile of fewer Gaussians takes fewer groups)
     /** The scattered diffuse light, premultiplied by its coverage like the multi-target's. */
     this.scatteredTarget = new WebGLRenderTarget(1, 1, { type, depthBuffer: false });
     this.scatteredTarget.texture.name = 'subsurface.scattered';
@@ -91,16 +84,10 @@ export class BlurStage {
     this.horizontalPass = new SubsurfaceBlurPass({ ...blur, direction: 'horizontal' });
     this.verticalPass = new SubsurfaceBlurPass({ ...blur, direction: 'vertical', diffuseTexture: this._blurTarget.texture });
     this._densePass = null; // built when first asked for
+    this._dense = false; // the dense reference runs instead of the separable passes (useDenseReference)
     this._size = { width: 1, height: 1 };
     this._multisampled = false;
-    /**
-     * Documented-internal switch (issue 19; the bench undoes it for one measure): the passes are
-     * scissored to the subsurface pixels' screen box (render's `box`). false: the whole frame.
-     */
-    this.confineToSubsurface = true;
-    this._skipsEmptyTexels = true;
-    this.lightCarriesDepth = true;
-    this.groupsCarryDepth = true;
+    this._applyCarriedDepth();
     this._scissorKey = null; // the box the targets were last scissored to ('full' or x,y,w,h)
     /** The kernel the separable passes hold (computeKernel's layout). */
     this.kernel = firstKernel;
@@ -125,73 +112,16 @@ export class BlurStage {
   }
 
   /**
-   * Documented-internal switch (issue 19; the bench undoes it for one measure): true (default)
-   * fetches only the texels a tap weighs (a tap on a texel centre weighs one, not two); false
-   * fetches both, as before. The sums, and so the image, are the same.
-   * @type {boolean}
+   * Which light carries the depth in its alpha (shaders/common/carriedDepth.glsl): the
+   * multi-target's diffuse without MSAA (with it the alpha is the coverage:
+   * src/2-scene-split/subsurfaceTarget.js), read by the horizontal pass and the dense reference; and
+   * the horizontal pass's output always, read by the vertical pass (with MSAA the coverage then
+   * comes from the multi-target's diffuse).
    */
-  get skipsEmptyTexels() { return this._skipsEmptyTexels; }
-
-  set skipsEmptyTexels(enabled) {
-    this._skipsEmptyTexels = checkBoolean('BlurStage.skipsEmptyTexels', enabled);
-    for (const pass of [this.horizontalPass, this.verticalPass]) setDefines(pass.material, { SSS_SKIP_EMPTY_TEXELS: enabled ? 1 : 0 });
-  }
-
-  /**
-   * Documented-internal switch (issue 19; the bench undoes it for one measure): true (default)
-   * hands the depth from the horizontal pass to the vertical one in the light's alpha (a 32-bit
-   * float target), so each vertical tap fetches one texel instead of two (light, surface);
-   * false: the horizontal target in the pipeline's `type`, premultiplied by the coverage, as before.
-   * With a float `type` and no MSAA the image is the same to the bit (with MSAA to about an ulp:
-   * light × coverage / coverage); with a half-float `type` the light between the passes now
-   * keeps 32 bits instead of 16. Several profiles still fetch the surface per tap (the slot).
-   * @type {boolean}
-   */
-  get lightCarriesDepth() { return this.horizontalPass.writesDepth; }
-
-  set lightCarriesDepth(enabled) {
-    checkBoolean('BlurStage.lightCarriesDepth', enabled);
-    if (enabled === this.lightCarriesDepth) return;
-    this.horizontalPass.setWritesDepth(enabled);
-    this._applyCoverage();
-    if (setTextureType(this._blurTarget, this._blurTarget.texture, enabled ? FloatType : this._type)) this._scissorKey = null; // cleared again
-  }
-
-  /**
-   * Documented-internal switch (issue 20's cost; the bench undoes it for one measure): true
-   * (default) has the isotropic blur's groups carry the depth between the passes without MSAA (the
-   * group target's alphas hold it instead of the coverage, which is 1 on the mask there), so a
-   * vertical tap reads the groups' texels and, with one profile, no surface texel (several still
-   * read it for the slot); false reads the surface, as before.
-   * With MSAA the coverage is needed and the surface is read either way. The same image.
-   * @type {boolean}
-   */
-  get groupsCarryDepth() { return this.horizontalPass.groupsCarryDepth; }
-
-  set groupsCarryDepth(enabled) {
-    checkBoolean('BlurStage.groupsCarryDepth', enabled);
-    for (const pass of [this.horizontalPass, this.verticalPass]) pass.setGroupsCarryDepth(enabled);
-  }
-
-  /**
-   * Whether the multi-target's diffuse alpha is the depth (SubsurfaceScenePass.diffuseHoldsDepth,
-   * which the orchestrator hands on every frame): the horizontal pass and the dense reference then
-   * read light and depth in one fetch per tap.
-   * @type {boolean}
-   */
-  get diffuseCarriesDepth() { return this.horizontalPass.lightCarriesDepth; }
-
-  set diffuseCarriesDepth(enabled) {
-    checkBoolean('BlurStage.diffuseCarriesDepth', enabled);
-    if (enabled === this.diffuseCarriesDepth) return;
-    this.horizontalPass.setLightCarriesDepth(enabled);
-    this._densePass?.setLightCarriesDepth(enabled);
-  }
-
-  /** The vertical pass reads a carried depth (lightCarriesDepth), with MSAA the coverage from the multi-target's diffuse. */
-  _applyCoverage() {
-    const carried = this.lightCarriesDepth;
-    this.verticalPass.setLightCarriesDepth(carried, carried && this._multisampled ? this._surface.diffuseTexture : null);
+  _applyCarriedDepth() {
+    this.horizontalPass.setLightCarriesDepth(!this._multisampled);
+    this._densePass?.setLightCarriesDepth(!this._multisampled);
+    this.verticalPass.setLightCarriesDepth(true, this._multisampled ? this._surface.diffuseTexture : null);
   }
 
   /**
@@ -199,7 +129,7 @@ export class BlurStage {
    * along the screen axes only); 'auto' takes per frame one group where one is within
    * src/3-blur/kernelGroups.js's budget at the frame's largest on-screen scale (a far head), else
    * MAX_KERNEL_GROUPS (three cost about what four do); 2..4 that many. A count's programs are
-   * compiled on the first frame that may use them (_warmGroupCounts), so no later frame compiles.
+   * compiled on the first frame that draws with them, and kept (at most one pair per count).
    * @type {'auto'|number}
    */
   get kernelGroups() { return this._kernelGroups; }
@@ -222,13 +152,13 @@ export class BlurStage {
     return METHOD_TABLE[this.method].blur === 'footprint' && this._kernelGroups !== 1 ? MAX_KERNEL_GROUPS : 1;
   }
 
-  /** The dense 2D reference (method 'dense'), built on first use. */
+  /** The dense 2D reference (useDenseReference), built on first use. */
   get densePass() {
     if (!this._densePass) {
       this._densePass = new DenseSubsurfacePass({ ...this._surface, profile: this._settings.profile, maxRadiusPx: DENSE_MAX_RADIUS_PX });
       this._densePass.setSize(this._size.width, this._size.height);
       this._densePass.setMultisampled(this._multisampled);
-      this._densePass.setLightCarriesDepth(this.diffuseCarriesDepth);
+      this._densePass.setLightCarriesDepth(!this._multisampled);
     }
     return this._densePass;
   }
@@ -279,7 +209,8 @@ export class BlurStage {
       samples: this.samples,
       scattering: this.scattering,
       marginalRadiusMm: Math.max(...this.profileLookups.map((lookup) => lookup.marginalRadiusMm)),
-      denseRadiusMm: blurModeOf(this.method).passes === 'dense' ? this.densePass.radiusMm : 0,
+      dense: this._dense,
+      denseRadiusMm: this._dense ? this.densePass.radiusMm : 0,
       kernelReachMm,
       kernelGroups: this.groupCapacity > 1 ? this._kernelGroups : 1,
       profiles: this.profileLookups.map((lookup) => lookup.profile),
@@ -288,13 +219,13 @@ export class BlurStage {
 
   /**
    * Plans this frame (planBlur) and gives the separable passes the kernel of the planned count: a
-   * uniform change, never a recompile (the shaders are compiled for the mode's tap capacity).
+   * uniform change, never a recompile (the shaders are compiled for the most taps).
    * @param {number} pixelsPerMm the largest on-screen size of a profile mm this frame
    * @returns {import('./blurPlan.js').BlurPlan}
    */
   plan(pixelsPerMm) {
     const plan = planBlur(this.planSettings, pixelsPerMm);
-    if (plan.samples !== this.kernel.length / 4) this._setPassKernels(this._kernelFor(plan.samples));
+    if (plan.passes === 'separable' && plan.samples !== this.kernel.length / 4) this._setPassKernels(this._kernelFor(plan.samples));
     this.lastPlan = plan;
     return plan;
   }
@@ -313,13 +244,12 @@ export class BlurStage {
     if (this.groupCapacity > 1) this._ensureGroupTarget();
     else if (this._groupTarget) this._freeGroupTarget(); // back to one kernel: its 32 B per pixel go
     // The scissor's clears (when the box moved) are timed with the first pass.
-    const scissored = () => this._scissor(renderer, this.confineToSubsurface ? box : null);
+    const scissored = () => this._scissor(renderer, box);
     if (plan.passes === 'dense') {
       timed('dense', () => { scissored(); this.densePass.render(renderer, this.scatteredTarget, null); });
     } else {
       timed('blurH', () => {
         scissored();
-        this._warmGroupCounts(renderer);
         this.horizontalPass.render(renderer, this._horizontalTarget(plan), null);
       });
       timed('blurV', () => this.verticalPass.render(renderer, this.scatteredTarget, null));
@@ -353,7 +283,6 @@ export class BlurStage {
   _freeGroupTarget() {
     this._groupTarget.dispose();
     this._groupTarget = null;
-    this._warmKey = null;
     this._scissorKey = null;
   }
 
@@ -363,33 +292,6 @@ export class BlurStage {
     this._groupTarget = createGroupTarget();
     this._groupTarget.setSize(this._size.width, this._size.height);
     this._scissorKey = null;
-  }
-
-  /**
-   * With groups possible, the first frame (and the first after the passes' defines, kernelGroups
-   * or the slots' profiles changed) draws both passes once at the count the setting gives and
-   * once with one kernel, so both programs exist before 'auto' first picks either: no later frame
-   * compiles (test/browser/dropIn.test.js counts the programs).
-   */
-  _warmGroupCounts(renderer) {
-    if (this.groupCapacity === 1) return;
-    const key = JSON.stringify([this.horizontalPass.material.defines, this.verticalPass.material.defines, this._kernelGroups]);
-    const profiles = this.profileLookups.map((lookup) => lookup.profile);
-    if (key === this._warmKey && profiles.length === this._warmProfiles.length && profiles.every((p, i) => p === this._warmProfiles[i])) return;
-    this._warmProfiles = profiles;
-    // The count the setting gives when it groups ('auto': MAX_KERNEL_GROUPS, fewer for a profile of fewer Gaussians).
-    const count = this._kernelGroups === 'auto' ? MAX_KERNEL_GROUPS : this._kernelGroups;
-    const groupings = this.profileLookups.map((lookup) => kernelGroupsAt(lookup.profile, 1, count));
-    if (Math.max(...groupings.map((g) => g.count)) > 1) {
-      this._groupFrame(groupings);
-      this.horizontalPass.render(renderer, this._groupTarget, null);
-      this.verticalPass.render(renderer, this.scatteredTarget, null);
-    }
-    // And one kernel's (a far head's), which a first frame in groups would not have drawn.
-    for (const pass of [this.horizontalPass, this.verticalPass]) pass.setGroupFrame({ count: 1 });
-    this.horizontalPass.render(renderer, this._blurTarget, null);
-    this.verticalPass.render(renderer, this.scatteredTarget, null);
-    this._warmKey = key;
   }
 
   /**
@@ -426,7 +328,7 @@ export class BlurStage {
    * @param {readonly import('../profiles/ProfileLookup.js').ProfileLookup[]} lookups one or more
    */
   setProfiles(lookups) {
-    checkProfileCount(this.method, lookups.length);
+    this.checkProfileCount(this.method, lookups.length);
     const first = lookups[0];
     this.profileLookups = [...lookups];
     this.profileLookup = first;
@@ -446,9 +348,28 @@ export class BlurStage {
       if (options[name] === undefined) continue;
       next[name] = checkOption(PIPELINE_SCHEMA, name, options[name]);
     }
-    checkProfileCount(next.method, this.profileLookups.length);
+    this.checkProfileCount(next.method, this.profileLookups.length);
     this._checkGroupsMethod(next.method, this._kernelGroups);
     this._settingsChanged(next);
+  }
+
+  /**
+   * Refuses `count` profiles in one frame that `method` (or the dense reference, while it runs)
+   * cannot blur: checkProfileCount's RangeError.
+   * @param {import('../options.js').Method} method @param {number} count
+   */
+  checkProfileCount(method, count) {
+    checkProfileCount(method, count, this._dense);
+  }
+
+  /**
+   * Validation only: true runs the dense 2D reference (DenseSubsurfacePass) instead of the
+   * separable passes, false the passes again; a RangeError (nothing changed) with several profiles.
+   * @param {boolean} enabled
+   */
+  setDenseReference(enabled) {
+    checkProfileCount(this.method, this.profileLookups.length, enabled);
+    this._dense = enabled;
   }
 
   /** Takes `next` settings: the kernel first (a setting computeKernel refuses leaves the stage as it was), then the passes. */
@@ -481,9 +402,8 @@ export class BlurStage {
 
   /** @param {Float32Array} kernel */
   _setPassKernels(kernel) {
-    const capacity = blurModeOf(this.method).tapCapacity(kernel.length / 4, this.autoSamples);
     const slotKernels = passModeOf(this.method) === 'taps' ? this._slotKernels(kernel.length / 4) : [kernel]; // footprints read the tables
-    for (const pass of [this.horizontalPass, this.verticalPass]) pass.setKernel(kernel, capacity, slotKernels);
+    for (const pass of [this.horizontalPass, this.verticalPass]) pass.setKernel(kernel, slotKernels);
     this.kernel = kernel;
   }
 
@@ -518,7 +438,7 @@ export class BlurStage {
   setMultisampled(multisampled) {
     for (const pass of this.surfacePasses) pass.setMultisampled(multisampled);
     this._multisampled = multisampled;
-    this._applyCoverage();
+    this._applyCarriedDepth();
   }
 
   /** @param {number} width device pixels @param {number} height device pixels */
@@ -540,4 +460,17 @@ export class BlurStage {
   }
 }
 
-booleanFields(BlurStage.prototype, ['confineToSubsurface']);
+/**
+ * Validation only (the tests and the bench, through three-separable-sss/internals): has `pipeline`
+ * blur with the dense 2D reference, a brute-force 2D convolution with its one profile whose cost
+ * grows with the square of the on-screen radius, instead of its separable passes; `enabled` false
+ * puts the passes back. A RangeError (nothing changed) while its materials use several profiles.
+ * @param {{ _blur: BlurStage }} pipeline a SubsurfaceScattering
+ * @param {boolean} [enabled=true]
+ * @returns {DenseSubsurfacePass|null} the dense pass (its coverage, radius), or null when disabled
+ */
+export function useDenseReference(pipeline, enabled = true) {
+  if (typeof enabled !== 'boolean') throw new TypeError(`useDenseReference: enabled must be a boolean, got ${typeof enabled}`);
+  pipeline._blur.setDenseReference(enabled);
+  return enabled ? pipeline._blur.densePass : null;
+}

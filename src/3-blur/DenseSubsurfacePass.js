@@ -1,7 +1,7 @@
 // The dense 2D reference of the subsurface blur, as a ShaderPass: brute-force screen-space
 // convolution with the full radial profile (not separable), for validation and the speed-accuracy
 // bench, not for production (its cost grows with the square of the on-screen kernel radius).
-// It replaces the two blurs (SubsurfaceScattering's method 'dense'). Same units, mask and depth
+// It replaces the two blurs (internals' useDenseReference, for validation). Same units, mask and depth
 // rules as SubsurfaceBlurPass, through their shared base SurfacePass; see
 // shaders/3-blur/denseSubsurface.frag.glsl.
 import denseGlsl from '../../shaders/3-blur/denseSubsurface.frag.glsl?raw';

@@ -4,6 +4,8 @@
 // renormalised per channel (or lerped back to the centre colour, as in the reference).
 import { DataTexture, FloatType, GLSL3, NearestFilter, RGBAFormat, ShaderMaterial, Vector3 } from 'three';
 import blurGlsl from '../../shaders/3-blur/subsurfaceBlur.frag.glsl?raw';
+import kernelGroupsBlurGlsl from '../../shaders/3-blur/kernelGroupsBlur.frag.glsl?raw';
+import blurTapsGlsl from '../../shaders/3-blur/blurTaps.glsl?raw';
 import profileLookupGlsl from '../../shaders/common/profileLookup.glsl?raw';
 import kernelGroupsGlsl from '../../shaders/3-blur/kernelGroups.glsl?raw';
 import { kernelRadiusMm } from '../profiles/kernel.js';
@@ -11,12 +13,12 @@ import { ProfileLookup } from '../profiles/ProfileLookup.js';
 import { FootprintTable } from '../profiles/FootprintTable.js';
 import { ProfileStack } from '../profiles/ProfileStack.js';
 import { MAX_PROFILES } from '../profiles/profileSlots.js';
-import { FOOTPRINT_ROWS, FOOTPRINT_SCALES } from '../profiles/footprints.js';
+import { AUTO_MAX_SAMPLES, FOOTPRINT_ROWS, FOOTPRINT_SCALES } from '../profiles/footprints.js';
 import { enumDefines, glslFloat, setDefines } from '../support/glsl.js';
 import { checkBoolean, checkOneOf, checkOptions, checkRgb } from '../support/parameterChecks.js';
 import { describe } from '../support/rendererSupport.js';
 import { FOLLOW_SURFACE_MODES } from '../options.js';
-import { SurfacePass } from './SurfacePass.js';
+import { SurfacePass, assembleSurfaceGlsl } from './SurfacePass.js';
 import { MAX_KERNEL_GROUPS } from './kernelGroups.js';
 
 export { FOLLOW_SURFACE_MODES };
@@ -24,7 +26,15 @@ export { FOLLOW_SURFACE_MODES };
 export const KERNEL_MODES = Object.freeze(['taps', 'footprint']);
 const DIRECTIONS = Object.freeze(['horizontal', 'vertical']);
 
-const CHUNKS = Object.freeze({ 'common/profileLookup.glsl': profileLookupGlsl, '3-blur/kernelGroups.glsl': kernelGroupsGlsl });
+/**
+ * The taps the shader is compiled for: every count up to it (computeKernel's 3..63) is the
+ * `tapCount` uniform, so a change of `samples` (a slider, 'auto') never compiles another program.
+ */
+const MAX_TAPS = AUTO_MAX_SAMPLES;
+
+const CHUNKS = Object.freeze({ 'common/profileLookup.glsl': profileLookupGlsl, '3-blur/blurTaps.glsl': blurTapsGlsl });
+/** The groups' program (setGroupFrame) includes the groups' packing too. */
+const GROUP_CHUNKS = Object.freeze({ ...CHUNKS, '3-blur/kernelGroups.glsl': kernelGroupsGlsl });
 
 /** The footprint table's scales as the GLSL defines the shader reads. */
 const FOOTPRINT_DEFINES = Object.freeze({
@@ -51,7 +61,10 @@ export function footprintsOf(kernel) {
 
 /**
  * One direction of the separable subsurface blur: blurs the diffuse light of subsurface pixels
- * only, depth- and mask-aware, in physical units.
+ * only, depth- and mask-aware, in physical units. The horizontal pass writes its light with the
+ * depth in the alpha (give it a 32-bit float target) and the vertical pass reads it so (with MSAA,
+ * setLightCarriesDepth(true, the multi-target's diffuse) for the coverage); a horizontal pass over
+ * SubsurfaceScenePass's diffuse reads one fetch per tap with setLightCarriesDepth(scenePass.diffuseCarriesDepth).
  */
 export class SubsurfaceBlurPass extends SurfacePass {
   /**
@@ -66,7 +79,7 @@ export class SubsurfaceBlurPass extends SurfacePass {
    * @param {'taps'|'footprint'} [options.mode='taps'] 'taps': the kernel's weights and offsets as
    *   they are; 'footprint': per pixel, footprints of whole pixels allocated for the pixel's scale
    *   (src/profiles/footprints.js), as many taps as the kernel has, weighted by the exact marginal
-   *   energy from `profileLookup` (see shaders/3-blur/subsurfaceBlur.frag.glsl)
+   *   energy from `profileLookup` (see shaders/3-blur/blurTaps.glsl)
    * @param {ProfileLookup|null} [options.profileLookup=null] required by the 'footprint' mode
    * @param {'drop'|'lerp'|'off'} [options.followSurface='drop'] what a tap on another surface does
    * @param {number} [options.depthThresholdWorld=0.006] depth difference (world units) at which a tap
@@ -92,9 +105,9 @@ export class SubsurfaceBlurPass extends SurfacePass {
       name: `SubsurfaceBlurPass(${direction})`,
       fragmentShader: blurGlsl,
       chunks: CHUNKS,
-      defines: { AXIS: DIRECTIONS.indexOf(direction), SAMPLES: 1, SSS_SKIP_EMPTY_TEXELS: 1, SSS_WRITES_DEPTH: 0, SSS_GROUPS_CARRY_DEPTH: 0, SSS_GROUPS: 1, SSS_MAX_GROUPS: MAX_KERNEL_GROUPS, ...FOOTPRINT_DEFINES, ...enumDefines('KERNEL_MODE', KERNEL_MODES, mode) },
+      defines: { AXIS: DIRECTIONS.indexOf(direction), SAMPLES: MAX_TAPS, ...FOOTPRINT_DEFINES, ...enumDefines('KERNEL_MODE', KERNEL_MODES, mode) },
       uniforms: {
-        kernel: { value: new Float32Array(4) },
+        kernel: { value: new Float32Array(MAX_TAPS * 4) },
         tapCount: { value: 1 },
         kernelRadiusMm: { value: 0 },
         strength: { value: new Vector3(1, 1, 1) },
@@ -115,10 +128,11 @@ export class SubsurfaceBlurPass extends SurfacePass {
     this.material.glslVersion = GLSL3;
     /** This frame's groups (setGroupFrame): 1 blurs with `material`, more with its variant for that count. */
     this.groups = 1;
-    /** Whether the pass writes its light with the depth in the alpha (setWritesDepth). */
-    this.writesDepth = false;
     this._groupMaterials = new Map(); // count → the material compiled with SSS_GROUPS count
     this.direction = direction;
+    // One kernel's horizontal pass writes its light with the depth in the alpha (a 32-bit float
+    // target), so the vertical pass reads it as carried light (setLightCarriesDepth's coverage with MSAA).
+    if (direction === 'vertical') this.setLightCarriesDepth(true);
     this.mode = mode;
     /** The footprint allocation for the profile and the kernel's tap count ('footprint' mode). */
     this.footprintTable = profileLookup ? new FootprintTable(profileLookup) : null;
@@ -155,47 +169,20 @@ export class SubsurfaceBlurPass extends SurfacePass {
     this.uniforms.tGroups1.value = groups[1] ?? null;
   }
 
-  /**
-   * Whether the pass writes its light with the depth in the alpha (one kernel; the horizontal pass
-   * for a vertical one with setLightCarriesDepth): the light with the coverage divided out and the
-   * centre's linear depth as shaders/common/carriedDepth.glsl says, into a 32-bit float target.
-   * Off (the default): premultiplied by the coverage, the mask in the alpha. The groups' variants
-   * write their own target either way.
-   * @param {boolean} enabled
-   */
-  setWritesDepth(enabled) {
-    checkBoolean('SubsurfaceBlurPass.setWritesDepth enabled', enabled);
-    setDefines(this.material, { SSS_WRITES_DEPTH: enabled ? 1 : 0 });
-    this.writesDepth = enabled;
-  }
-
-  /**
-   * The isotropic blur's groups (SSS_GROUPS > 1) without MSAA: whether the group target's alphas
-   * carry the centre's depth instead of the coverage (shaders/3-blur/kernelGroups.glsl), so the
-   * vertical pass's taps read no surface texel. Both passes must agree (BlurStage sets them).
-   * @param {boolean} enabled
-   */
-  setGroupsCarryDepth(enabled) {
-    checkBoolean('SubsurfaceBlurPass.setGroupsCarryDepth enabled', enabled);
-    setDefines(this.material, { SSS_GROUPS_CARRY_DEPTH: enabled ? 1 : 0 });
-  }
-
-  /** Whether the groups carry the depth (setGroupsCarryDepth). */
-  get groupsCarryDepth() { return this.material.defines.SSS_GROUPS_CARRY_DEPTH === 1; }
-
   /** The material of this frame's groups: `material`, or its variant for the count (defines synced, uniforms shared). */
   _groupMaterial() {
     if (this.groups === 1) return this.material;
     let variant = this._groupMaterials.get(this.groups);
     if (!variant) {
-      // As ShaderPass builds `material`, sharing its uniforms (clone() would copy them, and warns
-      // at render targets' textures).
-      const { name, vertexShader, fragmentShader, glslVersion, uniforms } = this.material;
-      variant = new ShaderMaterial({ name, vertexShader, fragmentShader, glslVersion, uniforms, defines: { ...this.material.defines } });
+      // As ShaderPass builds `material`, from the groups' shader, sharing its uniforms (clone()
+      // would copy them, and warns at render targets' textures).
+      const { name, vertexShader, glslVersion, uniforms } = this.material;
+      this._groupShader ??= assembleSurfaceGlsl(name, kernelGroupsBlurGlsl, GROUP_CHUNKS);
+      variant = new ShaderMaterial({ name, vertexShader, fragmentShader: this._groupShader, glslVersion, uniforms, defines: { ...this.material.defines } });
       this._groupMaterials.set(this.groups, variant);
     }
-    // The groups have their own target: the vertical pass reads them, not a carried depth.
-    setDefines(variant, { ...this.material.defines, SSS_GROUPS: this.groups, SSS_WRITES_DEPTH: 0, ...(this.direction === 'vertical' ? { SSS_LIGHT_DEPTH: 0 } : {}) });
+    // The groups have their own target: the vertical pass reads them, not the carried light.
+    setDefines(variant, { ...this.material.defines, SSS_GROUPS: this.groups, SSS_MAX_GROUPS: MAX_KERNEL_GROUPS, ...(this.direction === 'vertical' ? { SSS_LIGHT_CARRIES_DEPTH: 0 } : {}) });
     return variant;
   }
 
@@ -250,44 +237,42 @@ export class SubsurfaceBlurPass extends SurfacePass {
   }
 
   /**
-   * @param {Float32Array} kernel see computeKernel
-   * @param {number} [tapCapacity] 'taps' mode: the most taps the shader is compiled for (at least
-   *   the kernel's); a kernel of fewer taps is then a uniform change, not a recompile, so 'auto'
-   *   can change the count every frame. 'footprint' mode: ignored (the kernel's count is the budget).
+   * A uniform change in every mode, never a recompile (the shader is compiled for MAX_TAPS).
+   * @param {Float32Array} kernel see computeKernel, at most MAX_TAPS taps ('footprint' mode: its
+   *   count is the budget)
    * @param {readonly Float32Array[]} [slotKernels] 'taps' mode with several profiles (setProfiles):
    *   each slot's kernel of the same count, `kernel` first; the shader reads slot p's from row p of
    *   a float texture instead of the `kernel` uniform
    */
-  setKernel(kernel, tapCapacity = 0, slotKernels = [kernel]) {
+  setKernel(kernel, slotKernels = [kernel]) {
     if (!(kernel instanceof Float32Array) || kernel.length < 4 || kernel.length % 4 !== 0) {
       throw new TypeError('SubsurfaceBlurPass: kernel must be a Float32Array of 4 numbers per tap (see computeKernel)');
     }
     if (!kernel.every(Number.isFinite)) throw new RangeError('SubsurfaceBlurPass: kernel holds NaN or Infinity');
+    if (kernel.length > MAX_TAPS * 4) throw new RangeError(`SubsurfaceBlurPass: kernel has ${kernel.length / 4} taps, at most ${MAX_TAPS}`);
     // Checked whole before anything changes: a refused call leaves the pass as it was.
     if (!Array.isArray(slotKernels) || slotKernels.length < 1 || slotKernels.length > MAX_PROFILES
       || !slotKernels.every((k) => k instanceof Float32Array && k.length === kernel.length && k.every(Number.isFinite))) {
       throw new TypeError(`SubsurfaceBlurPass.setKernel: slotKernels must be an array of 1..${MAX_PROFILES} finite Float32Arrays as long as kernel (${kernel.length}), one per slot, got ${describe(slotKernels)}`);
     }
-    const samples = kernel.length / 4;
-    const capacity = this.mode === 'taps' ? Math.max(samples, tapCapacity) : samples;
-    // (weight R, G, B, offset mm) per tap, zero-padded to the capacity: three uploads a flat array as is.
-    const taps = new Float32Array(capacity * 4);
+    // (weight R, G, B, offset mm) per tap, zero-padded to MAX_TAPS: three uploads a flat array as is.
+    const taps = this.uniforms.kernel.value;
+    taps.fill(0);
     taps.set(kernel);
-    this.uniforms.kernel.value = taps;
-    this.uniforms.tapCount.value = samples;
+    this.uniforms.tapCount.value = kernel.length / 4;
     this.uniforms.kernelRadiusMm.value = kernelRadiusMm(kernel);
-    setDefines(this.material, { SAMPLES: capacity });
     this.kernel = kernel;
     this.slotKernels = slotKernels;
-    if (slotKernels.length > 1) this._writeSlotKernels(slotKernels, capacity);
+    if (slotKernels.length > 1) this._writeSlotKernels(slotKernels);
     else {
       this.uniforms.tKernels.value?.dispose(); // one profile reads the kernel uniform
       this.uniforms.tKernels.value = null;
     }
   }
 
-  /** Row p of `tKernels`: slot p's kernel, zero-padded to the capacity like the uniform. */
-  _writeSlotKernels(slotKernels, capacity) {
+  /** Row p of `tKernels`: slot p's kernel, zero-padded to MAX_TAPS like the uniform. */
+  _writeSlotKernels(slotKernels) {
+    const capacity = MAX_TAPS;
     let texture = this.uniforms.tKernels.value;
     if (!texture || texture.image.width !== capacity || texture.image.height !== slotKernels.length) {
       texture?.dispose();

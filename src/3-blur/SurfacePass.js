@@ -45,6 +45,14 @@ const SURFACE_CHUNKS = Object.freeze({
   'common/surfaceTap.glsl': surfaceTapGlsl,
 });
 
+/**
+ * A surface pass's fragment shader: `source` with SURFACE_CHUNKS and `chunks` included (assembleGlsl).
+ * @param {string} name @param {string} source @param {Record<string, string>} [chunks]
+ */
+export function assembleSurfaceGlsl(name, source, chunks = {}) {
+  return assembleGlsl(name, source, { ...SURFACE_CHUNKS, ...chunks });
+}
+
 export class SurfacePass extends ShaderPass {
   /**
    * @param {object} shader
@@ -72,7 +80,7 @@ export class SurfacePass extends ShaderPass {
     }
     super({
       name,
-      defines: { ...SAMPLING_DEFINES, ...enumDefines('FOLLOW_SURFACE', FOLLOW_SURFACE_MODES, 'drop'), FORESHORTEN: 1, SSS_COVERAGE: 0, SSS_LIGHT_DEPTH: 0, PROFILE_COUNT: 1, ...defines },
+      defines: { ...SAMPLING_DEFINES, ...enumDefines('FOLLOW_SURFACE', FOLLOW_SURFACE_MODES, 'drop'), FORESHORTEN: 1, SSS_COVERAGE: 0, SSS_LIGHT_CARRIES_DEPTH: 0, PROFILE_COUNT: 1, ...defines },
       uniforms: {
         tDiffuse: { value: null },
         tSurface: { value: null },
@@ -84,7 +92,7 @@ export class SurfacePass extends ShaderPass {
         ...uniforms,
       },
       vertexShader,
-      fragmentShader: assembleGlsl(name, fragmentShader, { ...SURFACE_CHUNKS, ...chunks }),
+      fragmentShader: assembleSurfaceGlsl(name, fragmentShader, chunks),
     });
     this.uniforms.tSurface.value = surfaceTexture; // after super: ShaderPass clones the textures it is given
     /** The camera the scene was rendered with; its projection is read every frame. */
@@ -98,9 +106,9 @@ export class SurfacePass extends ShaderPass {
 
   /**
    * Whether the light this pass reads carries the depth in its alpha
-   * (shaders/common/carriedDepth.glsl: the multi-target's diffuse with
-   * SubsurfaceScenePass.diffuseHoldsDepth, or the horizontal blur's output with its
-   * setWritesDepth): each tap then fetches one texel, not two. Off (the default): the alpha is the
+   * (shaders/common/carriedDepth.glsl: the multi-target's diffuse without MSAA,
+   * SubsurfaceScenePass.diffuseCarriesDepth, or the horizontal blur's output): each tap then
+   * fetches one texel, not two. Off (the default): the alpha is the
    * mask (the coverage with MSAA) and the depth is read from the surface.
    * @param {boolean} enabled
    * @param {import('three').Texture|null} [coverage=null] with MSAA: a texture whose alpha is the
@@ -109,7 +117,7 @@ export class SurfacePass extends ShaderPass {
   setLightCarriesDepth(enabled, coverage = null) {
     checkBoolean(`${this.material.name}.setLightCarriesDepth enabled`, enabled);
     if (coverage !== null && coverage?.isTexture !== true) throw new TypeError(`${this.material.name}: setLightCarriesDepth's coverage must be a THREE.Texture or null, got ${describe(coverage)}`);
-    setDefines(this.material, { SSS_LIGHT_DEPTH: enabled ? 1 : 0 });
+    setDefines(this.material, { SSS_LIGHT_CARRIES_DEPTH: enabled ? 1 : 0 });
     this.uniforms.tCoverage.value = coverage;
     this.lightCarriesDepth = enabled;
   }

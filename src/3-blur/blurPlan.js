@@ -1,8 +1,8 @@
 // Stage 3's plan for one frame, pure (test/node/3-blur/blurPlan.test.js): which blur runs, with how many
 // taps, and how far it reaches on screen. BlurStage calls it with the settings it owns; the only
 // input from outside is the scene's scale (pixels per profile mm, src/framePlan.js's
-// estimatePixelsPerMm). BLUR_MODES is the dispatch on METHOD_TABLE's `blur` column: no method is
-// compared by name anywhere else in the stage.
+// estimatePixelsPerMm). BLUR_MODES is the dispatch on METHOD_TABLE's `blur` column (and the dense
+// reference, which validates them): no method is compared by name anywhere else in the stage.
 import { AUTO_REACH, AUTO_SAMPLES, METHOD_TABLE } from '../options.js';
 import { AUTO_MAX_SAMPLES } from '../profiles/footprints.js';
 import { MIN_KERNEL_PIXELS } from './samplingModel.js';
@@ -26,6 +26,7 @@ export function autoSampleCount(radiusPx) {
  * @property {number|'auto'} samples the taps asked for
  * @property {boolean} scattering the blur is switched on
  * @property {number} marginalRadiusMm the radius holding 99 % of the profile's marginal, mm
+ * @property {boolean} [dense=false] the dense reference runs instead of the method's passes
  * @property {number} denseRadiusMm the dense reference's reach, mm
  * @property {Readonly<Record<number, number>>} kernelReachMm the fixed-tap kernel's outermost tap,
  *   mm, for each count the plan can choose (the count asked for, or every AUTO_SAMPLES for 'auto')
@@ -51,11 +52,8 @@ export function frameGroupings(settings, pixelsPerMm) {
 }
 
 /**
- * What each blur mode of METHOD_TABLE does:
+ * What each blur mode of METHOD_TABLE, and the dense reference, does:
  * - passes: the separable pair ('separable') or the dense 2D pass ('dense');
- * - tapCapacity: the most taps the mode's shader is compiled for ('auto' changes the count per frame
- *   by a uniform below it, never by a recompile): the kernel's count for 'footprint' (its budget),
- *   the largest 'auto' count for fixed taps;
  * - autoSamples(radiusPx): the taps 'auto' takes for the on-screen radius of the marginal's 99 %;
  * - reachMm(settings, samples): how far the blur reaches, mm (below half a pixel nothing moves);
  * - groupings(settings, pixelsPerMm): the isotropic blur's groups per slot (frameGroupings), or
@@ -67,7 +65,6 @@ export const BLUR_MODES = Object.freeze({
     // Footprints choose their taps per pixel from the table (src/profiles/footprints.js): the frame
     // keeps the budget, the pixel takes what its scale needs.
     autoSamples: () => AUTO_MAX_SAMPLES,
-    tapCapacity: (samples) => samples,
     // The tail is sampled at least a pixel out: the reach is the marginal's 99 % radius.
     reachMm: (settings) => settings.marginalRadiusMm,
     groupings: frameGroupings,
@@ -75,14 +72,12 @@ export const BLUR_MODES = Object.freeze({
   taps: Object.freeze({
     passes: 'separable',
     autoSamples: autoSampleCount,
-    tapCapacity: (samples, auto) => (auto ? AUTO_SAMPLES[AUTO_SAMPLES.length - 1] : samples),
     reachMm: (settings, samples) => reachOfTaps(settings, samples),
     groupings: () => null,
   }),
   dense: Object.freeze({
     passes: 'dense',
-    autoSamples: () => AUTO_MAX_SAMPLES, // unused by the dense pass; kept for a switch back
-    tapCapacity: (samples) => samples,
+    autoSamples: () => AUTO_MAX_SAMPLES, // unused by the dense pass
     reachMm: (settings) => settings.denseRadiusMm,
     groupings: () => null,
   }),
@@ -95,21 +90,24 @@ function reachOfTaps(settings, samples) {
 }
 
 /**
- * Refuses `count` profiles in one frame for a method that blurs fewer (METHOD_TABLE's `profiles`):
- * a RangeError naming the method, the materials' `profile` and the methods that would do.
+ * Refuses `count` profiles in one frame for a method that blurs fewer (METHOD_TABLE's `profiles`),
+ * or for the dense reference, which holds one profile's table: a RangeError naming the method (or
+ * the reference), the materials' `profile` and the methods that would do.
  * @param {import('../options.js').Method} method
  * @param {number} count
+ * @param {boolean} [dense=false] the dense reference runs instead of the method
  */
-export function checkProfileCount(method, count) {
+export function checkProfileCount(method, count, dense = false) {
+  if (dense && count > 1) throw new RangeError(`SubsurfaceScattering: the dense reference blurs 1 profile per frame and the materials use ${count} (their \`profile\`); use one profile`);
   const most = METHOD_TABLE[method].profiles;
   if (count <= most) return;
   const methods = Object.keys(METHOD_TABLE).filter((m) => METHOD_TABLE[m].profiles >= count).map((m) => `'${m}'`).join(' or ');
   throw new RangeError(`SubsurfaceScattering: method '${method}' blurs ${most} profile per frame and the materials use ${count} (their \`profile\`); use method ${methods}, or one profile`);
 }
 
-/** The BLUR_MODES entry of a method. @param {import('../options.js').Method} method */
-export function blurModeOf(method) {
-  return BLUR_MODES[METHOD_TABLE[method].blur];
+/** The BLUR_MODES entry of a method, or the dense reference's. @param {import('../options.js').Method} method @param {boolean} [dense=false] */
+export function blurModeOf(method, dense = false) {
+  return dense ? BLUR_MODES.dense : BLUR_MODES[METHOD_TABLE[method].blur];
 }
 
 /**
@@ -130,7 +128,7 @@ export function blurModeOf(method) {
  * @returns {BlurPlan}
  */
 export function planBlur(settings, pixelsPerMm) {
-  const mode = blurModeOf(settings.method);
+  const mode = blurModeOf(settings.method, settings.dense);
   const samples = settings.samples === 'auto' ? mode.autoSamples(settings.marginalRadiusMm * pixelsPerMm) : settings.samples;
   const kernelPixels = mode.reachMm(settings, samples) * pixelsPerMm;
   const groupings = mode.groupings(settings, pixelsPerMm);

@@ -27,8 +27,9 @@ export class SubsurfaceComposePass extends ShaderPass {
    * @param {import('three').Texture} options.surfaceTexture the multi-target's surface attachment
    * @param {import('three').Texture} options.diffuseTexture the diffuse light before the blur; its
    *   alpha marks the mask, as 1, the coverage or a carried depth: not 0 (split view, debug views)
-   * @param {import('three').Texture|null} [options.scatteredTexture=null] the blurred diffuse light;
-   *   null reads the composer's read buffer
+   * @param {import('three').Texture|null} [options.scatteredTexture=null] the blurred diffuse light,
+   *   its alpha the mask as the diffuse's (0 off it: the blur's output, or the diffuse itself); null
+   *   reads the composer's read buffer
    * @param {import('three').DepthTexture} options.depthTexture the multi-target's depth, written
    *   out as the target's depth
    */
@@ -42,7 +43,7 @@ export class SubsurfaceComposePass extends ShaderPass {
     }
     super({
       name: 'SubsurfaceComposePass',
-      defines: { ...enumDefines('DEBUG_VIEW', DEBUG_VIEWS, DEBUG_VIEW.FINAL), KEEP_BACKGROUND: 0, FETCH_EVERYWHERE: 0, MASK_FROM_SCATTERED: 0 },
+      defines: { ...enumDefines('DEBUG_VIEW', DEBUG_VIEWS, DEBUG_VIEW.FINAL), KEEP_BACKGROUND: 0 },
       uniforms: {
         tColor: { value: null }, tScattered: { value: null }, tDiffuse: { value: null }, tSurface: { value: null },
         tDepth: { value: null }, farDepth: { value: 1 },
@@ -57,9 +58,6 @@ export class SubsurfaceComposePass extends ShaderPass {
     this.uniforms.tDiffuse.value = inputs.diffuseTexture;
     this.uniforms.tDepth.value = inputs.depthTexture;
     this.scatteredTexture = scatteredTexture;
-    this._writesDepth = true;
-    this._fetchesEverywhere = false;
-    this._maskFromScattered = false;
     this.setClear(true);
     this.debugView = DEBUG_VIEW.FINAL;
     this.split = 0;
@@ -97,54 +95,14 @@ export class SubsurfaceComposePass extends ShaderPass {
     checkBoolean('clearDepth', clearDepth);
     setDefines(this.material, { KEEP_BACKGROUND: clear ? 0 : 1 });
     this.material.depthTest = true; // depth is written only while the depth test is on
-    this.material.depthWrite = this._writesDepth;
+    this.material.depthWrite = true;
     this.material.depthFunc = clear || clearDepth ? AlwaysDepth : LessEqualDepth;
   }
 
   /**
-   * Documented-internal switch (the bench turns it off for one measure: what the depth write
-   * costs): false writes colour only, as version 0.1's compose did, and later passes find no depth.
-   * @type {boolean}
-   */
-  get writesDepth() { return this._writesDepth; }
-
-  set writesDepth(enabled) {
-    this._writesDepth = checkBoolean('writesDepth', enabled);
-    this.material.depthWrite = enabled;
-  }
-
-  /**
-   * Documented-internal switch (the bench turns it on for one measure: what fetching less saves):
-   * true reads the scattered light at every pixel and the surface always, as before issue 10.
-   * The image is the same.
-   * @type {boolean}
-   */
-  get fetchesEverywhere() { return this._fetchesEverywhere; }
-
-  set fetchesEverywhere(enabled) {
-    this._fetchesEverywhere = checkBoolean('fetchesEverywhere', enabled);
-    setDefines(this.material, { FETCH_EVERYWHERE: enabled ? 1 : 0 });
-  }
-
-  /**
-   * Documented-internal switch (issue 19; SubsurfaceScattering turns it on, the bench undoes it
-   * for one measure): true reads the mask from the scattered light's alpha (the blur's output:
-   * its centre's coverage, 0 off the mask), and nothing outside `setMaskBox`'s box, so the diffuse
-   * attachment is read only where its unblurred light is shown; false (the default, for a
-   * scattered texture of your own whose alpha may not be the mask) reads the mask from the diffuse
-   * attachment at every pixel. The image is the same.
-   * @type {boolean}
-   */
-  get maskFromScattered() { return this._maskFromScattered; }
-
-  set maskFromScattered(enabled) {
-    this._maskFromScattered = checkBoolean('maskFromScattered', enabled);
-    setDefines(this.material, { MASK_FROM_SCATTERED: enabled ? 1 : 0 });
-  }
-
-  /**
-   * With maskFromScattered: the subsurface pixels' screen box (device pixels, origin bottom left,
-   * as SubsurfaceScenePass.subsurfaceBox; null: anywhere). Outside it no pixel is taken for subsurface.
+   * The subsurface pixels' screen box (device pixels, origin bottom left, as
+   * SubsurfaceScenePass.subsurfaceBox; null: anywhere). Outside it no pixel is taken for subsurface
+   * and nothing is fetched but colour and depth.
    * @param {{ x: number, y: number, width: number, height: number }|null} box
    */
   setMaskBox(box) {

@@ -172,7 +172,7 @@ export const FOOTPRINT_ROWS = Math.round(Math.log2(FOOTPRINT_SCALES.max / FOOTPR
 
 /**
  * The row the shader reads for a pixel of scale `pxPerMm` (nearest in log scale, clamped): the
- * same arithmetic as shaders/3-blur/subsurfaceBlur.frag.glsl.
+ * same arithmetic as shaders/3-blur/blurTaps.glsl.
  * @param {number} pxPerMm
  */
 export function footprintRowOf(pxPerMm) {

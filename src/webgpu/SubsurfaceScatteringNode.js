@@ -181,6 +181,16 @@ export class SubsurfaceScatteringNode extends NodeWithSettings {
     }
   }
 
+  /**
+   * The diffusion profile of the materials that name none: a preset's name or a profile object,
+   * read back as the profile object; the tables are refilled only on a change.
+   * @type {import('../options.js').DiffusionProfile}
+   */
+  get profile() { return super.profile; }
+
+  /** @param {import('../options.js').ProfileName|object} profile */
+  set profile(profile) { super.profile = profile; }
+
   /** What the last frame found wrong with the light, one message each (empty when all is well). @type {readonly string[]} */
   get problems() { return this._lightStage.checks.current; }
 

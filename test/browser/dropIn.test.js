@@ -124,7 +124,7 @@ describe('transparent objects', () => {
 });
 
 describe('no frame recompiles a shader', () => {
-  it("'auto' changes its tap count (and the isotropic blur its groups) with the on-screen scale without a compile: the program count stays as the first frame left it", async () => {
+  it("'auto' changes its tap count with the on-screen scale without a compile: the program count stays as the first frame left it; the isotropic blur compiles its groups' pair once, on the first frame that draws them", async () => {
     const r = await page.evaluate(() => {
       const { SSS, createRenderer, createComposer, buildScene, DEFAULTS } = window.lab;
       const renderer = createRenderer(DEFAULTS.width, DEFAULTS.height);
@@ -156,8 +156,12 @@ describe('no frame recompiles a shader', () => {
     for (const [method, frames] of Object.entries(r)) {
       // The kernel grew on screen over the frames (the test moves the camera in).
       expect(Math.max(...frames.map((f) => f.kernelPixels)), method).toBeGreaterThan(frames[0].kernelPixels * 4);
-      // Every frame after the first compiled nothing.
-      for (const frame of frames) expect(frame.programs, `${method}: ${JSON.stringify(frames)}`).toBe(frames[0].programs);
+      // Every frame after the first compiled nothing (the isotropic blur: its groups' two passes, once).
+      const bound = frames[0].programs + (method === 'isotropic' ? 2 : 0);
+      frames.forEach((frame, i) => {
+        expect(frame.programs, `${method}: ${JSON.stringify(frames)}`).toBeLessThanOrEqual(bound);
+        expect(frame.programs, `${method}: ${JSON.stringify(frames)}`).toBeGreaterThanOrEqual(frames[Math.max(i - 1, 0)].programs);
+      });
     }
     // The fixed-tap methods did change their count (the footprints choose per pixel, the frame keeps 63).
     for (const method of ['marginal', 'reference']) expect(new Set(r[method].map((f) => f.samples)).size, method).toBeGreaterThan(1);

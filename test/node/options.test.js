@@ -76,3 +76,42 @@ describe('what derives from the schema', () => {
     expect(named.sort()).toEqual(Object.keys(stages).sort());
   });
 });
+
+describe('one settings layer for both renderers', () => {
+  it('the WebGL pipeline and the WebGPU node have every setting they share as a property, with the same default, the same check and the same words', async () => {
+    const { pass } = await import('three/tsl');
+    const { SubsurfaceScattering } = mainEntry;
+    const { subsurfaceScattering } = await import('../../src/webgpu/index.js');
+    const { NODE_SCHEMA, propertiesOf } = await import('../../src/options.js');
+    const scene = new Scene();
+    const camera = new PerspectiveCamera();
+    const sss = new SubsurfaceScattering({ scene, camera });
+    const node = subsurfaceScattering(pass(scene, camera));
+    const shared = propertiesOf(NODE_SCHEMA);
+    expect(shared.map(({ name }) => name)).toContain('debugDepthRange');
+    const refusal = (object, name, value) => {
+      try {
+        object[name] = value;
+      } catch (error) {
+        return `${error.constructor.name}: ${error.message}`;
+      }
+      return null;
+    };
+    for (const { name, assignable } of shared) {
+      expect(node[name], name).toEqual(sss[name]);
+      // A value no setting takes: both refuse it with the same error, naming the property as written.
+      const bad = Symbol('bad');
+      const message = refusal(sss, name, bad);
+      expect(message, name).toMatch(assignable ? new RegExp(`^\\w+Error: ${name} must be`) : /is read-only/);
+      if (assignable) expect(refusal(node, name, bad), name).toBe(message);
+      expect(node[name], name).toEqual(sss[name]); // nothing changed
+    }
+    // A value taken on both reads back alike, as the schema's check keeps it.
+    Object.assign(sss, { profile: 'marble', samples: 25, debugDepthRange: 3 });
+    Object.assign(node, { profile: 'marble', samples: 25, debugDepthRange: 3 });
+    for (const { name } of shared) expect(node[name], name).toEqual(sss[name]);
+    expect(sss.profile.name).toBe('marble');
+    node.dispose();
+    sss.dispose();
+  });
+});

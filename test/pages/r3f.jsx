@@ -9,7 +9,8 @@ import { Canvas, useThree } from '@react-three/fiber';
 import * as THREE from 'three';
 import { EffectComposer } from 'three/addons/postprocessing/EffectComposer.js';
 import { OutputPass } from 'three/addons/postprocessing/OutputPass.js';
-import { SubsurfaceScattering, getSubsurface } from 'three-separable-sss';
+import { SubsurfaceScattering } from 'three-separable-sss';
+import { getSubsurface } from 'three-separable-sss/stages';
 import { SubsurfaceComposer, Subsurface, useSubsurfaceComposer } from 'three-separable-sss/react';
 
 const WIDTH = 320;

@@ -92,6 +92,7 @@ async function cycles({ count = 20 } = {}) {
   const cycle = async (i) => {
     const t = fixtureOn(renderer, { width: WIDTH, height: HEIGHT });
     t.usePipeline({ method: SSS.METHODS[i % SSS.METHODS.length], multisampling: i % 2 ? 4 : 0 });
+    if (i % 4 === 3) SSS.useDenseReference(t.sss);
     t.sss.debugView = i % 3 === 0 ? 'final' : 'transmittance';
     const frame = await t.frame();
     t.dispose();
@@ -132,12 +133,13 @@ const CHANGES = [
   (s) => s.sss.makeSubsurface(s.material, { widthMm: 8, translucency: 0.3 }),
   (s) => Object.assign(s.sss, { profile: 'skinBurley', method: 'reference', samples: 'auto' }),
   (s) => { s.sss.debugView = 'thickness'; },
-  (s) => Object.assign(s.sss, { method: 'dense', profile: 'skin' }),
+  (s) => { s.sss.profile = 'skin'; SSS.useDenseReference(s.sss); },
   (s) => { s.sss.worldUnitInMm = 50; },
   (s) => { s.sss.clear = false; },
   (s) => { s.sss.transmittance = true; },
   (s) => {
     const { sss } = s;
+    SSS.useDenseReference(sss, false);
     Object.assign(sss, { method: 'footprint', samples: 'auto', profile: 'skin', followSurface: 'drop', depthThresholdMm: 6, debugView: 'final', split: 0 });
     sss.scattering = true;
     sss.multisampling = 'auto';

@@ -38,7 +38,7 @@ export const CALL_CASES = [
   ['profile whose transmittance is Infinity', (t) => t.make({ profile: t.changedProfile(() => ({ transmittance: () => [Infinity, 0, 0] })) }), 'TypeError', /transmittance\(.* mm\) must be a finite number in every channel, got Infinity in the red channel/],
   ['profile whose R returns a number', (t) => t.make({ profile: t.changedProfile(() => ({ R: () => 0.5 })) }), 'TypeError', /R\(.* mm\) must return \[r, g, b\], got 0\.5/],
   ['profile whose radiusMm is 0', (t) => t.make({ profile: t.changedProfile(() => ({ radiusMm: () => [0, 1, 1] })) }), 'RangeError', /radiusMm\(0\.997\) must be positive in every channel, got 0 in the red channel/],
-  ["method: 'fast'", (t) => t.make({ method: 'fast' }), 'RangeError', /method must be one of 'footprint', 'marginal', 'reference', 'dense', got "fast"/],
+  ["method: 'fast'", (t) => t.make({ method: 'fast' }), 'RangeError', /method must be one of 'footprint', 'marginal', 'reference', got "fast"/],
   ['method: 3', (t) => t.make({ method: 3 }), 'TypeError', /method must be one of .*got 3/],
   ['samples: 16', (t) => t.make({ samples: 16 }), 'RangeError', /samples must be an odd integer in 3\.\.63, got 16/],
   ['samples: 65', (t) => t.make({ samples: 65 }), 'RangeError', /samples must be an odd integer in 3\.\.63, got 65/],
@@ -137,14 +137,7 @@ export const CALL_CASES = [
   ['nine material profiles in one pipeline', (t) => {
     for (let k = 1; k <= 9; k++) t.sss.makeSubsurface(new t.THREE.MeshStandardMaterial(), { profile: t.SSS.burleyProfile({ scatterDistanceMm: [k, k, k] }) });
   }, 'RangeError', /profile: at most 8 profiles per pipeline, got 9/],
-  ["a second profile with method 'dense'", (t) => {
-    t.sss.method = 'dense';
-    t.sss.makeSubsurface(new t.THREE.MeshStandardMaterial(), { profile: 'marble' });
-  }, 'RangeError', /method 'dense' blurs 1 profile per frame and the materials use 2 \(their `profile`\); use method 'footprint' or 'marginal' or 'reference'/],
-  ["method 'dense' with two profiles", (t) => {
-    t.sss.makeSubsurface(new t.THREE.MeshStandardMaterial(), { profile: 'marble' });
-    t.sss.method = 'dense';
-  }, 'RangeError', /method 'dense' blurs 1 profile per frame and the materials use 2/],
+  ["method: 'dense' (the dense reference is internals' useDenseReference)", (t) => { t.sss.method = 'dense'; }, 'RangeError', /method must be one of 'footprint', 'marginal', 'reference', got "dense"/],
   ['a material with depthFunc changed', (t) => t.sss.makeSubsurface(new t.THREE.MeshStandardMaterial({ depthFunc: t.THREE.LessDepth })), 'RangeError', /material\.depthFunc must be THREE\.LessEqualDepth/],
   ['makeSubsurface on its own, options null', (t) => t.SSS.makeSubsurface(new t.THREE.MeshStandardMaterial(), null), 'TypeError', /makeSubsurface options must be an object, got null/],
   ['makeSubsurface on its own, a misspelt option', (t) => t.SSS.makeSubsurface(new t.THREE.MeshStandardMaterial(), { worldUnit: 10 }), 'TypeError', /unknown option "worldUnit"/],

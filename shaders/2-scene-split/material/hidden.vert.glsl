@@ -1,5 +1,4 @@
-	// The scene split's first call without the depth prepass (SubsurfaceScenePass.depthPrepass
-	// false): the object is there only to cast shadows (three renders the shadow maps in that call,
+	// The scene split's first call: the object is there only to cast shadows (three renders the shadow maps in that call,
 	// with depth materials of its own), so its triangles are put beyond the far plane and clipped
 	// whole: no fragment is rasterised, and the split call draws it once. First in main(): the
 	// vertex's shading would be thrown away.

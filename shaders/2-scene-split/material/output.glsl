@@ -7,7 +7,7 @@
 	if ( sssDebugOutput == SSS_OUTPUT_THICKNESS ) sssDiffuse = vec3( sssThicknessMm );
 	// A non-finite value would spread through the blur: keep it out.
 	if ( ! sssFinite( sssDiffuse ) ) sssDiffuse = vec3( 0.0 );
-	sssDiffuseOutput = vec4( max( sssDiffuse, vec3( 0.0 ) ), sssDiffuseDepth ? sssCarriedDepth( vViewPosition.z ) : 1.0 );
+	sssDiffuseOutput = vec4( max( sssDiffuse, vec3( 0.0 ) ), sssDiffuseCarriesDepth ? sssCarriedDepth( vViewPosition.z ) : 1.0 );
 	// b and a (several profiles only: the attachment is RG otherwise): the slot and its square, so
 	// that after an MSAA resolve a pixel two profiles share shows its slots' spread.
 	float sssSlotNumber = float( sssProfileSlot );

@@ -2,16 +2,15 @@
 // Location 0 keeps three's pc_fragColor: the colour attachment (specular + emissive while split,
 // full colour otherwise). The locations and what each channel holds come from the multi-target's
 // contract (src/2-scene-split/subsurfaceTarget.js), as defines.
-layout( location = SSS_DIFFUSE_LOCATION ) out highp vec4 sssDiffuseOutput; // diffuse light (+ transmittance); a: 1 (the mask) or the depth (sssDiffuseDepth)
+layout( location = SSS_DIFFUSE_LOCATION ) out highp vec4 sssDiffuseOutput; // diffuse light (+ transmittance); a: 1 (the mask) or the depth (sssDiffuseCarriesDepth)
 layout( location = SSS_SURFACE_LOCATION ) out highp vec4 sssSurfaceOutput; // r: linear view depth, g: world units per profile mm, b: profile slot
 
 uniform bool sssSplit;       // true only while drawn into the multi-target's split call
-uniform bool sssDepthOnly;   // true in the scene pass's first call: lay down depth, shade nothing
 uniform float sssWidthWorld; // widthMm / worldUnitInMm: world units per profile millimetre
 uniform float sssWidthScale; // 0..1, scales the width (0 = no scattering, the light kept)
 uniform int sssDebugOutput;  // what the diffuse attachment holds: SSS_OUTPUT_DIFFUSE, _TRANSMITTANCE or _THICKNESS (mm)
 uniform int sssProfileSlot;  // the material's profile slot in the drawing pipeline (src/profiles/profileSlots.js)
-uniform bool sssDiffuseDepth; // the diffuse attachment carries the depth in its alpha (subsurfaceTarget.js), else 1
+uniform bool sssDiffuseCarriesDepth; // the diffuse attachment carries the depth in its alpha (subsurfaceTarget.js), else 1
 
 #include "common/carriedDepth.glsl"
 

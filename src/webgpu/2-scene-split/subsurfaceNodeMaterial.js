@@ -18,7 +18,7 @@ import { MATERIAL_DEFAULTS, MATERIAL_SCHEMA, checkOption } from '../../options.j
 import { MATERIAL_OUTPUTS } from '../../4-compose/debugViews.js';
 import { ATTACHMENT_NAMES } from './attachments.js';
 import { transmittanceUniformNodes, transmittedLight } from './transmittanceTsl.js';
-import { finite3 } from '../3-blur/surfaceTsl.js';
+import { finite3 } from '../common/surfaceTsl.js';
 
 /** What subsurfaceMaterial(material, { ... }) accepts: the WebGL path's material options that apply per material (src/options.js). */
 const MATERIAL_OPTIONS = Object.freeze(['widthMm', 'transmittance', 'translucency', 'shrinkMm']);

@@ -14,7 +14,7 @@ import {
   LIGHT_TYPES, TRANSMITTED_LIGHT, lightUniformSlots, transmittanceUniformSlots,
 } from '../../2-scene-split/transmittanceModel.js';
 import { MATERIAL_OUTPUTS } from '../../4-compose/debugViews.js';
-import { finite3, readProfile } from '../3-blur/surfaceTsl.js';
+import { finite3, readProfile } from '../common/surfaceTsl.js';
 
 /**
  * The TSL uniforms of one material's transmittance: the WebGL chunk's slots (lightUniformSlots,

@@ -1,26 +1,28 @@
 // Stage 3 for WebGPURenderer: one direction of the separable, depth- and mask-aware subsurface
-// blur, 'footprint' kernel mode, as a TSL fragment node. A port of
-// shaders/3-blur/subsurfaceBlur.frag.glsl (its KERNEL_MODE_FOOTPRINT branch; its header states
-// the sampling model, which this follows step by step: addTap ↔ addTap, main ↔ subsurfaceBlur).
+// blur, 'footprint' kernel mode, as a TSL fragment node: the main() of
+// shaders/3-blur/subsurfaceBlur.frag.glsl (KERNEL_MODE_FOOTPRINT) and, with `groups`, of
+// kernelGroupsBlur.frag.glsl, in one builder (the groups are arrays of sums at build time, so a
+// node builds either program); the taps they share are blurTapsTsl.js, as blurTaps.glsl, whose
+// header states the sampling model this follows step by step.
 // The footprint table and the profile lookup are the WebGL path's own textures (FootprintTable,
 // ProfileLookup), filled by the same JS.
-// With `groups` it is one pass of the isotropic blur (kernelGroups.js; the GLSL's SSS_GROUPS > 1
-// branch and shaders/3-blur/kernelGroups.glsl): each footprint's energy is split between the groups
+// With `groups` it is one pass of the isotropic blur (kernelGroups.js and
+// shaders/3-blur/kernelGroups.glsl): each footprint's energy is split between the groups
 // by GroupFractionTexture; the horizontal pass writes each group to its own attachment of one
 // multi-target (halves, where the GLSL packs four groups in two integer texels), and the vertical
 // pass reads every group's texel at each tap and sums the groups, each normalised by its own weight.
 import {
-  Break, Fn, If, Loop, all, clamp, float, floor, greaterThan, int, inverseSqrt, ivec2, log2, mat4, max, min, mix, mrt, screenCoordinate,
-  select, textureLoad, vec3, vec4,
+  Break, Fn, If, Loop, all, float, greaterThan, int, ivec2, mat4, mix, mrt, screenCoordinate, select, textureLoad, vec3, vec4,
 } from 'three/tsl';
-import { FOOTPRINT_ROWS, FOOTPRINT_SCALES } from '../../profiles/footprints.js';
+import { FOOTPRINT_ROWS } from '../../profiles/footprints.js';
 import { ENERGY_LEFT, MIN_KERNEL_PIXELS } from '../../3-blur/samplingModel.js';
 import {
-  along, finite3, finite1, readProfile, screenScale, surfaceSample, surfaceSlope, surfaceTap, withAlong,
-} from './surfaceTsl.js';
+  along, finite3, readProfile, screenScale, surfaceSample, surfaceSlope, surfaceTap,
+} from '../common/surfaceTsl.js';
+import { axisStep, footprintRow, footprintStep, tapAdder } from './blurTapsTsl.js';
 
 /**
- * Each channel of `sum` over its weight, `fallback` where nothing was kept (kernelGroups.glsl's
+ * Each channel of `sum` over its weight, `fallback` where nothing was kept (kernelGroupsBlur.frag.glsl's
  * sssNormalised; scalar selects: GLSL has no ternary over a bvec3).
  */
 const normalised = (sum, weightSum, fallback) => vec3(
@@ -68,38 +70,9 @@ export function subsurfaceBlurNode(o) {
   const partsOf = (weight, column, row) => sumGroups.map((g) => (g === null ? weight
     : weight.mul(textureLoad(groups.fractions, ivec2(column, row.add(g * FOOTPRINT_ROWS))).rgb)));
 
-  // Adds one tap at `offsetPx` along the axis, each sum with its part (`parts`) of the kernel
-  // weight; texels are compared with the depth the centre's plane predicts there: centreDepth +
-  // slope * (texel offset).
-  const addTap = (offsetPx, parts, pixel, centreDepth, slope, centres, sums, weightSums) => {
-    const position = float(along(pixel, axis)).add(0.5).add(offsetPx).toVar();
-    If(position.greaterThanEqual(0).and(position.lessThan(resolutionAlong)), () => {
-      const u0 = position.sub(0.5);
-      const below = floor(u0);
-      const fraction = u0.sub(below).toVar();
-      const last = int(resolutionAlong).sub(1);
-      const at0 = clamp(int(below), 0, last).toVar();
-      const at1 = clamp(int(below).add(1), 0, last).toVar();
-      const offset0 = float(at0.sub(along(pixel, axis)));
-      const offset1 = float(at1.sub(along(pixel, axis)));
-      const tap0 = tapWeight(withAlong(pixel, axis, at0), centreDepth.add(slope.mul(offset0)), centres);
-      const weight0 = fraction.oneMinus().mul(tap0.weight).toVar();
-      // A tap on a texel centre weighs its second texel 0: not fetched (subsurfaceBlur.frag.glsl's
-      // SSS_SKIP_EMPTY_TEXELS; the same sums).
-      const weight1 = float(0).toVar();
-      const colours1 = lights.map(() => vec3(0).toVar());
-      If(fraction.greaterThan(0), () => {
-        const tap1 = tapWeight(withAlong(pixel, axis, at1), centreDepth.add(slope.mul(offset1)), centres);
-        weight1.assign(fraction.mul(tap1.weight));
-        colours1.forEach((colour, k) => colour.assign(tap1.colours[k]));
-      });
-      const kept = weight0.add(weight1);
-      If(kept.greaterThan(0), () => {
-        sums.forEach((sum, k) => sum.addAssign(parts[k].mul(tap0.colours[lightOf(k)].mul(weight0).add(colours1[lightOf(k)].mul(weight1)))));
-        weightSums.forEach((weightSum, k) => weightSum.addAssign(parts[k].mul(kept)));
-      });
-    });
-  };
+  const addTap = tapAdder({ axis, lights, lightOf, tapWeight, resolutionAlong });
+  const stepAt = axisStep({ axis, scale, slopeAt, foreshorten: o.foreshorten });
+  const footprintAt = footprintStep({ footprints: o.footprints, profileAt, marginalRangeMm: u.marginalRangeMm, blocks });
 
   const splits = axis === 0 && groups; // the horizontal pass in groups: one output per group
   const call = Fn(() => {
@@ -120,19 +93,11 @@ export function subsurfaceBlurNode(o) {
     const results = unsplit.map((light) => vec4(light, 0).toVar());
     If(coverage.greaterThan(0), () => {
       const surface = centre.surface;
-      const stepPx = along(scale.pixelsPerMm(surface), axis).toVar();
-      const slope = float(0).toVar(); // depth change per pixel along the axis, world units
-      if (o.foreshorten) {
-        const pixelWorld = along(scale.pixelWorld(surface), axis).toVar();
-        slope.assign(slopeAt(pixel, surface, pixelWorld));
-        const tilt = slope.div(pixelWorld);
-        stepPx.mulAssign(inverseSqrt(tilt.mul(tilt).add(1))); // cos(theta)
-      }
+      const { stepPx, slope } = stepAt(pixel, surface); // slope: depth change per pixel along the axis, world units
       results.forEach((result, k) => result.assign(sample.covered(unsplit[k], coverage)));
       // Below half a pixel the kernel cannot move light to another pixel: no work.
       If(stepPx.mul(u.kernelRadiusMm).greaterThanEqual(MIN_KERNEL_PIXELS), () => {
-        // The table row nearest this pixel's scale (src/profiles/footprints.js's footprintRowOf).
-        const row = clamp(int(floor(log2(stepPx.div(FOOTPRINT_SCALES.min)).mul(FOOTPRINT_SCALES.perOctave).add(0.5))), 0, FOOTPRINT_ROWS - 1).toVar();
+        const row = footprintRow(stepPx);
         // The centre pixel is its own footprint: |x| < 0.5 px.
         const energyBelow = profileAt(1, float(0.5).div(stepPx), u.marginalRangeMm).toVar();
         const centreParts = partsOf(energyBelow.mul(2), 0, row);
@@ -145,17 +110,8 @@ export function subsurfaceBlurNode(o) {
         const lastEdge = int(0).toVar(); // pixels; footprint j covers lastEdge + 1 .. edge on each side
         Loop({ start: int(0), end: int(blocks), type: 'int', condition: '<=' }, ({ i: j }) => {
           If(all(greaterThan(energyBelow, vec3(0.5 - ENERGY_LEFT))), () => { Break(); }); // nothing left
-          const footprint = textureLoad(o.footprints, ivec2(j, row)).xy.toVar(); // outer edge, sample offset (mm)
-          // The last footprint runs to the kernel's end and takes all the energy left.
-          const last = j.equal(blocks).or(finite1(footprint.x).not()).toVar();
-          const snapped = max(int(floor(select(last, float(0), footprint.x).mul(stepPx).add(0.5))), lastEdge.add(1));
-          const edge = select(last, lastEdge.add(1), snapped).toVar();
-          const energy = select(last, vec3(0.5), profileAt(1, float(edge).add(0.5).div(stepPx), u.marginalRangeMm)).toVar();
-          const weight = energy.sub(energyBelow).toVar();
+          const { last, edge, energy, weight, offsetPx } = footprintAt(j, row, stepPx, energyBelow, lastEdge);
           const parts = partsOf(weight, j.add(1), row).map((part) => vec3(part).toVar());
-          // Sampled where the table says, kept inside the footprint as snapped at this pixel's scale.
-          const inside = max(footprint.y.mul(stepPx), float(lastEdge.add(1)));
-          const offsetPx = select(last, inside, min(inside, float(edge))).toVar();
           addTap(offsetPx, parts, pixel, surface.x, slope, centres, sums, weightSums);
           addTap(offsetPx.negate(), parts, pixel, surface.x, slope, centres, sums, weightSums);
           if (splits) {

@@ -7,7 +7,7 @@
 // tells them: src/webgpu/2-scene-split/subsurfaceNodeMaterial.js).
 import { Fn, If, float, ivec2, screenCoordinate, select, textureLoad, uniform, vec3, vec4 } from 'three/tsl';
 import { DEBUG_VIEW, DEBUG_VIEWS } from '../../4-compose/debugViews.js';
-import { finite3 } from '../3-blur/surfaceTsl.js';
+import { finite3 } from '../common/surfaceTsl.js';
 
 /** The uniform the compose reads: a view's position in DEBUG_VIEWS, compared by name below. */
 export const debugViewUniform = () => uniform(DEBUG_VIEWS.indexOf(DEBUG_VIEW.FINAL), 'int');

@@ -88,9 +88,8 @@ export function radialBlur(image, width, height, profile, s, { x0 = 0, x1 = widt
  * The canvas across the axis of a step edge or a grating along x or y, pixels: the pattern is
  * constant across it, so a strip gives the row (or column) through the centre exactly as a square
  * would (taps across it fall on the same value, dropped or kept alike at the strip's ends), at a
- * sixteenth of the square's pixels. Only for a separable blur, which blurs along the pattern first:
- * the dense 2D pass would weigh each row by a disc cut at the strip's ends (grating() gives it a
- * square; no case runs it today).
+ * sixteenth of the square's pixels. Only for a separable blur, which blurs along the pattern first
+ * (the dense 2D reference would weigh each row by a disc cut at the strip's ends).
  */
 const STRIP = 16;
 
@@ -114,7 +113,7 @@ const canvasFor = (angleDeg, s = Infinity) => {
  */
 export function accuracyMeasures(flat) {
   /** Measured transfer per frequency and channel, and its worst difference from `expected(f)`. */
-  async function grating({ profile, s, angleDeg = 0, sss = {}, size = sss.method === 'dense' ? canvasFor(45, s) : canvasFor(angleDeg, s), expected = (f) => transferOf(profile, f) }) {
+  async function grating({ profile, s, angleDeg = 0, sss = {}, size = canvasFor(angleDeg, s), expected = (f) => transferOf(profile, f) }) {
     const [width, height] = size;
     const frequencies = frequenciesAt(s);
     const phases = frequencies.map((_, k) => 0.7 * k);

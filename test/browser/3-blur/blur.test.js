@@ -261,9 +261,9 @@ describe('energy and HDR', () => {
 });
 
 describe('strength', () => {
-  it('strength 0 on a material turns scattering off and keeps its diffuse light', async () => {
+  it('widthScale 0 on a material turns scattering off and keeps its diffuse light', async () => {
     const common = { scene: 'slab', pattern: 'noise', type: 'float', widthMm: 2 };
-    const off = await runLab(page, { ...common, material: { strength: 0 }, reads: ['output'] });
+    const off = await runLab(page, { ...common, material: { widthScale: 0 }, reads: ['output'] });
     const plain = await runLab(page, { ...common, pipeline: 'plain' });
     let worst = 0;
     for (let i = 0; i < off.output.length; i++) worst = Math.max(worst, Math.abs(off.output[i] - plain.output[i]));
@@ -335,7 +335,7 @@ describe('the depth carried in the light (one fetch per tap)', () => {
           scattered: Array.from(await read(renderer, sss._blur.scatteredTarget)),
           depthAlpha: (await read(renderer, sss._scenePass.renderTarget, 1))[((height >> 1) * width + (width >> 1)) * 4 + 3],
           horizontalAlpha: (await read(renderer, sss._blur._blurTarget))[((height >> 1) * width + (width >> 1)) * 4 + 3],
-          carries: sss._scenePass.diffuseHoldsDepth,
+          carries: sss._scenePass.diffuseCarriesDepth,
           blur: sss.plan.blur,
         };
         sss.dispose();

@@ -2,6 +2,9 @@
 // (src/3-blur/blurPlan.js); BlurStage's plan reads only its own settings. The counts are worked
 // out by hand from the rules in blurPlan.js's comments.
 import { describe, it, expect } from 'vitest';
+import { PerspectiveCamera, Texture } from 'three';
+import { SubsurfaceBlurPass } from '../../../src/3-blur/SubsurfaceBlurPass.js';
+import { ProfileLookup } from '../../../src/profiles/ProfileLookup.js';
 import { planBlur, autoSampleCount, BLUR_MODES, blurModeOf } from '../../../src/3-blur/blurPlan.js';
 import { AUTO_SAMPLES, AUTO_REACH, METHODS, METHOD_TABLE } from '../../../src/options.js';
 import { AUTO_MAX_SAMPLES } from '../../../src/profiles/footprints.js';
@@ -42,14 +45,26 @@ describe('planBlur', () => {
     for (const n of AUTO_SAMPLES) expect(autoSampleCount((((n - 3) / 2) / AUTO_REACH) * (1 - 1e-9))).toBe(n);
   });
 
-  it("'dense' runs the dense pass and reaches its own radius", () => {
-    expect(planBlur({ ...base, method: 'dense', samples: 'auto' }, 2)).toMatchObject({ kernelPixels: 14, blur: true, passes: 'dense' });
+  it('the dense reference runs the dense pass, whatever the method, and reaches its own radius', () => {
+    for (const method of METHODS) expect(planBlur({ ...base, method, dense: true, samples: 'auto' }, 2)).toMatchObject({ kernelPixels: 14, blur: true, passes: 'dense' });
   });
 
-  it("the fixed-tap modes are compiled for the largest 'auto' count, so a change of count is a uniform change", () => {
-    expect(BLUR_MODES.taps.tapCapacity(5, true)).toBe(AUTO_SAMPLES[AUTO_SAMPLES.length - 1]);
-    expect(BLUR_MODES.taps.tapCapacity(17, false)).toBe(17);
-    expect(BLUR_MODES.footprint.tapCapacity(63, true)).toBe(63);
+  it('every count of taps, in either mode, is a uniform change: the pass is compiled for the most taps', () => {
+    const camera = new PerspectiveCamera();
+    const pass = new SubsurfaceBlurPass({ direction: 'horizontal', kernel: computeKernel({ samples: 9, profile: profiles.skin }), camera, surfaceTexture: new Texture(), profileLookup: new ProfileLookup(profiles.skin) });
+    const defines = JSON.stringify(pass.material.defines);
+    for (const mode of ['taps', 'footprint']) {
+      pass.setMode(mode);
+      const modeDefines = JSON.stringify(pass.material.defines);
+      for (const samples of [3, 17, AUTO_MAX_SAMPLES]) {
+        pass.setKernel(computeKernel({ samples, profile: profiles.skin }));
+        expect(JSON.stringify(pass.material.defines)).toBe(modeDefines);
+        expect(pass.uniforms.tapCount.value).toBe(samples);
+      }
+    }
+    expect(pass.material.defines.SAMPLES).toBe(AUTO_MAX_SAMPLES);
+    expect(defines).toContain(`"SAMPLES":${AUTO_MAX_SAMPLES}`);
+    pass.dispose();
   });
 
   it('a real kernel reach is its outermost tap', () => {
@@ -69,8 +84,8 @@ describe('planBlur', () => {
     expect(near.groupings.map((g) => g.count)).toEqual([MAX_KERNEL_GROUPS, MAX_KERNEL_GROUPS]); // marble has four Gaussians
     expect(planBlur({ ...grouped, kernelGroups: 1 }, 5)).toMatchObject(oneKernel);
     expect(planBlur({ ...grouped, kernelGroups: 2 }, 5).groups).toBe(2);
-    for (const method of ['marginal', 'dense']) {
-      expect(planBlur({ ...grouped, method, samples: 17 }, 5)).toMatchObject(oneKernel);
+    for (const setting of [{ method: 'marginal' }, { dense: true }]) {
+      expect(planBlur({ ...grouped, ...setting, samples: 17 }, 5)).toMatchObject(oneKernel);
     }
   });
 });

@@ -18,7 +18,7 @@ describe('the sampling model', () => {
   });
 
   it('is cited, not restated, by the README, src/options.js, the blur shader and the oracle', () => {
-    for (const path of ['README.md', 'src/options.js', 'shaders/3-blur/subsurfaceBlur.frag.glsl', 'test/oracle/convolution.js']) {
+    for (const path of ['README.md', 'src/options.js', 'shaders/3-blur/blurTaps.glsl', 'test/oracle/convolution.js']) {
       const text = read(path).replace(/\s+(\/\/|\*)?\s*/g, ' ');
       expect(text, path).toMatch(/ARCHITECTURE\.md/);
       expect(text, path).toMatch(/Stage 3: the sampling model|stage-3-the-sampling-model/);

@@ -46,13 +46,13 @@ describe('a pipeline with materials of several profiles', () => {
     expect(frameOf(sss, [plain, named])).toEqual({ count: 1, channels: 2, slots: [0, 0], transmits: ['marble', 'marble'] });
   });
 
-  it("refuses what method 'dense' cannot blur and leaves the pipeline as it was", () => {
+  it('refuses what the dense reference cannot blur and leaves the pipeline as it was', () => {
     t = createFixture(THREE, SSS);
     const { sss, material: plain } = t;
     const named = new THREE.MeshStandardMaterial();
     sss.makeSubsurface(named, { profile: 'skin' });
-    sss.method = 'dense';
-    expect(() => { sss.profile = 'marble'; }).toThrow(/method 'dense' blurs 1 profile per frame and the materials use 2/);
+    SSS.useDenseReference(sss);
+    expect(() => { sss.profile = 'marble'; }).toThrow(/the dense reference blurs 1 profile per frame and the materials use 2/);
     expect(sss.profile.name).toBe('skin');
     expect(() => sss.makeSubsurface(named, { profile: 'milk' })).toThrow(RangeError);
     expect(frameOf(sss, [plain, named])).toEqual({ count: 1, channels: 2, slots: [0, 0], transmits: ['skin', 'skin'] });
@@ -81,6 +81,8 @@ describe('a pipeline with materials of several profiles', () => {
     expect(() => { sss.profile = 'jelly'; }).toThrow(/profile/);
     expect([sss.profile.name, sss.method]).toEqual(['skin', 'footprint']);
     sss.makeSubsurface(new THREE.MeshStandardMaterial(), { profile: 'marble' });
+    expect(() => SSS.useDenseReference(sss)).toThrow(/the dense reference blurs 1 profile per frame and the materials use 2/);
+    expect([sss.profile.name, sss.method, sss.plan?.passes ?? 'separable']).toEqual(['skin', 'footprint', 'separable']);
     for (const name of ['skin', 'milk', 'skinBurley']) sss.makeSubsurface(new THREE.MeshStandardMaterial(), { profile: name });
     for (let i = 0; i < 4; i++) sss.makeSubsurface(new THREE.MeshStandardMaterial(), { profile: SSS.burleyProfile({ name: `b${i}`, scatterDistanceMm: [1, 0.5, 0.3 + i / 10] }) });
     // Eight now (the fixture's material follows the pipeline's skin): a ninth by the pipeline's profile, or by a material.

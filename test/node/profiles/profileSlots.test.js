@@ -31,14 +31,15 @@ describe('profileSlots', () => {
 });
 
 describe('checkProfileCount', () => {
-  it("lets 'footprint', 'marginal' and 'reference' blur several profiles and refuses 'dense' more than one", () => {
+  it("lets 'footprint', 'marginal' and 'reference' blur several profiles and the dense reference one", () => {
     const several = METHODS.filter((method) => { try { checkProfileCount(method, 2); return true; } catch { return false; } });
     expect(several).toEqual(['footprint', 'marginal', 'reference']);
-    for (const method of METHODS) expect(() => checkProfileCount(method, 1)).not.toThrow();
+    for (const method of METHODS) expect(() => checkProfileCount(method, 1, true)).not.toThrow();
+    for (const method of METHODS) expect(() => checkProfileCount(method, 2, true)).toThrow(RangeError);
     expect(() => checkProfileCount('footprint', MAX_PROFILES + 1)).toThrow(RangeError);
   });
 
-  it('names the method, the materials\' profile and the methods that would do', () => {
-    expect(() => checkProfileCount('dense', 3)).toThrow(/method 'dense' blurs 1 profile per frame and the materials use 3 \(their `profile`\); use method 'footprint' or 'marginal' or 'reference'/);
+  it('names the dense reference and the materials\' profile', () => {
+    expect(() => checkProfileCount('footprint', 3, true)).toThrow(/the dense reference blurs 1 profile per frame and the materials use 3 \(their `profile`\); use one profile/);
   });
 });

@@ -1,11 +1,8 @@
-// Issue 19's savings and their switches (the bench undoes each for one measure): the scene split
-// without the depth prepass (each subsurface object rasterised once), the blur scissored to the
-// subsurface pixels' screen box, the compose fetching less, the light depth pass skipped while
-// unread, the blur fetching only the texels its taps weigh, the depth carried in the diffuse
-// attachment and handed between the blur passes in the light, the compose's mask from the scattered
-// light, and with MSAA the depth resolved once. Each switch must leave the image as it is: every variant is held against the frame with
-// every saving on, float read-backs, and the ordinary pixels against a plain three.js frame (the
-// shadows cast by and onto subsurface objects kept).
+// The pipeline's frame against itself and against a plain three.js frame, on a scene with what
+// the shipped savings are about (a subsurface box smaller than the frame, one subsurface sphere half
+// hidden by another, shadows cast by and onto them, MSAA, a transparent pane): the ordinary pixels
+// are three's, the box moving between frames leaves the same floats, and with MSAA the resolved
+// depth is the scene's. Float read-backs.
 import { describe, it, expect, beforeAll, afterAll } from 'vitest';
 import { openPage, evaluateFloats, closeCheckedPage } from '../harness/page.js';
 
@@ -16,8 +13,8 @@ afterAll(() => closeCheckedPage(page));
 /**
  * In the page: a subsurface sphere (noise albedo) over an ordinary floor, a second subsurface
  * sphere half hidden behind it, an ordinary box in front of both; a directional light casting
- * shadows. Renders it through the pipeline once per variant (switches set on a fresh pipeline;
- * `moved`: one frame with the spheres elsewhere first, so the box moves between frames) and once
+ * shadows. Renders it through the pipeline once per variant (a fresh pipeline; `settings` assigned
+ * to it; `moved`: one frame with the spheres elsewhere first, so the box moves between frames) and once
  * with a plain RenderPass; reads the outputs, the scattered light and the diffuse attachment.
  */
 function renderVariants(variants) {
@@ -57,17 +54,13 @@ function renderVariants(variants) {
   const pane = new THREE.Mesh(new THREE.PlaneGeometry(3, 1.2), new THREE.MeshBasicMaterial({ color: 0x44ff88, transparent: true, opacity: 0.5 }));
   pane.position.set(0.4, 0.2, -0.5);
 
-  const frame = async ({ switches = {}, moved = false, multisampling = 0, withPane = multisampling > 0 }) => {
+  const frame = async ({ settings = {}, moved = false, multisampling = 0, withPane = multisampling > 0 }) => {
     const composer = createComposer(renderer, { type: THREE.FloatType });
     if (withPane) scene.add(pane);
     const sss = new SSS.SubsurfaceScattering({ scene, camera, worldUnitInMm: 100, type: THREE.FloatType, light, multisampling });
     for (const m of [skin, skinBehind]) sss.makeSubsurface(m);
     composer.addPass(sss);
-    const targets = { scene: sss._scenePass, blur: sss._blur, compose: sss._composePass, pipeline: sss };
-    for (const [key, value] of Object.entries(switches)) {
-      const [owner, field] = key.split('.');
-      targets[owner][field] = value;
-    }
+    Object.assign(sss, settings);
     if (moved) {
       subsurface.forEach((m) => m.position.x += 1.5);
       composer.render();
@@ -81,8 +74,6 @@ function renderVariants(variants) {
       box: sss._scenePass.subsurfaceBox,
       blur: sss.plan.blur,
       groups: sss.plan.groups,
-      // The groups' programs (both passes) as compiled: whether they carry the depth.
-      groupsCarry: [sss._blur.horizontalPass, sss._blur.verticalPass].flatMap((pass) => [...pass._groupMaterials.values()].map((m) => m.defines.SSS_GROUPS_CARRY_DEPTH)),
     };
     sss.dispose();
     composer.dispose();
@@ -109,35 +100,17 @@ function renderVariants(variants) {
 }
 
 const VARIANTS = {
-  saving: {},
-  depthPrepass: { switches: { 'scene.depthPrepass': true } },
-  fullFrameBlur: { switches: { 'blur.confineToSubsurface': false } },
-  composeAsBefore: { switches: { 'compose.fetchesEverywhere': true } },
-  lightDepthEveryFrame: { switches: { 'pipeline.skipsUnreadLightDepth': false } },
-  bothTexelsFetched: { switches: { 'blur.skipsEmptyTexels': false } },
-  depthFromSurface: { switches: { 'blur.lightCarriesDepth': false } },
-  maskInDiffuse: { switches: { 'scene.diffuseCarriesDepth': false } },
-  neitherCarriesDepth: { switches: { 'scene.diffuseCarriesDepth': false, 'blur.lightCarriesDepth': false } },
-  maskFromDiffuse: { switches: { 'compose.maskFromScattered': false } },
+  base: {},
   moved: { moved: true },
-  // With MSAA 4, against the MSAA frame with every saving.
-  msaa: { multisampling: 4, base: true },
-  msaaWithoutPane: { multisampling: 4, withPane: false, base: true },
-  msaaDepthResolvedTwice: { multisampling: 4, switches: { 'scene.resolvesDepthOnce': false } },
-  // Premultiplied between the passes, as before: (light × coverage) / coverage is the light to
-  // about an ulp, not exactly (ROUNDED).
-  msaaDepthFromSurface: { multisampling: 4, switches: { 'blur.lightCarriesDepth': false }, rounded: true },
-  msaaMaskFromDiffuse: { multisampling: 4, switches: { 'compose.maskFromScattered': false } },
-  // The isotropic blur (four groups), against its own frame: the groups' depth from the surface.
-  isotropic: { switches: { 'pipeline.kernelGroups': 4 }, base: true },
-  isotropicDepthFromSurface: { switches: { 'pipeline.kernelGroups': 4, 'blur.groupsCarryDepth': false }, against: 'isotropic' },
-  msaaIsotropic: { multisampling: 4, switches: { 'pipeline.kernelGroups': 4 }, base: true },
-  msaaIsotropicDepthFromSurface: { multisampling: 4, switches: { 'pipeline.kernelGroups': 4, 'blur.groupsCarryDepth': false }, against: 'msaaIsotropic' },
+  // With MSAA 4 (and the pane, but for one).
+  msaa: { multisampling: 4 },
+  msaaWithoutPane: { multisampling: 4, withPane: false },
+  msaaMoved: { multisampling: 4, moved: true },
+  // The isotropic blur (four groups).
+  isotropic: { settings: { kernelGroups: 4 } },
+  isotropicMoved: { settings: { kernelGroups: 4 }, moved: true },
+  msaaIsotropic: { multisampling: 4, settings: { kernelGroups: 4 } },
 };
-/** What a rounded variant may differ by, relative to the lit level (float32: a few ulps). */
-const ROUNDED = 1e-6;
-/** The frame a variant is held against: the MSAA one with every saving for MSAA variants. */
-const baseOf = (name) => VARIANTS[name].against ?? (VARIANTS[name].multisampling > 0 ? 'msaa' : 'saving');
 
 const maxDifference = (a, b) => {
   let worst = 0;
@@ -145,43 +118,34 @@ const maxDifference = (a, b) => {
   return worst;
 };
 
-describe('issue 19: each saving leaves the image as it is', () => {
+describe('the pipeline frame: its box, and its ordinary pixels as three draws them', () => {
   let r;
   beforeAll(async () => { r = await evaluateFloats(page, renderVariants, VARIANTS); });
 
   it('the scene has what the savings are about: a box smaller than the frame, blur on, no GL error', () => {
     expect(r.glError).toBe(0);
-    expect(r.saving.blur).toBe(true);
-    const { box } = r.saving;
+    expect(r.base.blur).toBe(true);
+    const { box } = r.base;
     expect(box).not.toBeNull(); // null would mean the whole frame: the scissor would not be tested
     expect(box.width * box.height).toBeLessThan(0.6 * r.width * r.height);
     expect(box.width * box.height).toBeGreaterThan(0.05 * r.width * r.height);
-    // Every subsurface pixel (diffuse alpha > 0) lies inside the box.
+    // Every subsurface pixel (diffuse alpha not 0) lies inside the box.
     for (let y = 0; y < r.height; y++) for (let x = 0; x < r.width; x++) {
-      if (!(r.saving.diffuse[(y * r.width + x) * 4 + 3] > 0)) continue;
+      if (r.base.diffuse[(y * r.width + x) * 4 + 3] === 0) continue;
       expect(x >= box.x && x < box.x + box.width && y >= box.y && y < box.y + box.height).toBe(true);
     }
   });
 
-  it.each(Object.keys(VARIANTS).filter((k) => k !== 'saving' && !VARIANTS[k].base))('%s: the output and the scattered light as with every saving', (name) => {
-    // The same shaders on the same inputs: the same floats (a scissor or a depth prepass changes
-    // which fragments run, not what they compute).
-    const base = r[baseOf(name)];
-    const tolerance = VARIANTS[name].rounded ? ROUNDED * Math.max(...base.scattered) : 0;
-    expect(maxDifference(r[name].output, base.output)).toBeLessThanOrEqual(tolerance);
-    expect(maxDifference(r[name].scattered, base.scattered)).toBeLessThanOrEqual(tolerance);
-    if (VARIANTS[name].rounded) expect(Math.max(...base.scattered)).toBeGreaterThan(0.05); // lit: the tolerance is not 0 by accident
+  it.each([['moved', 'base'], ['msaaMoved', 'msaa'], ['isotropicMoved', 'isotropic']])('%s: a box that moved between frames leaves the floats of %s', (name, base) => {
+    // The scissor's clears when the box moves: the same shaders on the same inputs, the same floats.
+    expect(maxDifference(r[name].output, r[base].output)).toBe(0);
+    expect(maxDifference(r[name].scattered, r[base].scattered)).toBe(0);
   });
 
-  it('the isotropic variants blur in four groups (what groupsCarryDepth is about), and differ from one kernel', () => {
-    for (const name of ['isotropic', 'isotropicDepthFromSurface', 'msaaIsotropic', 'msaaIsotropicDepthFromSurface']) expect(r[name].groups, name).toBe(4);
-    // The switch reaches the groups' own programs, which are what the comparison is about (with
-    // MSAA the shader ignores it: the coverage is needed there, and the variant checks that).
-    expect(r.isotropic.groupsCarry.length).toBeGreaterThanOrEqual(2);
-    expect(r.isotropic.groupsCarry.every((v) => v === 1)).toBe(true);
-    expect(r.isotropicDepthFromSurface.groupsCarry.every((v) => v === 0)).toBe(true);
-    expect(r.saving.groups).toBe(1);
-    expect(maxDifference(r.isotropic.scattered, r.saving.scattered)).toBeGreaterThan(1e-3);
+  it('the isotropic frames blur in four groups, and differ from one kernel', () => {
+    for (const name of ['isotropic', 'msaaIsotropic']) expect(r[name].groups, name).toBe(4);
+    expect(r.base.groups).toBe(1);
+    expect(maxDifference(r.isotropic.scattered, r.base.scattered)).toBeGreaterThan(1e-3);
   });
 
   it('with MSAA, the transparent pane is hidden behind the front sphere and seen over the floor (the depth resolved once is the scene\'s)', () => {
@@ -201,11 +165,11 @@ describe('issue 19: each saving leaves the image as it is', () => {
     expect(frontUnchanged / front).toBeGreaterThan(0.97); // antialiased rims aside
   });
 
-  it('without the depth prepass, ordinary pixels are the plain three.js frame (shadows cast by the subsurface spheres kept)', () => {
-    const { output, diffuse } = r.saving;
+  it('ordinary pixels are the plain three.js frame (each subsurface object drawn once, shadows cast by the subsurface spheres kept)', () => {
+    const { output, diffuse } = r.base;
     let ordinary = 0, worst = 0, shadowed = 0;
     for (let i = 0; i < output.length; i += 4) {
-      if (diffuse[i + 3] > 0) continue;
+      if (diffuse[i + 3] !== 0) continue;
       ordinary++;
       for (let c = 0; c < 3; c++) worst = Math.max(worst, Math.abs(output[i + c] - r.plain[i + c]) / Math.max(r.plain[i + c], 1e-3));
       if (r.plain[i] > 0 && r.plain[i] < 0.5 * r.plain[(5 * r.width + 5) * 4]) shadowed++; // floor darker than near the corner (lit)
