@@ -30,7 +30,9 @@ import { withSettings } from './support/settings.js';
 import { stopWatching, warnWhenDisabledFreezes, watchRendered } from './support/frozenFrameWatch.js';
 import { PASS_BOOLEANS, booleanFields } from './support/booleanFields.js';
 import { FrameChecks, checkTargetSize, checkTargetLimits } from './support/frameChecks.js';
-import { PIPELINE_SCHEMA, checkNeedsLight, checkPipelineOptions, lightsOf, propertiesOf } from './options.js';
+import {
+  CAST_SHADOW, MAX_LIGHTS, PIPELINE_SCHEMA, checkNeedsLight, checkPipelineOptions, lightsOf, propertiesOf,
+} from './options.js';
 import { estimatePixelsPerMm } from './framePlan.js';
 import { LightDepthTarget } from './1-light-depth/LightDepthTarget.js';
 import { PipelineMaterials } from './2-scene-split/PipelineMaterials.js';
@@ -86,7 +88,7 @@ export class SubsurfaceScattering extends PassWithSettings {
     /** @internal Tables of the other profiles its materials name (computing one takes tens of ms: kept). */
     this._otherLookups = new Map();
     /** @internal Stage 1, for transmittance: a map per light (none without a light). */
-    this._lightDepths = lightsOf(o.light).map((light) => new LightDepthTarget(light, { size: o.lightDepthSize }));
+    this._lightDepths = lightsOf(o.light, o.scene).slice(0, MAX_LIGHTS).map((light) => new LightDepthTarget(light, { size: o.lightDepthSize }));
     /** @internal Whether a material of this pipeline transmits (the light depth map holds its thickness). */
     this._transmitsThrough = (m) => this._subsurfaceMaterials.entries.get(m)?.options.transmittance === true;
     /** @internal The size setSize last gave, device pixels (checked against the GPU's limits on the next frame). */
@@ -196,16 +198,37 @@ export class SubsurfaceScattering extends PassWithSettings {
   _setLight(light, previous) {
     if (light === previous) return;
     if (light === null) checkNeedsLight('debugView', this.debugView, null); // a light's view stays: refused
-    const lights = lightsOf(light);
+    const switches = previous === null || light === null;
+    if (switches) this._settings.transmittance = light !== null;
+    if (!this._useLights(lightsOf(light, this.scene)) && switches) this._subsurfaceMaterials.rebindAll();
+  }
+
+  /**
+   * A map for each of `lights` (up to MAX_LIGHTS), kept where there was one at its place (its
+   * materials read it on), retargeted to its light; the materials rebound where the count changes.
+   * @private @param {readonly object[]} lights
+   * @returns {boolean} whether the materials were rebound
+   */
+  _useLights(lights) {
     const maps = this._lightDepths;
     const count = maps.length;
-    lights.forEach((each, i) => {
-      if (maps[i]) maps[i].setLight(each);
-      else maps[i] = new LightDepthTarget(each, { size: this.lightDepthSize });
+    lights.slice(0, MAX_LIGHTS).forEach((light, i) => {
+      if (!maps[i]) maps[i] = new LightDepthTarget(light, { size: this.lightDepthSize });
+      else if (maps[i].light !== light) maps[i].setLight(light);
     });
-    for (const extra of maps.splice(lights.length)) extra.dispose();
-    if (count === 0 || lights.length === 0) this._settings.transmittance = lights.length > 0;
-    if (count !== lights.length) this._subsurfaceMaterials.rebindAll(); // the bindings list the maps
+    for (const extra of maps.splice(Math.min(lights.length, MAX_LIGHTS))) extra.dispose();
+    if (count === maps.length) return false;
+    this._subsurfaceMaterials.rebindAll(); // the bindings list the maps
+    return true;
+  }
+
+  /** The maps of the scene's shadow-casting lights (`light` 'castShadow'), this frame's. @private */
+  _castShadowLights(scene, checks) {
+    const lights = lightsOf(CAST_SHADOW, scene);
+    if (lights.length > MAX_LIGHTS) {
+      checks.problem('castShadowLights', `${lights.length} lights cast shadows: transmittance comes from the first ${MAX_LIGHTS} in the scene's order (list the ones you want in \`light\`)`);
+    }
+    this._useLights(lights);
   }
 
   /** @internal The first light's map, or null (the tests' and the bench's handle on stage 1). */
@@ -287,6 +310,8 @@ export class SubsurfaceScattering extends PassWithSettings {
     const checks = this._checks.begin();
     checks.camera(camera);
     checks.scene(scene);
+    // 'castShadow': the scene's lights that cast shadows now, more than MAX_LIGHTS said once.
+    if (this.light === CAST_SHADOW) this._castShadowLights(scene, checks);
     // The lights' checks fit their maps to the meshes, as the scene split's render will place them.
     if (this._lightDepths.length > 0 && scene.matrixWorldAutoUpdate === true) scene.updateMatrixWorld();
     const works = this._lightDepths.map((lightDepth) => checks.light(lightDepth, scene, this.transmittance, this._transmitsThrough));

@@ -121,13 +121,28 @@ export const MAX_LIGHTS = 4;
 /** A SpotLight, DirectionalLight or PointLight (or null where `orNull`), else a TypeError naming `name`. */
 function checkOneLight(light, name, orNull = true) {
   if ((light !== null || !orNull) && !(light?.isSpotLight || light?.isDirectionalLight || light?.isPointLight)) {
-    throw new TypeError(`${name} must be a THREE.SpotLight, THREE.DirectionalLight${orNull ? ', THREE.PointLight, a list of them or null' : ' or THREE.PointLight'}, got ${describe(light)}`);
+    throw new TypeError(`${name} must be a THREE.SpotLight, THREE.DirectionalLight${orNull ? `, THREE.PointLight, a list of them, '${CAST_SHADOW}' or null` : ' or THREE.PointLight'}, got ${describe(light)}`);
   }
   return light;
 }
 
-/** The lights of a `light` setting, as a list (null: none). @param {*} light */
-export const lightsOf = (light) => (light === null ? [] : Array.isArray(light) ? light : [light]);
+/** `light`'s value for every light of the scene that casts shadows (up to MAX_LIGHTS), found each frame. */
+export const CAST_SHADOW = 'castShadow';
+
+/**
+ * The lights of a `light` setting, as a list: none for null, those of `scene` that cast shadows
+ * for CAST_SHADOW (visible, in scene order, up to MAX_LIGHTS; none without a scene).
+ * @param {*} light
+ * @param {import('three').Scene} [scene]
+ */
+export function lightsOf(light, scene) {
+  if (light !== CAST_SHADOW) return light === null ? [] : Array.isArray(light) ? light : [light];
+  const casters = [];
+  scene?.traverseVisible((object) => {
+    if (object.castShadow === true && (object.isSpotLight || object.isDirectionalLight || object.isPointLight)) casters.push(object);
+  });
+  return casters;
+}
 
 /** The widest material accepted, mm of material per profile mm (a metre of skin is a mistake). */
 export const MAX_WIDTH_MM = 1000;
@@ -193,9 +208,10 @@ export const PIPELINE_SCHEMA = Object.freeze({
     },
   },
   light: {
-    default: null, type: "import('./options.js').TransmittingLight|import('./options.js').TransmittingLight[]|null",
-    doc: `the light shining through thin parts (transmittance), or a list of up to ${MAX_LIGHTS}, each with its own depth map (the pipeline only); null: no transmittance (assigned: a light after none turns \`transmittance\` on, null off)`,
+    default: null, type: "import('./options.js').TransmittingLight|import('./options.js').TransmittingLight[]|'castShadow'|null",
+    doc: `the light shining through thin parts (transmittance): a spot, directional or point light, or (the pipeline only) a list of up to ${MAX_LIGHTS}, each with its own depth map, or 'castShadow': the scene's lights that cast shadows, each frame; null: none (assigned: a light after none turns \`transmittance\` on, null off)`,
     check(light, name) {
+      if (light === CAST_SHADOW) return light;
       if (!Array.isArray(light)) return checkOneLight(light, name);
       if (light.length < 1 || light.length > MAX_LIGHTS) throw new RangeError(`${name} must list 1 to ${MAX_LIGHTS} lights, got ${light.length}`);
       light.forEach((each, i) => checkOneLight(each, `${name}[${i}]`, false));
@@ -457,7 +473,7 @@ export function checkMaterialOptions(options = {}, previous = MATERIAL_DEFAULTS)
  * @typedef {object} SubsurfaceScatteringOptions
  * @property {import('three').Scene} scene the scene drawn, read every frame
  * @property {import('three').Camera} camera the camera drawn with, read every frame
- * @property {TransmittingLight|TransmittingLight[]|null} [light=null] the light shining through thin parts (transmittance), or a list of up to 4, each with its own depth map (the pipeline only); null: no transmittance (assigned: a light after none turns `transmittance` on, null off)
+ * @property {TransmittingLight|TransmittingLight[]|'castShadow'|null} [light=null] the light shining through thin parts (transmittance): a spot, directional or point light, or (the pipeline only) a list of up to 4, each with its own depth map, or 'castShadow': the scene's lights that cast shadows, each frame; null: none (assigned: a light after none turns `transmittance` on, null off)
  * @property {number} [worldUnitInMm=1000] millimetres per world unit (three.js: metres, 1000)
  * @property {ProfileName|object} [profile='skin'] a preset's name ('skin', 'skinBurley', 'marble', 'milk') or a profile object (burleyProfile, dipoleProfile, gaussianSumProfile)
  * @property {Method} [method='footprint'] how the blur weighs its taps: 'footprint' (each pixel's footprint weighed exactly), 'marginal' or 'reference' (fixed taps; 'reference': Jimenez 2012's kernel); a switch between 'footprint' and the others recompiles the blur
@@ -482,7 +498,7 @@ export function checkMaterialOptions(options = {}, previous = MATERIAL_DEFAULTS)
 /**
  * subsurfaceScattering(scenePass, { ... }) (the WebGPU node): the defaults are NODE_DEFAULTS.
  * @typedef {object} SubsurfaceScatteringNodeOptions
- * @property {TransmittingLight|TransmittingLight[]|null} [light=null] the light shining through thin parts (transmittance), or a list of up to 4, each with its own depth map (the pipeline only); null: no transmittance (assigned: a light after none turns `transmittance` on, null off)
+ * @property {TransmittingLight|TransmittingLight[]|'castShadow'|null} [light=null] the light shining through thin parts (transmittance): a spot, directional or point light, or (the pipeline only) a list of up to 4, each with its own depth map, or 'castShadow': the scene's lights that cast shadows, each frame; null: none (assigned: a light after none turns `transmittance` on, null off)
  * @property {number} [worldUnitInMm=1000] millimetres per world unit (three.js: metres, 1000)
  * @property {ProfileName|object} [profile='skin'] a preset's name ('skin', 'skinBurley', 'marble', 'milk') or a profile object (burleyProfile, dipoleProfile, gaussianSumProfile)
  * @property {Method} [method='footprint'] how the blur weighs its taps: 'footprint' (each pixel's footprint weighed exactly), 'marginal' or 'reference' (fixed taps; 'reference': Jimenez 2012's kernel); a switch between 'footprint' and the others recompiles the blur
@@ -505,7 +521,7 @@ export function checkMaterialOptions(options = {}, previous = MATERIAL_DEFAULTS)
  * @typedef {object} PipelineSettings
  * @property {import('three').Scene} scene the scene drawn, read every frame
  * @property {import('three').Camera} camera the camera drawn with, read every frame
- * @property {TransmittingLight|TransmittingLight[]|null} light the light shining through thin parts (transmittance), or a list of up to 4, each with its own depth map (the pipeline only); null: no transmittance (assigned: a light after none turns `transmittance` on, null off)
+ * @property {TransmittingLight|TransmittingLight[]|'castShadow'|null} light the light shining through thin parts (transmittance): a spot, directional or point light, or (the pipeline only) a list of up to 4, each with its own depth map, or 'castShadow': the scene's lights that cast shadows, each frame; null: none (assigned: a light after none turns `transmittance` on, null off)
  * @property {number} worldUnitInMm millimetres per world unit (three.js: metres, 1000)
  * @property {Method} method how the blur weighs its taps: 'footprint' (each pixel's footprint weighed exactly), 'marginal' or 'reference' (fixed taps; 'reference': Jimenez 2012's kernel); a switch between 'footprint' and the others recompiles the blur
  * @property {number|'auto'} samples taps per direction, odd, 3..63 (a budget for 'footprint'); 'auto': as few as the on-screen scale needs
@@ -528,7 +544,7 @@ export function checkMaterialOptions(options = {}, previous = MATERIAL_DEFAULTS)
 /**
  * SubsurfaceScatteringNode's settings, as properties (assigning one checks it as the constructor does).
  * @typedef {object} NodeSettings
- * @property {TransmittingLight|TransmittingLight[]|null} light the light shining through thin parts (transmittance), or a list of up to 4, each with its own depth map (the pipeline only); null: no transmittance (assigned: a light after none turns `transmittance` on, null off)
+ * @property {TransmittingLight|TransmittingLight[]|'castShadow'|null} light the light shining through thin parts (transmittance): a spot, directional or point light, or (the pipeline only) a list of up to 4, each with its own depth map, or 'castShadow': the scene's lights that cast shadows, each frame; null: none (assigned: a light after none turns `transmittance` on, null off)
  * @property {number} worldUnitInMm millimetres per world unit (three.js: metres, 1000)
  * @property {Method} method how the blur weighs its taps: 'footprint' (each pixel's footprint weighed exactly), 'marginal' or 'reference' (fixed taps; 'reference': Jimenez 2012's kernel); a switch between 'footprint' and the others recompiles the blur
  * @property {number|'auto'} samples taps per direction, odd, 3..63 (a budget for 'footprint'); 'auto': as few as the on-screen scale needs

@@ -27,7 +27,9 @@ import { isPerspective } from '../support/screenScale.js';
 import { describe } from '../support/rendererSupport.js';
 import { LightStageNode } from './1-light-depth/LightStageNode.js';
 import { subsurfaceMeshesOf } from './2-scene-split/subsurfaceNodeMaterial.js';
-import { NODE_SCHEMA, checkNeedsLight, checkNodeOptions, lightsOf, propertiesOf } from '../options.js';
+import {
+  CAST_SHADOW, NODE_SCHEMA, checkNeedsLight, checkNodeOptions, lightsOf, propertiesOf,
+} from '../options.js';
 import { withSettings } from '../support/settings.js';
 import { WEBGPU_THREE, checkThreeRevision } from '../support/threeVersion.js';
 import { ATTACHMENT_NAMES } from './2-scene-split/attachments.js';
@@ -42,6 +44,7 @@ export const NODE_METHODS = Object.freeze(['footprint']);
 
 /** The node's one light (or none): a list of more is the WebGL pipeline's, refused naming it. */
 function nodeLight(light) {
+  if (light === CAST_SHADOW) throw new RangeError(`light: the WebGPU node takes one light, got '${CAST_SHADOW}' (the WebGL pipeline's)`);
   const lights = lightsOf(light);
   if (lights.length > 1) throw new RangeError(`light: the WebGPU node takes one light, got a list of ${lights.length} (several lights are the WebGL pipeline's)`);
   if (lights[0]?.isPointLight) throw new TypeError('light: the WebGPU node takes a SpotLight or DirectionalLight, got a PointLight (the WebGL pipeline takes point lights)');

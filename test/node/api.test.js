@@ -13,7 +13,7 @@ describe('bad input is refused with a message naming the parameter and its range
   const cases = [
     ['no scene', () => new SubsurfaceScattering({ camera }), TypeError, /scene must be a THREE\.Scene/],
     ['no camera', () => new SubsurfaceScattering({ scene }), TypeError, /camera must be a THREE\.Camera/],
-    ['a hemisphere light', () => new SubsurfaceScattering({ scene, camera, light: new HemisphereLight() }), TypeError, /light must be a THREE\.SpotLight, THREE\.DirectionalLight, THREE\.PointLight, a list of them or null/],
+    ['a hemisphere light', () => new SubsurfaceScattering({ scene, camera, light: new HemisphereLight() }), TypeError, /light must be a THREE\.SpotLight, THREE\.DirectionalLight, THREE\.PointLight, a list of them, 'castShadow' or null/],
     ['NaN scale', () => new SubsurfaceScattering({ scene, camera, worldUnitInMm: NaN }), TypeError, /worldUnitInMm must be a finite number, got NaN/],
     ['negative scale', () => new SubsurfaceScattering({ scene, camera, worldUnitInMm: -1 }), RangeError, /worldUnitInMm must be in \[0\.000001, 1000000\] mm, got -1/],
     ['even samples', () => new SubsurfaceScattering({ scene, camera, samples: 16 }), RangeError, /samples must be an odd integer in 3\.\.63, got 16/],

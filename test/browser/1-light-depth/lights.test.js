@@ -45,7 +45,7 @@ function slabFrames(options) {
     for (const [label, action] of steps(sss, lights, { THREE, SSS, scene, camera, skin, slab })) {
       action();
       composer.render();
-      const name = Object.entries(lights).find(([, l]) => l === sss.light)?.[0] ?? (sss.light === null ? null : 'another');
+      const name = Object.entries(lights).find(([, l]) => l === sss.light)?.[0] ?? (sss.light === null || typeof sss.light === 'string' ? sss.light : 'another');
       out[label] = { diffuse: await read(renderer, sss._scenePass.renderTarget, 1), light: name, transmittance: sss.transmittance, problems: [...sss.problems] };
     }
     sss.dispose();
@@ -216,6 +216,38 @@ describe('several lights', () => {
     expect(relative(r.two.diffuse, sum(['spot', 'behind'])), 'two').toBeLessThan(1e-5);
     expect(r.all.light).toBe('another'); // a list (not one of the lights)
     expect(r.all.problems).toEqual([]);
+  });
+
+  it("'castShadow': the scene's shadow-casting lights, found each frame (the same floats as listing them), more than four said in problems", async () => {
+    const lights = (THREE) => {
+      const sun = new THREE.DirectionalLight(0xffffff, Math.PI);
+      sun.position.set(0, 0, -2);
+      Object.assign(sun.shadow.camera, { left: -0.15, right: 0.15, bottom: -0.15, top: 0.15 });
+      const spot = new THREE.SpotLight(0xaaccff, 6 * Math.PI, 0, Math.PI / 10, 0.3, 2);
+      spot.position.set(-0.1, 0.05, -1.2);
+      const bulb = new THREE.PointLight(0xffccaa, 2, 0, 2);
+      bulb.position.set(0.2, 0, -0.6);
+      sun.castShadow = spot.castShadow = true; // the bulb casts none
+      return { sun, spot, bulb };
+    };
+    const r = await slabFrames({
+      thicknessMm: 1.5, size: 48, lights,
+      steps: (sss, l, { THREE, scene }) => {
+        const extra = Array.from({ length: 3 }, () => Object.assign(new THREE.SpotLight(0xffffff, 0), { castShadow: true }));
+        return [
+          ['listed', () => { sss.light = [l.sun, l.spot]; }],
+          ['castShadow', () => { sss.light = 'castShadow'; }],
+          ['one casts', () => { l.spot.castShadow = false; }],
+          ['sun', () => { sss.light = l.sun; }],
+          ['five cast', () => { l.spot.castShadow = true; scene.add(...extra); sss.light = 'castShadow'; }],
+        ];
+      },
+    });
+    expect(Math.max(...r.listed.diffuse.filter((_, i) => i % 4 === 0))).toBeGreaterThan(0.05);
+    expect(worst(r.castShadow.diffuse, r.listed.diffuse)).toBe(0);
+    expect(r.castShadow.light).toBe('castShadow');
+    expect(worst(r['one casts'].diffuse, r.sun.diffuse)).toBe(0);
+    expect(r['five cast'].problems).toEqual(['5 lights cast shadows: transmittance comes from the first 4 in the scene\'s order (list the ones you want in `light`)']);
   });
 
   it('a list is read back as given, frozen; more than four or a light twice are refused', async () => {

@@ -84,6 +84,7 @@ const NODE_CASES = [
   ["method = 'reference'", (t) => { t.sss.method = 'reference'; }, 'RangeError', /^method 'reference' is not available on the WebGPU node/],
   ['light: a PointLight (the WebGL pipeline only)', (t) => t.make({ light: new t.THREE.PointLight() }), 'TypeError', /^light: the WebGPU node takes a SpotLight or DirectionalLight, got a PointLight/],
   ['light = two lights (the WebGL pipeline only)', (t) => { t.sss.light = [t.light, new t.THREE.SpotLight()]; }, 'RangeError', /^light: the WebGPU node takes one light, got a list of 2/],
+  ["light: 'castShadow' (the WebGL pipeline only)", (t) => t.make({ light: 'castShadow' }), 'RangeError', /^light: the WebGPU node takes one light, got 'castShadow'/],
   ['light = [one light]: taken', (t) => { t.sss.light = [t.light]; }, 'ok'],
   ["debugView = 'thickness' with a light: taken", (t) => { t.make({ light: t.light }).debugView = 'thickness'; }, 'ok'],
   ['subsurfaceMaterial(null)', (t) => t.NODE.subsurfaceMaterial(null), 'TypeError', /subsurfaceMaterial: material must be a THREE\.MeshStandardMaterial or MeshPhysicalMaterial \(or its node version\), got null/],
