@@ -287,7 +287,7 @@ export class LightDepthView {
     if (perspective) near = Math.max(cube ? 0 : near, FIT.MIN_NEAR * far); // six faces: the nearest is not a corner's
     this.fitted = { near, far: far + margin };
     const inside = this.light.isSpotLight ? targets.find((object) => this._inside(object)) : undefined;
-    return inside ? `the spot light is inside the bounds of ${nameOf(inside)}, so its parts nearer than ${Number(this.fitted.near.toPrecision(3))} world units to the light are not in the light's depth map (no transmittance there): move the light out of it` : null;
+    return inside ? `the spot light${this.light.name ? ` "${this.light.name}"` : ''} is inside the bounds of ${nameOf(inside)}, so its parts nearer than ${Number(this.fitted.near.toPrecision(3))} world units to the light are not in the light's depth map (no transmittance there): move the light out of it` : null;
   }
 
   /** Whether the light is inside `object`'s bounds. */

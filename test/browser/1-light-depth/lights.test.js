@@ -250,6 +250,24 @@ describe('several lights', () => {
     expect(r['five cast'].problems).toEqual(['5 lights cast shadows: transmittance comes from the first 4 in the scene\'s order (list the ones you want in `light`)']);
   });
 
+  it("each light's problem is its own, naming the light as the user named it", async () => {
+    const r = await slabFrames({
+      thicknessMm: 1, size: 16,
+      lights: (THREE) => {
+        const key = Object.assign(new THREE.DirectionalLight(0xffffff, 1), { name: 'key' });
+        const rim = Object.assign(new THREE.SpotLight(0xffffff, 1), { name: 'rim' });
+        key.position.set(0, 0, -2);
+        rim.position.set(0.1, 0, -1);
+        return { key, rim };
+      },
+      steps: (sss, { key, rim }, { scene }) => [['both', () => { sss.light = [key, rim]; key.intensity = NaN; scene.remove(rim); }]],
+    });
+    expect(r.both.problems).toEqual([
+      'the light "key"\'s color (1, 1, 1) or intensity (NaN) is not finite: three lights the scene with NaN from it, drawn black here, and there is no transmittance until both are finite',
+      'the light "rim" is not in the scene (removed, or never added): there is no transmittance until it is added (with its target), or set transmittance to false',
+    ]);
+  });
+
   it('a list is read back as given, frozen; more than four or a light twice are refused', async () => {
     const r = await page.evaluate(() => {
       const { THREE, SSS } = window.lab;
