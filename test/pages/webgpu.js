@@ -388,6 +388,7 @@ async function lightAssigned({ backend = 'webgpu', width = 96, height = 54 }) {
     const { scenePass, node, pipeline } = subsurfacePipeline(renderer, built.scene, built.camera, { type: THREE.FloatType, sss: { worldUnitInMm: 10, light } });
     const out = {};
     for (const [label, step] of steps(node)) {
+      await new Promise((resolve) => { requestAnimationFrame(() => resolve()); }); // a frame each, as an app renders: the scene pass draws once a frame
       step();
       pipeline.render();
       out[label] = { diffuse: await readFloats(renderer, scenePass.renderTarget, 'diffuse'), light: node.light === sun ? 'sun' : node.light === spot ? 'spot' : node.light, transmittance: node.transmittance };
