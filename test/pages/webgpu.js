@@ -408,6 +408,30 @@ async function lightAssigned({ backend = 'webgpu', width = 96, height = 54 }) {
 }
 
 /**
+ * The lab's back-lit slab through the node with its light's shadow camera near beyond the slab
+ * (12 units; the light is 10 behind): the diffuse attachment (issue 36: the map's near and far are
+ * fitted to the meshes, not taken from the shadow camera).
+ */
+async function nearLight({ backend = 'webgpu', width = 96, height = 54 }) {
+  const renderer = await sharedRenderer(backend, width, height);
+  const built = window.lab.buildScene('backlit', { width, height, thicknessMm: 1 });
+  built.light.shadow.camera.near = 12;
+  built.light.shadow.camera.far = 30;
+  const skin = NODE.subsurfaceMaterial(built.subsurface[0], { widthMm: 1, shrinkMm: 0.6 });
+  built.scene.traverse((object) => { if (object.material === built.subsurface[0]) object.material = skin; });
+  const { scenePass, node, pipeline } = subsurfacePipeline(renderer, built.scene, built.camera, { type: THREE.FloatType, sss: { worldUnitInMm: 10, light: built.light } });
+  pipeline.render();
+  const diffuse = await readFloats(renderer, scenePass.renderTarget, 'diffuse');
+  const problems = [...node.problems];
+  node.dispose();
+  pipeline.dispose();
+  scenePass.dispose();
+  skin.dispose();
+  built.subsurface[0].dispose();
+  return { diffuse, problems };
+}
+
+/**
  * A setting changed between two renders of one animation frame (issue 36): the lab's noisy slab
  * through the node, its output (linear float) blurred; then, in one task, scattering off, a render,
  * scattering on, a render; then, a frame later, scattering off.
@@ -446,5 +470,5 @@ async function sameFrame({ backend = 'webgpu', width = 96, height = 54 }) {
   return { blurred, onAgain, unblurred };
 }
 
-window.wgpu = { THREE, NODE, pass, createRenderer, readFloats, subsurfacePipeline, flat, disposeFlatRig, head, disposal, plainDraw, debugViews, labScene, labScenePlain, lightDepthCards, lightAssigned, sameFrame };
+window.wgpu = { THREE, NODE, pass, createRenderer, readFloats, subsurfacePipeline, flat, disposeFlatRig, head, disposal, plainDraw, debugViews, labScene, labScenePlain, lightDepthCards, lightAssigned, sameFrame, nearLight };
 window.testReady = true;

@@ -5,6 +5,7 @@
 import { describe, it, expect, beforeAll, afterAll } from 'vitest';
 import { evaluateFloats } from '../../harness/page.js';
 import { BACKENDS, openWebgpuPage } from '../../harness/webgpuBrowser.js';
+import { transmittedFractionOracle } from '../../oracle/transmittance.js';
 
 let page;
 beforeAll(async () => { page = await openWebgpuPage('/test/pages/webgpu.html'); });
@@ -31,6 +32,16 @@ for (const backend of BACKENDS) {
       expect(a.null).toMatchObject({ light: null, transmittance: false });
       expect(brightest(a.null.diffuse)).toBe(0);
       expect(worst(a['sun again'].diffuse, made.sun.diffuse)).toBe(0);
+    });
+
+    it("a light nearer the slab than its shadow camera's near: the oracle's T(1 mm) within 2 % (before: 0, clipped away)", async () => {
+      const r = await evaluateFloats(page, (b) => window.wgpu.nearLight({ backend: b }), backend);
+      const oracle = transmittedFractionOracle({ thicknessMm: 1, profile: 'skin', shrinkMm: 0.6, towardLightViewZ: -1 });
+      const sums = [0, 0, 0];
+      let n = 0;
+      for (let y = 10; y < 44; y++) for (let x = 15; x < 81; x++) { for (let c = 0; c < 3; c++) sums[c] += r.diffuse[(y * 96 + x) * 4 + c]; n++; }
+      expect(Math.abs(sums[0] / n / oracle[0] - 1), `red: node ${sums[0] / n}, oracle ${oracle[0]}`).toBeLessThan(0.02);
+      expect(r.problems).toEqual([]);
     });
 
     it('scattering turned on between two renders of one animation frame: the second render is blurred (before: the unblurred image again)', async () => {
