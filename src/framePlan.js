@@ -1,17 +1,13 @@
-// The scene's side of a frame's plan: how large a profile millimetre is on screen over the
-// subsurface meshes drawn (estimatePixelsPerMm), the one input the blur stage's own plan takes
-// from outside it (src/3-blur/blurPlan.js), and the nearest depth of a mesh, which the light's
-// side test shares. Both only read the scene graph and run in Node (test/node/framePlan.test.js).
+// The scene's side of a frame's plan, read from the scene graph only: the on-screen size of a
+// profile millimetre, the one outside input of src/3-blur/blurPlan.js, and a mesh's nearest depth.
 import { Vector3 } from 'three';
 import { isPerspective, pixelsPerMm } from './support/screenScale.js';
 
 const _corner = new Vector3();
 
 /**
- * The view depth of `mesh`'s bounding box corner nearest the camera: no point of the mesh is
- * nearer (world units; instanced and skinned meshes use their own boxes: all instances, the posed
- * skin). The one place both frame-level bounds (the kernel's reach, whether light can come
- * through from behind) take a mesh's extent from.
+ * The view depth of `mesh`'s bounding box corner nearest the camera, world units: no point of the
+ * mesh is nearer (instanced and skinned meshes use their own boxes).
  * @param {import('three').Mesh} mesh
  * @param {import('three').Camera} camera (matrixWorldInverse up to date)
  * @returns {number}
@@ -30,8 +26,7 @@ export function nearestViewDepth(mesh, camera) {
 }
 
 /**
- * An upper bound on the on-screen size of a profile millimetre over `meshes`: each mesh's
- * bounding box corner nearest the camera, with the largest width its subsurface materials write.
+ * An upper bound on the on-screen size of a profile millimetre over `meshes`.
  * @param {Iterable<import('three').Mesh>} meshes the meshes drawn with a subsurface material
  * @param {import('three').Camera} camera (matrixWorldInverse and projection up to date)
  * @param {{ width: number, height: number }} size the render target, pixels

@@ -10,7 +10,8 @@ export {
 export { planBlur, autoSampleCount, BLUR_MODES } from './3-blur/blurPlan.js';
 export { estimatePixelsPerMm, nearestViewDepth } from './framePlan.js';
 export { MIN_KERNEL_PIXELS } from './3-blur/samplingModel.js';
-export { BlurStage, useDenseReference } from './3-blur/BlurStage.js';
+export { BlurStage } from './3-blur/BlurStage.js';
+export { useDenseReference } from './3-blur/denseReference.js';
 export { DenseSubsurfacePass } from './3-blur/DenseSubsurfacePass.js';
 
 // Stage 2's draw phases and stage 3's modes.

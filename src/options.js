@@ -244,7 +244,7 @@ export const PIPELINE_SCHEMA = Object.freeze({
     check: (value, name) => checkKernelGroups(value, name),
   },
   strength: {
-    default: undefined, type: 'number[]', doc: 'RGB, 0..1: mix with no scattering (the reference model)',
+    default: undefined, type: "number[]|import('three').Color", doc: '[r, g, b] or a THREE.Color, 0..1: mix with no scattering (the reference model)',
     check: (value, name) => checkRgb(name, value, { min: 0, max: 1 }),
   },
   falloff: {
@@ -479,7 +479,7 @@ export function checkMaterialOptions(options = {}, previous = MATERIAL_DEFAULTS)
  * @property {Method} [method='footprint'] how the blur weighs its taps: 'footprint' (each pixel's footprint weighed exactly), 'marginal' or 'reference' (fixed taps; 'reference': Jimenez 2012's kernel); a switch between 'footprint' and the others recompiles the blur
  * @property {number|'auto'} [samples='auto'] taps per direction, odd, 3..63 (a budget for 'footprint'); 'auto': as few as the on-screen scale needs
  * @property {number|'auto'} [kernelGroups=1] method 'footprint': 1, one separable kernel (exact along the screen axes only; the fast blur); 'auto' or 2..4: the profile's Gaussians blurred in groups, the same in every direction, each group an attachment and taps of its own ('auto': one group where one is within the isotropy budget, a far head, else 4)
- * @property {number[]} [strength] RGB, 0..1: mix with no scattering (the reference model)
+ * @property {number[]|import('three').Color} [strength] [r, g, b] or a THREE.Color, 0..1: mix with no scattering (the reference model)
  * @property {number[]} [falloff] RGB, (0, 10]: method 'reference' only, its kernel's shape
  * @property {FollowSurfaceMode} [followSurface='drop'] a tap on another surface: 'drop' (renormalise), 'lerp' (to the centre) or 'off'
  * @property {number} [depthThresholdMm=6] mm of depth step taken for another surface (close to the reference's constant at its field of view)
@@ -504,7 +504,7 @@ export function checkMaterialOptions(options = {}, previous = MATERIAL_DEFAULTS)
  * @property {Method} [method='footprint'] how the blur weighs its taps: 'footprint' (each pixel's footprint weighed exactly), 'marginal' or 'reference' (fixed taps; 'reference': Jimenez 2012's kernel); a switch between 'footprint' and the others recompiles the blur
  * @property {number|'auto'} [samples='auto'] taps per direction, odd, 3..63 (a budget for 'footprint'); 'auto': as few as the on-screen scale needs
  * @property {number|'auto'} [kernelGroups=1] method 'footprint': 1, one separable kernel (exact along the screen axes only; the fast blur); 'auto' or 2..4: the profile's Gaussians blurred in groups, the same in every direction, each group an attachment and taps of its own ('auto': one group where one is within the isotropy budget, a far head, else 4)
- * @property {number[]} [strength] RGB, 0..1: mix with no scattering (the reference model)
+ * @property {number[]|import('three').Color} [strength] [r, g, b] or a THREE.Color, 0..1: mix with no scattering (the reference model)
  * @property {FollowSurfaceMode} [followSurface='drop'] a tap on another surface: 'drop' (renormalise), 'lerp' (to the centre) or 'off'
  * @property {number} [depthThresholdMm=6] mm of depth step taken for another surface (close to the reference's constant at its field of view)
  * @property {boolean} [foreshortening=true] narrow the blur on surfaces seen at grazing angles
@@ -526,7 +526,7 @@ export function checkMaterialOptions(options = {}, previous = MATERIAL_DEFAULTS)
  * @property {Method} method how the blur weighs its taps: 'footprint' (each pixel's footprint weighed exactly), 'marginal' or 'reference' (fixed taps; 'reference': Jimenez 2012's kernel); a switch between 'footprint' and the others recompiles the blur
  * @property {number|'auto'} samples taps per direction, odd, 3..63 (a budget for 'footprint'); 'auto': as few as the on-screen scale needs
  * @property {number|'auto'} kernelGroups method 'footprint': 1, one separable kernel (exact along the screen axes only; the fast blur); 'auto' or 2..4: the profile's Gaussians blurred in groups, the same in every direction, each group an attachment and taps of its own ('auto': one group where one is within the isotropy budget, a far head, else 4)
- * @property {number[]|undefined} strength RGB, 0..1: mix with no scattering (the reference model)
+ * @property {number[]|import('three').Color|undefined} strength [r, g, b] or a THREE.Color, 0..1: mix with no scattering (the reference model)
  * @property {number[]|undefined} falloff RGB, (0, 10]: method 'reference' only, its kernel's shape
  * @property {FollowSurfaceMode} followSurface a tap on another surface: 'drop' (renormalise), 'lerp' (to the centre) or 'off'
  * @property {number} depthThresholdMm mm of depth step taken for another surface (close to the reference's constant at its field of view)
@@ -549,7 +549,7 @@ export function checkMaterialOptions(options = {}, previous = MATERIAL_DEFAULTS)
  * @property {Method} method how the blur weighs its taps: 'footprint' (each pixel's footprint weighed exactly), 'marginal' or 'reference' (fixed taps; 'reference': Jimenez 2012's kernel); a switch between 'footprint' and the others recompiles the blur
  * @property {number|'auto'} samples taps per direction, odd, 3..63 (a budget for 'footprint'); 'auto': as few as the on-screen scale needs
  * @property {number|'auto'} kernelGroups method 'footprint': 1, one separable kernel (exact along the screen axes only; the fast blur); 'auto' or 2..4: the profile's Gaussians blurred in groups, the same in every direction, each group an attachment and taps of its own ('auto': one group where one is within the isotropy budget, a far head, else 4)
- * @property {number[]|undefined} strength RGB, 0..1: mix with no scattering (the reference model)
+ * @property {number[]|import('three').Color|undefined} strength [r, g, b] or a THREE.Color, 0..1: mix with no scattering (the reference model)
  * @property {FollowSurfaceMode} followSurface a tap on another surface: 'drop' (renormalise), 'lerp' (to the centre) or 'off'
  * @property {number} depthThresholdMm mm of depth step taken for another surface (close to the reference's constant at its field of view)
  * @property {boolean} foreshortening narrow the blur on surfaces seen at grazing angles

@@ -1,7 +1,6 @@
 // Stage 1: linear depth seen from the light, for transmittance (Jimenez et al. 2010). Unlike a
-// shadow map it stores distance along the light's view axis in world units, so the thickness of
-// an object is a plain difference of two depths, and beside it the entry cosine |N·L| of the
-// surface the light meets first (shaders/1-light-depth/lightDepth.frag.glsl).
+// shadow map it stores world units along the light's axis, so a thickness is a plain difference
+// of two depths; beside it the entry cosine |N·L| (shaders/1-light-depth/lightDepth.frag.glsl).
 import {
   DoubleSide, FloatType, Matrix3, NearestFilter, RGFormat, ShaderMaterial, WebGLRenderTarget,
 } from 'three';
@@ -14,17 +13,14 @@ import { LightDepthView, boundsNoVolume } from './LightDepthView.js';
 /** Drawn in place of what the light pass leaves out: three culls a material with visible false. */
 const HIDDEN = new ShaderMaterial({ name: 'LightDepthHidden', visible: false });
 
-/** A texture's uv transform, as three's own materials upload it. */
 function uvTransform(texture, into) {
   if (texture.matrixAutoUpdate === true) texture.updateMatrix();
   return into.copy(texture.matrix);
 }
 
 /**
- * Renders the scene from a SpotLight (perspective), DirectionalLight (orthographic) or PointLight
- * (six perspective faces side by side: LightDepthView.pointFace) into a two-channel float target: r the linear depth in world units (0 means "no surface"), g the entry
- * cosine |N·L| there (0..1).
- * The camera follows the light (position, target, angle) on every `render` (LightDepthView).
+ * The WebGL light depth map: r linear depth, world units (0: no surface), g the entry cosine; a
+ * point light's six faces side by side (LightDepthView.pointFace) where it is not aimed.
  */
 export class LightDepthTarget extends LightDepthView {
   /**
@@ -55,9 +51,7 @@ export class LightDepthTarget extends LightDepthView {
   }
 
   /**
-   * What `object` is drawn with from the light: the shared depth material, a depth material that
-   * keeps its material's cut-out and clipping, or nothing (hidden: what lightSees leaves out, and
-   * points, lines and sprites).
+   * What `object` is drawn with from the light (HIDDEN: what lightSees leaves out, points, lines).
    * @param {import('three').Object3D} object
    * @returns {ShaderMaterial | ShaderMaterial[] | null} null: not a drawable mesh, leave it
    */
@@ -68,7 +62,7 @@ export class LightDepthTarget extends LightDepthView {
     return Array.isArray(object.material) ? object.material.map(of) : of(object.material);
   }
 
-  /** A depth material of its own for a cut-out or clipped material (LightDepthView._shapedMaterial). */
+  /** For a cut-out or clipped material (LightDepthView._shapedMaterial). */
   createShapedMaterial(material) {
     const shaped = this.material.clone();
     shaped.name = `LightDepthMaterial(${material.name || material.type})`;
@@ -80,7 +74,7 @@ export class LightDepthTarget extends LightDepthView {
     return shaped;
   }
 
-  /** Its uniforms: three derives USE_MAP, USE_ALPHAMAP, USE_ALPHATEST from the fields, for a ShaderMaterial as for its own, and leaves the uniforms to us. */
+  /** three derives USE_MAP, USE_ALPHAMAP, USE_ALPHATEST from the fields but leaves a ShaderMaterial's uniforms to us. */
   updateShapedMaterial(shaped, material) {
     const u = shaped.uniforms;
     u.map.value = shaped.map;
@@ -108,9 +102,7 @@ export class LightDepthTarget extends LightDepthView {
   }
 
   /**
-   * Renders `scene` from the light, each mesh drawn with `depthMaterialOf(mesh)` (its own material
-   * is put back after, also on an exception). Restores the renderer's render target, clear
-   * colour/alpha, autoClear and the scene's background and overrideMaterial.
+   * Renders `scene` from the light; the meshes' materials and the renderer's state are put back.
    * @param {import('three').WebGLRenderer} renderer
    * @param {import('three').Scene} scene
    */
@@ -127,8 +119,8 @@ export class LightDepthTarget extends LightDepthView {
     const shadowsNeedUpdate = renderer.shadowMap.needsUpdate;
     preservingRendererState(renderer, scene, () => {
       try {
-        // Per mesh rather than scene.overrideMaterial: an override would draw a leaf card's
-        // cut-away corners and a glass pane as solid (three's shadow maps do the same per mesh).
+        // Per mesh, not scene.overrideMaterial, which would draw a leaf card's cut-away corners
+        // and a glass pane as solid (three's shadow maps do the same).
         scene.traverseVisible((object) => {
           const depthMaterial = this.depthMaterialOf(object);
           if (depthMaterial === null) return;
@@ -137,7 +129,7 @@ export class LightDepthTarget extends LightDepthView {
         });
         scene.overrideMaterial = null;
         scene.background = null;
-        renderer.shadowMap.autoUpdate = false; // the light's view needs no shadow maps
+        renderer.shadowMap.autoUpdate = false;
         renderer.shadowMap.needsUpdate = false;
         renderer.setRenderTarget(this.renderTarget);
         renderer.setClearColor(0x000000, 0); // 0 = no surface

@@ -1,8 +1,6 @@
-// Stage 1, renderer-free: the light's camera and what it sees, shared by the WebGL path's
-// LightDepthTarget and the WebGPU node's LightDepthNodeTarget (src/webgpu/1-light-depth/). Each
-// renderer's subclass brings the target (two-channel float: linear depth in world units, 0 = no
-// surface, and the entry cosine), the depth material and the render; this class places the camera
-// on the light, checks its frustum and says which materials the light sees.
+// Stage 1, renderer-free: the light's camera, its frustum checks and fit, and which materials it
+// sees, shared by LightDepthTarget and the WebGPU LightDepthNodeTarget (src/webgpu/1-light-depth/),
+// which bring the target, the depth material and the render.
 import { Box3, Matrix4, OrthographicCamera, PerspectiveCamera, Sphere, Vector3 } from 'three';
 import { localBoundsOf } from '../support/meshBounds.js';
 import { checkInteger, checkNumber, checkOptions } from '../support/parameterChecks.js';
@@ -43,9 +41,8 @@ function depthRange(object, view, cube) {
 const nameOf = (object) => (object.name ? `mesh "${object.name}"` : `an unnamed ${object.type}`);
 
 /**
- * Whether a material's own shape matters from the light: a cut-out (alphaTest with a map or an
- * alphaMap, or alphaToCoverage, which three's shadow maps also read as alphaTest 0.5) or local
- * clipping planes. Other materials share one depth material.
+ * Whether a material's own shape matters from the light (a cut-out or clipping planes); other
+ * materials share one depth material.
  * @param {import('three').Material} material
  */
 export function hasOwnShape(material) {
@@ -55,10 +52,8 @@ export function hasOwnShape(material) {
 }
 
 /**
- * Whether the light pass draws a surface of `material`. Left out: transparent and transmissive
- * materials (glass or a veil between the light and the skin would read as tissue and hide the
- * glow behind it; the pipeline draws them after the compose anyway) and materials with visible
- * false. Points, lines and sprites are left out by the caller (they bound no volume).
+ * Whether the light pass draws a surface of `material`: not transparent or transmissive ones (glass
+ * between the light and the skin would read as tissue and hide the glow), nor invisible ones.
  * @param {import('three').Material|undefined|null} material
  */
 export function lightSees(material) {
@@ -104,21 +99,21 @@ function pointFaceBasis(k, into) {
 /** The camera a light's view needs: orthographic for a directional light, perspective else. */
 const cameraFor = (light) => (light.isDirectionalLight ? new OrthographicCamera() : new PerspectiveCamera());
 
-/** What the light pass leaves out whatever its material: they bound no volume. */
+/** Left out whatever the material: they bound no volume. */
 export const boundsNoVolume = (object) => object.isPoints === true || object.isLine === true || object.isSprite === true;
 
 /**
- * The light's view of a SpotLight (perspective) or DirectionalLight (orthographic); the subclass
- * makes `renderTarget` and `material` (the shared depth material), then calls setSize(this.size),
- * and makes the depth material of a material with its own shape (createShapedMaterial; with
- * updateShapedMaterial where its uniforms need the material's values too).
+ * The light's view of a SpotLight (perspective) or DirectionalLight (orthographic). The subclass
+ * makes `renderTarget` and `material`, calls setSize(this.size), and implements
+ * createShapedMaterial (and updateShapedMaterial where uniforms need the material's values).
  */
 export class LightDepthView {
   /**
    * @param {string} who the class named in errors
-   * @param {import('three').SpotLight | import('three').DirectionalLight} light
+   * @param {import('three').SpotLight | import('three').DirectionalLight | import('three').PointLight} light
    * @param {{ size?: number, near?: number, far?: number }} [options] size: of the square target,
-   *   pixels (16..8192, default 1024); near and far: world units (default: the light's shadow camera)
+   *   pixels (16..8192, default 1024); near and far: world units (default: fit's, else the light's
+   *   shadow camera's)
    */
   constructor(who, light, options = {}) {
     checkLight(who, light);
@@ -136,12 +131,9 @@ export class LightDepthView {
     this.camera = cameraFor(light);
     /** World → the light's view (for a point light: centred on it, the world's axes; its faces turn from there). */
     this.viewMatrix = new Matrix4();
-    /** The target's resolution, pixels: checked by the subclass's setSize(this.size) once it has its target. */
+    /** Pixels: checked by the subclass's setSize(this.size). */
     this.size = size;
-    /**
-     * Whether the map holds the scene as last rendered: false until the first render and after
-     * `invalidate()`; materials send no transmittance from a map that does not.
-     */
+    /** Whether the map holds the scene as last rendered; no transmittance from one that does not. */
     this.valid = false;
     /** @type {Map<import('three').Material, import('three').Material>} depth materials of cut-out or clipped materials */
     this._shaped = new Map();
@@ -149,8 +141,7 @@ export class LightDepthView {
   }
 
   /**
-   * What a surface of `material` is drawn with from the light: null (left out: lightSees), the
-   * depth material that keeps its cut-out and clipping (hasOwnShape), or the shared one.
+   * What a surface of `material` is drawn with from the light; null: left out.
    * @param {import('three').Material|undefined|null} material
    */
   depthMaterialFor(material) {
@@ -158,7 +149,7 @@ export class LightDepthView {
     return hasOwnShape(material) ? this._shapedMaterial(material) : this.material;
   }
 
-  /** The depth material following `material`'s cut-out and clipping (one per material), its settings read now. */
+  /** One per material, its settings read now. */
   _shapedMaterial(material) {
     let shaped = this._shaped.get(material);
     if (!shaped) {
@@ -166,8 +157,7 @@ export class LightDepthView {
       this._shaped.set(material, shaped);
       material.addEventListener('dispose', this._onMaterialDispose);
     }
-    // three reads the cut-out and the clipping from these fields, for the depth material as for
-    // its own; alphaToCoverage counts as alphaTest 0.5, as in three's shadow maps.
+    // alphaToCoverage counts as alphaTest 0.5, as in three's shadow maps.
     const alphaTest = material.alphaToCoverage === true ? 0.5 : material.alphaTest;
     const map = material.map ?? null;
     const alphaMap = material.alphaMap ?? null;
@@ -184,14 +174,13 @@ export class LightDepthView {
     this._shaped.delete(material);
   }
 
-  /** Frees the target and the depth materials. */
   dispose() {
     this.renderTarget.dispose();
     this.material.dispose();
     for (const material of [...this._shaped.keys()]) this._forget(material);
   }
 
-  /** Marks the map out of date (its pass was skipped this frame): no transmittance until the next render. */
+  /** Its pass was skipped this frame: no transmittance until the next render. */
   invalidate() {
     this.valid = false;
   }
@@ -308,7 +297,6 @@ export class LightDepthView {
     if (this.isCube !== wasCube) this.setSize(this.size);
   }
 
-  /** Places the light camera on the light, looking at its target, with its angle or extent. */
   updateCamera() {
     const { light, camera } = this;
     light.updateMatrixWorld();
@@ -337,9 +325,7 @@ export class LightDepthView {
   }
 
   /**
-   * Places the light camera (updateCamera) and says what makes its frustum unusable, or null: a
-   * SpotLight angle outside (0, π/2], near ≤ 0 for a SpotLight, far ≤ near, a DirectionalLight's
-   * shadow camera of zero width or height, or any other projection that is not finite.
+   * Places the light camera and says what makes its frustum unusable, or null.
    * @returns {string|null}
    */
   frustumProblem() {

@@ -14,7 +14,6 @@ import { getProfile } from '../profiles/presets.js';
 import { AUTO_SAMPLES, METHOD_TABLE, PIPELINE_SCHEMA, checkOption } from '../options.js';
 import { blurModeOf, checkProfileCount, planBlur } from './blurPlan.js';
 import { SubsurfaceBlurPass } from './SubsurfaceBlurPass.js';
-import { DenseSubsurfacePass } from './DenseSubsurfacePass.js';
 import { KernelGroupTable } from './KernelGroupTable.js';
 import { MAX_KERNEL_GROUPS, checkKernelGroups } from './kernelGroups.js';
 import { tableOf } from '../profiles/FootprintTable.js';
@@ -84,6 +83,7 @@ export class BlurStage {
     this.horizontalPass = new SubsurfaceBlurPass({ ...blur, direction: 'horizontal' });
     this.verticalPass = new SubsurfaceBlurPass({ ...blur, direction: 'vertical', diffuseTexture: this._blurTarget.texture });
     this._densePass = null; // built when first asked for
+    this._DensePass = null; // its class, handed in by useDenseReference
     this._dense = false; // the dense reference runs instead of the separable passes (useDenseReference)
     this._size = { width: 1, height: 1 };
     this._multisampled = false;
@@ -155,7 +155,8 @@ export class BlurStage {
   /** The dense 2D reference (useDenseReference), built on first use. */
   get densePass() {
     if (!this._densePass) {
-      this._densePass = new DenseSubsurfacePass({ ...this._surface, profile: this._settings.profile, maxRadiusPx: DENSE_MAX_RADIUS_PX });
+      if (!this._DensePass) throw new Error('BlurStage: the dense reference is reached through useDenseReference (three-separable-sss/internals)');
+      this._densePass = new this._DensePass({ ...this._surface, profile: this._settings.profile, maxRadiusPx: DENSE_MAX_RADIUS_PX });
       this._densePass.setSize(this._size.width, this._size.height);
       this._densePass.setMultisampled(this._multisampled);
       this._densePass.setLightCarriesDepth(!this._multisampled);
@@ -366,9 +367,11 @@ export class BlurStage {
    * Validation only: true runs the dense 2D reference (DenseSubsurfacePass) instead of the
    * separable passes, false the passes again; a RangeError (nothing changed) with several profiles.
    * @param {boolean} enabled
+   * @param {typeof import('./DenseSubsurfacePass.js').DenseSubsurfacePass} DensePass the pass's class
    */
-  setDenseReference(enabled) {
+  setDenseReference(enabled, DensePass) {
     checkProfileCount(this.method, this.profileLookups.length, enabled);
+    this._DensePass = DensePass; // handed in, so the pass and its shader stay out of the product's bundle
     this._dense = enabled;
   }
 
@@ -458,19 +461,4 @@ export class BlurStage {
     this._groupTable.dispose();
     this.scatteredTarget.dispose();
   }
-}
-
-/**
- * Validation only (the tests and the bench, through three-separable-sss/internals): has `pipeline`
- * blur with the dense 2D reference, a brute-force 2D convolution with its one profile whose cost
- * grows with the square of the on-screen radius, instead of its separable passes; `enabled` false
- * puts the passes back. A RangeError (nothing changed) while its materials use several profiles.
- * @param {{ _blur: BlurStage }} pipeline a SubsurfaceScattering
- * @param {boolean} [enabled=true]
- * @returns {DenseSubsurfacePass|null} the dense pass (its coverage, radius), or null when disabled
- */
-export function useDenseReference(pipeline, enabled = true) {
-  if (typeof enabled !== 'boolean') throw new TypeError(`useDenseReference: enabled must be a boolean, got ${typeof enabled}`);
-  pipeline._blur.setDenseReference(enabled);
-  return enabled ? pipeline._blur.densePass : null;
 }

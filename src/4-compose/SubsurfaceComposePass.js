@@ -1,7 +1,5 @@
-// Stage 4: adds the scattered diffuse light back on top of the rest of the scene's light (the
-// multi-target's colour attachment), in linear HDR. Pixels that are not subsurface come out as
-// their material wrote them. Also offers a split view (unblurred on the left) and debug views of
-// each ingredient (src/4-compose/debugViews.js).
+// Stage 4: adds the scattered diffuse light back to the rest of the scene's light, linear HDR;
+// other pixels come out as their material wrote them. Split and debug views (src/4-compose/debugViews.js).
 import { AlwaysDepth, LessEqualDepth, Vector4 } from 'three';
 import { ShaderPass } from 'three/addons/postprocessing/ShaderPass.js';
 import vertexShader from '../../shaders/common/fullscreen.vert.glsl?raw';
@@ -18,20 +16,17 @@ import { PIPELINE_DEFAULTS } from '../options.js';
 
 const fragmentShader = assembleGlsl('SubsurfaceComposePass', composeGlsl, { 'common/finite.glsl': finiteGlsl, 'common/carriedDepth.glsl': carriedDepthGlsl });
 
-/** Adds the scattered diffuse light to the colour attachment (a ShaderPass); split and debug views. */
 export class SubsurfaceComposePass extends ShaderPass {
   /**
    * @param {object} options
    * @param {import('three').Texture} options.colorTexture the multi-target's colour attachment:
    *   specular + emissive of subsurface pixels, full colour elsewhere
    * @param {import('three').Texture} options.surfaceTexture the multi-target's surface attachment
-   * @param {import('three').Texture} options.diffuseTexture the diffuse light before the blur; its
-   *   alpha marks the mask, as 1, the coverage or a carried depth: not 0 (split view, debug views)
+   * @param {import('three').Texture} options.diffuseTexture the diffuse light before the blur; alpha
+   *   not 0 on the mask
    * @param {import('three').Texture|null} [options.scatteredTexture=null] the blurred diffuse light,
-   *   its alpha the mask as the diffuse's (0 off it: the blur's output, or the diffuse itself); null
-   *   reads the composer's read buffer
-   * @param {import('three').DepthTexture} options.depthTexture the multi-target's depth, written
-   *   out as the target's depth
+   *   alpha as the diffuse's; null: the composer's read buffer
+   * @param {import('three').DepthTexture} options.depthTexture the multi-target's depth, written out
    */
   constructor(options = {}) {
     const {
@@ -65,10 +60,9 @@ export class SubsurfaceComposePass extends ShaderPass {
   }
 
   /**
-   * Shows the final image or one ingredient: 'final', 'diffuse' (scattered), 'specular', 'depth'
-   * (near = white over `depthRange` world units), 'mask', 'thickness' (the thickness T(d) is read
-   * at, in profile mm: physical mm × (1 − translucency) / widthMm; `thicknessRangeMm` = white),
-   * 'transmittance'. The last two need the materials to write them (SubsurfaceScattering's debugView does).
+   * Shows the final image or one ingredient: 'depth' is white near over `depthRange` world units;
+   * 'thickness' the profile mm T(d) is read at, white at `thicknessRangeMm`. 'thickness' and
+   * 'transmittance' need the materials to write them (materialOutputOf).
    * @param {import('./debugViews.js').DebugView} view one of DEBUG_VIEWS
    * @param {{ depthRange?: number, thicknessRangeMm?: number }} [options]
    */
@@ -84,9 +78,8 @@ export class SubsurfaceComposePass extends ShaderPass {
   }
 
   /**
-   * How the output meets what the target already holds, as RenderPass's `clear` and `clearDepth`:
-   * clear = true writes every pixel, colour and depth; clear = false keeps the target's pixels where
-   * the scene drew nothing and, unless `clearDepth`, where the target's depth is nearer.
+   * As RenderPass's `clear` and `clearDepth`: false keeps the target's pixels where the scene drew
+   * nothing and, unless `clearDepth`, where the target's depth is nearer.
    * @param {boolean} clear
    * @param {boolean} [clearDepth=false]
    */
@@ -100,9 +93,8 @@ export class SubsurfaceComposePass extends ShaderPass {
   }
 
   /**
-   * The subsurface pixels' screen box (device pixels, origin bottom left, as
-   * SubsurfaceScenePass.subsurfaceBox; null: anywhere). Outside it no pixel is taken for subsurface
-   * and nothing is fetched but colour and depth.
+   * The subsurface pixels' screen box (device pixels, origin bottom left; null: anywhere): outside
+   * it only colour and depth are fetched.
    * @param {{ x: number, y: number, width: number, height: number }|null} box
    */
   setMaskBox(box) {
@@ -111,7 +103,7 @@ export class SubsurfaceComposePass extends ShaderPass {
   }
 
   render(renderer, writeBuffer, readBuffer, deltaTime, maskActive) {
-    // three r172 brought the reversed depth buffer (and getReversed); before it depth is never reversed.
+    // getReversed: three r172+.
     this.uniforms.farDepth.value = renderer.state.buffers.depth.getReversed?.() ? 0 : 1;
     super.render(renderer, writeBuffer, readBuffer, deltaTime, maskActive);
   }

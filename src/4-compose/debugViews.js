@@ -1,6 +1,5 @@
-// What the compose pass can show: the final image or one of its ingredients, and what each view
-// needs the subsurface materials to write into the diffuse attachment. The compose shader compares
-// the views by name (DEBUG_VIEW_MASK, ...: src/support/glsl.js's enumDefines), never by position.
+// What the compose pass can show, and what each view needs the materials to write; the shader
+// compares views by name (src/support/glsl.js's enumDefines).
 
 /**
  * What the compose can show (setDebugView).
@@ -8,7 +7,6 @@
  */
 
 /**
- * The accepted debug views.
  * @type {readonly DebugView[]}
  */
 export const DEBUG_VIEWS = Object.freeze(['final', 'diffuse', 'specular', 'depth', 'mask', 'thickness', 'transmittance']);
@@ -20,16 +18,13 @@ export const DEBUG_VIEWS = Object.freeze(['final', 'diffuse', 'specular', 'depth
 export const DEBUG_VIEW = Object.freeze(Object.fromEntries(DEBUG_VIEWS.map((view) => [view.toUpperCase(), view])));
 
 /**
- * What the diffuse attachment receives: the diffuse light, or one ingredient for a debug view
- * (the WebGL material hook's and the WebGPU node material's `sssDebugOutput`, by position).
+ * What the diffuse attachment receives (`sssDebugOutput` of both material hooks, by position).
  * @type {readonly ('diffuse'|'transmittance'|'thickness')[]}
  */
 export const MATERIAL_OUTPUTS = Object.freeze(['diffuse', 'transmittance', 'thickness']);
 
 /**
- * What the materials must write into the diffuse attachment for `view` (one of the material
- * hook's MATERIAL_OUTPUTS): the thickness and transmittance views replace the diffuse light with
- * that ingredient; every other view needs the diffuse light itself.
+ * What the materials must write into the diffuse attachment for `view`.
  * @param {DebugView} view one of DEBUG_VIEWS
  * @returns {'diffuse'|'thickness'|'transmittance'}
  */

@@ -1,24 +1,14 @@
-// three-separable-sss/postprocessing: the pipeline as a Pass of pmndrs `postprocessing`'s
-// EffectComposer, in place of its RenderPass:
+// three-separable-sss/postprocessing: the pipeline as a pmndrs `postprocessing` Pass, in place of
+// its RenderPass:
 //   const composer = new EffectComposer(renderer, { frameBufferType: HalfFloatType });
 //   const sss = new SubsurfaceScatteringPass({ scene, camera, light, worldUnitInMm: 1000 });
 //   sss.makeSubsurface(skinMaterial);
-//   composer.addPass(sss);                                   // instead of new RenderPass(scene, camera)
-//   composer.addPass(new EffectPass(camera, new BloomEffect(), new ToneMappingEffect()));
-//
-// SSS cannot be one of pmndrs's Effects: an Effect is a fragment function over the image, and the
-// pipeline needs its own draws of the scene (the split into diffuse light, depth and width). So it
-// is a Pass that behaves like pmndrs's RenderPass: it renders the scene into the composer's input
-// buffer (needsSwap false), leaves the scene's depth in that buffer's depth attachment and asks
-// the composer to blit it (needsDepthBlit), so EffectPass effects that read depth (SSAO, depth of
-// field) see the scene. The work is the three.js pass's (src/SubsurfaceScattering.js): this file
-// only adapts pmndrs's calling convention, render(renderer, inputBuffer, outputBuffer, deltaTime,
-// stencilTest), initialize(renderer, alpha, frameBufferType), setSize, setDepthTexture, dispose.
-//
-// The light it writes is linear HDR (the tone mapping comes last, e.g. a ToneMappingEffect), so
-// the composer's buffers must be half-float: pmndrs's default 8-bit buffers would clamp it at 1
-// and, with an sRGB output, store linear values where sRGB ones are expected. initialize() throws
-// a RangeError naming the fix instead of rendering that.
+//   composer.addPass(sss);
+//   composer.addPass(new EffectPass(camera, new ToneMappingEffect()));
+// Not an Effect: an Effect is a function over the image, and the pipeline draws the scene itself.
+// Like RenderPass it renders into the input buffer and has its depth blitted, so depth-reading
+// effects see the scene. The light is linear HDR: 8-bit buffers would clamp it, so initialize()
+// refuses them. The work is src/SubsurfaceScattering.js's; this adapts the calling convention.
 import { Pass } from 'postprocessing';
 import { FloatType, HalfFloatType, UnsignedByteType } from 'three';
 import { SubsurfaceScattering } from '../index.js';
@@ -34,25 +24,21 @@ function typeName(type) {
 export class SubsurfaceScatteringPass extends Pass {
   /** @param {import('../options.js').SubsurfaceScatteringOptions} options as for SubsurfaceScattering */
   constructor(options) {
-    // The pipeline checks the options (TypeError naming the one that is wrong) before pmndrs's
-    // Pass would substitute a scene and camera of its own for missing ones.
+    // Checked before pmndrs's Pass would substitute a scene and camera of its own for missing ones.
     const pipeline = new SubsurfaceScattering(options);
     super('SubsurfaceScatteringPass', pipeline.scene, pipeline.camera);
-    /** The three.js pass doing the work: every setting of SubsurfaceScattering is on it. */
+    /** The three.js pass doing the work, with every setting. */
     this.pipeline = pipeline;
-    this.needsSwap = false; // like pmndrs's RenderPass: the scene goes into the input buffer
-    this.needsDepthBlit = true; // the input buffer holds the scene's depth after render()
+    this.needsSwap = false;
+    this.needsDepthBlit = true;
   }
 
-  // `scene` and `camera` stay pmndrs Pass's plain properties (assignable, read every frame): render()
-  // hands them to the pipeline.
-
-  /** EffectComposer.setMainScene sets this, as for its RenderPass. @param {import('three').Scene} scene */
+  /** EffectComposer.setMainScene sets this. @param {import('three').Scene} scene */
   set mainScene(scene) {
     this.scene = this.pipeline.scene = scene;
   }
 
-  /** EffectComposer.setMainCamera sets this, as for its RenderPass. @param {import('three').Camera} camera */
+  /** EffectComposer.setMainCamera sets this. @param {import('three').Camera} camera */
   set mainCamera(camera) {
     this.camera = this.pipeline.camera = camera;
   }
@@ -67,7 +53,7 @@ export class SubsurfaceScatteringPass extends Pass {
   }
 
   /**
-   * Makes `material` scatter with this pass's profile, scale and light (SubsurfaceScattering.makeSubsurface).
+   * SubsurfaceScattering.makeSubsurface.
    * @param {import('three').MeshStandardMaterial} material
    * @param {import('../options.js').SubsurfaceMaterialOptions} [options]
    */
@@ -75,13 +61,13 @@ export class SubsurfaceScatteringPass extends Pass {
     return this.pipeline.makeSubsurface(material, options);
   }
 
-  /** The scene's depth from the last frame, a DepthTexture (the pipeline's). */
+  /** The scene's depth from the last frame. */
   getDepthTexture() {
     return this.pipeline.depthTexture;
   }
 
   /**
-   * Checks the composer's buffers: 8-bit ones cannot hold the linear HDR light this pass writes.
+   * Refuses 8-bit buffers.
    * @param {import('three').WebGLRenderer} renderer
    * @param {boolean} alpha
    * @param {number} frameBufferType
@@ -121,5 +107,4 @@ export class SubsurfaceScatteringPass extends Pass {
   }
 }
 
-// pmndrs Pass's plain boolean fields take booleans only here (`enabled = 'no'` would count as true).
 booleanFields(SubsurfaceScatteringPass.prototype, ['enabled', 'needsSwap', 'needsDepthBlit']);

@@ -8,19 +8,11 @@
 //     </SubsurfaceComposer>
 //   </Canvas>
 //
-// <SubsurfaceComposer> (or the hook useSubsurfaceScattering) owns a three.js EffectComposer with
-// half-float buffers: the SubsurfaceScattering pass in place of a RenderPass, then an OutputPass
-// (the renderer's tone mapping and output colour space, which R3F sets). It renders every frame
-// from a useFrame of priority 1, which tells R3F not to render the scene itself.
-//
-// What survives what, without a rebuild: the camera and the scene are read from R3F's state every
-// frame, so a camera swap (makeDefault, set({ camera })) needs nothing; the canvas size and pixel
-// ratio are followed each frame. What rebuilds: a change of renderer, light or pipeline option
-// disposes the pipeline and builds a new one, and the materials registered with it (<Subsurface>,
-// useSubsurface) are bound to the new one. Unmounting disposes everything it made (targets,
-// programs, the materials' hooks), so mounting and unmounting leaves three's memory as it was.
-//
-// Importing this file touches no DOM (React, R3F and three are imported, nothing runs).
+// <SubsurfaceComposer> owns an EffectComposer with half-float buffers: SubsurfaceScattering in place
+// of a RenderPass, then an OutputPass (R3F's tone mapping and colour space), rendered from a
+// useFrame of priority 1 (R3F then does not render itself). The camera, scene and size are read
+// every frame; a change of renderer, light or option rebuilds the pipeline and rebinds its
+// materials. Unmounting disposes all it made. Importing this file touches no DOM.
 import { createContext, createElement, useCallback, useContext, useEffect, useRef, useState } from 'react';
 import { useFrame, useThree } from '@react-three/fiber';
 import { HalfFloatType, WebGLRenderTarget } from 'three';
@@ -41,10 +33,7 @@ import { checkBoolean, checkInteger, checkOptions } from '../support/parameterCh
  *   samples of the composer's buffers (default 4); `enabled` false: R3F's plain render instead
  */
 
-/**
- * The pipeline of one <SubsurfaceComposer>, and the materials registered with it (they outlive
- * rebuilds of the pipeline).
- */
+/** The pipeline of one <SubsurfaceComposer>, and its materials (they outlive rebuilds). */
 class SubsurfaceRegistry {
   constructor() {
     /** @type {SubsurfaceScattering|null} the pipeline, null while none is built */
@@ -56,7 +45,6 @@ class SubsurfaceRegistry {
   }
 
   /**
-   * Makes `material` scatter in this composer (now, and after every rebuild).
    * @param {import('three').MeshStandardMaterial} material
    * @param {import('../options.js').SubsurfaceMaterialOptions} [options]
    */
@@ -92,7 +80,7 @@ function rebuildKey(options) {
   return JSON.stringify(options, (key, value) => (key === 'profile' && typeof value === 'object' ? undefined : value));
 }
 
-/** A light given as an object or as a ref to one; a list of them, or 'castShadow', as the pipeline takes it. */
+/** A light or a ref to one, a list of them, or 'castShadow', as the pipeline takes it. */
 function resolveLight(light) {
   if (!light) return null;
   if (Array.isArray(light)) return light.map(resolveLight); // an unset ref in it is refused by the pipeline, naming it
@@ -117,8 +105,7 @@ export function useSubsurfaceScattering(options = {}) {
   enabledRef.current = enabled;
   const size = useRef({ width: 0, height: 0, dpr: 0 });
 
-  // Built after the commit (a light's ref is set by then), disposed on unmount or rebuild. React's
-  // StrictMode runs this twice: the first pipeline is disposed before the second is built.
+  // Built after the commit, when a light's ref is set.
   useEffect(() => {
     const { scene, camera } = getState();
     const pass = new SubsurfaceScattering({ ...JSON.parse(key), ...(profile !== undefined && { profile }), scene, camera, light: resolveLight(light) });
@@ -143,7 +130,6 @@ export function useSubsurfaceScattering(options = {}) {
       state.gl.render(state.scene, state.camera); // priority 1 turned R3F's own render off
       return;
     }
-    // A camera swap (makeDefault) or a new scene is simply what this frame draws.
     pass.scene = state.scene;
     pass.camera = state.camera;
     const { width, height } = state.size;
@@ -170,7 +156,6 @@ export function SubsurfaceComposer({ children, ...options }) {
   return createElement(RegistryContext.Provider, { value: registry }, children);
 }
 
-/** The registry of the enclosing <SubsurfaceComposer>; throws outside one. */
 function useRegistry(name) {
   const registry = useContext(RegistryContext);
   if (!registry) throw new Error(`${name} must be used inside <SubsurfaceComposer>`);
@@ -178,8 +163,7 @@ function useRegistry(name) {
 }
 
 /**
- * The enclosing <SubsurfaceComposer>'s registry: `pass` (the SubsurfaceScattering, for its
- * settings as properties: pass.debugView = 'mask', pass.samples = 25; null until built) and `composer`.
+ * The enclosing <SubsurfaceComposer>'s registry: `pass` (null until built) and `composer`.
  * @returns {SubsurfaceRegistry}
  */
 export function useSubsurfaceComposer() {
@@ -214,8 +198,7 @@ export function Subsurface(props) {
   const live = useRef(false); // between this component's effect and its cleanup
   const options = useRef(props);
   options.current = props;
-  // R3F calls `attach` with the parent material (possibly while rendering, before effects run) and
-  // the cleanup it returns on detach; it keeps the first `attach` it is given.
+  // R3F may call `attach` while rendering, before effects run, and keeps the first one it is given.
   const attach = useCallback((parent) => {
     if (!parent?.isMeshStandardMaterial) {
       throw new TypeError(`<Subsurface> must be a child of <meshStandardMaterial> or <meshPhysicalMaterial>, got ${parent?.type ?? parent}`);

@@ -1,14 +1,13 @@
 /**
- * Float64 quadrature: Gauss-Legendre rules, adaptive Gauss-Legendre over a finite interval, and
- * the substitutions that map a semi-infinite or square-root-ended interval onto it. Used by the
- * profiles' numerical paths (Burley and dipole strips, custom profiles) and the energy tables.
+ * Float64 quadrature for the profiles' numerical paths and the energy tables: adaptive
+ * Gauss-Legendre, and substitutions for semi-infinite or square-root-ended intervals.
  * @module math/quadrature
  */
 
 const gaussLegendreCache = new Map();
 
 /**
- * n-point Gauss-Legendre nodes and weights on [-1, 1], by Newton iteration on P_n (computed once, cached).
+ * n-point Gauss-Legendre nodes and weights on [-1, 1], by Newton iteration on P_n (cached).
  * @param {number} n
  * @returns {{nodes: Float64Array, weights: Float64Array}}
  */
@@ -56,9 +55,8 @@ function glPanel(f, a, b, dim) {
 }
 
 /**
- * Adaptive Gauss-Legendre quadrature of a vector-valued function over a finite interval: a 10-point
- * panel is accepted when it agrees with the sum of its two halves within the tolerance, otherwise both
- * halves are refined with half the tolerance each (so the accepted errors add up to at most the tolerance).
+ * Adaptive Gauss-Legendre of a vector-valued function: a panel is accepted when it agrees with its
+ * two halves, else each half is refined with half the tolerance, so the errors add up to at most it.
  * @param {(x: number) => ArrayLike<number>} f integrand returning `dim` values
  * @param {number} a
  * @param {number} b

@@ -1,12 +1,10 @@
 /**
- * Float64 root finding on monotone functions: the profiles' radii, the energy tables' ranges and
- * the marginal kernel's tap quantiles all go through these three.
+ * Float64 root finding on monotone functions: profile radii, table ranges, tap quantiles.
  * @module math/roots
  */
 
 /**
- * Solves f(x) = target for a decreasing f by bisection to double precision: the bracket [lo, hi]
- * is first doubled upwards until f(hi) ≤ target (or hi reaches `limit`).
+ * Solves f(x) = target for a decreasing f by bisection, hi doubled first until f(hi) ≤ target.
  * @param {(x: number) => number} f
  * @param {number} target
  * @param {number} lo
@@ -25,9 +23,8 @@ export function solveDecreasing(f, target, lo, hi, limit = 1e9) {
 }
 
 /**
- * The first point of the geometric grid start, start·factor, start·factor², … (up to `limit`) at
- * which f is below `tail`: a coarse, always-finite range for a table whose end only has to lie
- * past the point where f stops mattering.
+ * The first point of the grid start·factorⁿ at which f is below `tail`: a coarse, always-finite
+ * table range, which only has to lie past where f stops mattering.
  * @param {(x: number) => number} f decreasing (at least eventually)
  * @param {number} tail
  * @param {{ start?: number, factor?: number, limit?: number }} [grid] default 0.25 mm, ×1.25, 1e5 mm
@@ -40,8 +37,8 @@ export function firstBelow(f, tail, { start = 0.25, factor = 1.25, limit = 1e5 }
 }
 
 /**
- * Finds x ≥ 0 with G(x) = target for a decreasing tail G (G(0) = 0.5), G' = −g; safeguarded Newton
- * (a Newton step that leaves the bisection bracket is replaced by a bisection step).
+ * Finds x ≥ 0 with G(x) = target for a decreasing tail G (G(0) = 0.5) by Newton safeguarded with
+ * bisection.
  * @param {(x: number) => number} G
  * @param {(x: number) => number} g the density (−G')
  * @param {number} target in (0, 0.5)

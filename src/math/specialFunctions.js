@@ -1,7 +1,6 @@
 /**
- * Float64 special functions the diffusion profiles need: erf and erfc (Gaussian sums' strip
- * energies), the normal interval probability, and the modified Bessel functions K0, K1 (the
- * marginals of Burley's profile and of the dipole). Each is checked against mpmath in the tests.
+ * Float64 special functions for the profiles: erf, erfc (Gaussian strips) and K0, K1 (Burley's and
+ * the dipole's marginals), each checked against mpmath in the tests.
  * @module math/specialFunctions
  */
 
@@ -42,7 +41,7 @@ function erfcContinuedFraction(x) {
 }
 
 /**
- * Error function, float64 accurate (|error| < 1e-15 absolute, checked against mpmath in the tests).
+ * Error function, |error| < 1e-15.
  * @param {number} x
  * @returns {number}
  */
@@ -68,8 +67,8 @@ export function erfc(x) {
 }
 
 /**
- * Probability that a zero-mean normal variable of variance v lies in [a, b] (a ≤ b, infinities allowed).
- * Uses erfc on the side of the tail so that far strips keep their relative accuracy.
+ * Probability that a zero-mean normal of variance v lies in [a, b] (infinities allowed); erfc on
+ * the tail's side keeps far strips' relative accuracy.
  * @param {number} a
  * @param {number} b
  * @param {number} varianceMm2
@@ -85,10 +84,9 @@ export function normalIntervalProbability(a, b, varianceMm2) {
 }
 
 /**
- * Modified Bessel function of the second kind K_nu(z), nu = 0 or 1, z > 0.
- * From the integral K_nu(z) = ∫_0^∞ e^{-z cosh t} cosh(nu t) dt (A&S 9.6.24) with the trapezoid rule,
- * which converges geometrically fast for this analytic, doubly-exponentially decaying integrand; the
- * step shrinks as 1/√z so the peak of width ~1/√z stays resolved. Relative error ~1e-15.
+ * Modified Bessel function K_nu(z), nu = 0 or 1, z > 0: the trapezoid rule on A&S 9.6.24,
+ * geometrically convergent for this doubly-exponential integrand; the step shrinks as 1/√z to
+ * resolve the peak. Relative error ~1e-15.
  * @param {0|1} nu
  * @param {number} z
  * @returns {number}

@@ -1,16 +1,12 @@
-// The 'footprint' blur's tap allocation (src/profiles/footprints.js) for one profile and tap budget,
-// as a float table the shader reads: row r (scale FOOTPRINT_SCALES.min · 2^(r / perOctave) px/mm)
-// holds, per footprint, its outer edge and where it is sampled, in profile mm (RG float).
-// Tables are pure numbers computed from the ProfileLookup's marginal row (the energies the GPU
-// reads), kept per profile and budget: 'auto' switches between a few budgets.
+// The 'footprint' blur's tap allocation (src/profiles/footprints.js) as the texture the shader reads,
+// computed from the ProfileLookup's marginal row (the energies the GPU reads).
 import { DataTexture, FloatType, NearestFilter, RGFormat } from 'three';
 import { footprintTable, FOOTPRINT_ROWS } from './footprints.js';
 
-/** profile → samples (or 'auto') → table (computing one takes tens of ms; 'auto' a few hundred). */
+/** profile → samples → table: one takes tens of ms, 'auto' a few hundred. */
 const tables = new WeakMap();
 
 /**
- * The footprint table's numbers for the lookup's current profile and `samples` (cached per profile).
  * @param {import('./ProfileLookup.js').ProfileLookup} lookup
  * @param {number|'auto'} samples
  */
@@ -33,9 +29,7 @@ export class FootprintTable {
   }
 
   /**
-   * Makes the texture hold the table of the lookup's current profile for `samples` taps.
-   * @param {number|'auto'} samples taps per direction (odd, ≥ 3), or 'auto': per scale the fewest
-   *   within AUTO_STEP_ERROR (the shader's loop then runs to AUTO_MAX_SAMPLES at most)
+   * @param {number|'auto'} samples taps per direction (odd, ≥ 3), or 'auto' (footprintTable)
    * @returns {DataTexture}
    */
   update(samples) {

@@ -1,9 +1,7 @@
-// A diffusion profile as a small float table the shaders read (shaders/common/profileLookup.glsl), so any
-// profile works on the GPU (Gaussian sums, Burley, dipole) from one JS source of truth:
-//   row 0: transmittance T(d) (energy beyond radius d), for the transmittance chunk;
-//   row 1: G(x) = ∫_0^x marginal, whose differences are the exact weight of any footprint of the
-//          separable blur (the 'footprint' blur method).
-// Texel i of a row holds x = (i / (size - 1))² · range: dense near 0, where the narrow Gaussians are.
+// A diffusion profile as a float table the shaders read (shaders/common/profileLookup.glsl), so any
+// profile works on the GPU: row 0 T(d), the energy beyond radius d; row 1 G(x) = ∫_0^x marginal,
+// whose differences weigh the blur's footprints exactly. Texel i holds x = (i / (size - 1))² · range:
+// dense near 0, where the narrow Gaussians are.
 import { DataTexture, FloatType, NearestFilter, RGBAFormat } from 'three';
 import { getProfile } from './presets.js';
 import { checkInteger, checkOptions } from '../support/parameterChecks.js';
@@ -12,18 +10,17 @@ import { firstBelow, solveDecreasing } from '../math/roots.js';
 /** Below this the tail of a row is invisible even at radiance 1000: the range ends there. */
 const TAIL = 1e-5;
 
-/** Smallest x (mm, growing by 25 % from 0.25) past which every channel of f(x) is below `TAIL`. */
+/** Smallest x (mm) past which every channel of f(x) is below `TAIL`. */
 const rangeWhere = (f) => firstBelow((x) => Math.max(...f(x)), TAIL);
 
 /** The x (mm) with 2 ∫_x^∞ marginal = tail in the widest channel: all but `tail` of both sides inside. */
 const radiusHolding = (profile, tail) => solveDecreasing((x) => 2 * Math.max(...profile.marginalIntegral(x, Infinity)), tail, 0, 0.25);
 
-/** A diffusion profile's T(d) and marginal CDF as a float texture for the shaders (see above). */
 export class ProfileLookup {
   /**
    * @param {string | object} [profile='skin'] a profile name or object (see `profiles`)
    * @param {{ size?: number }} [options] texels per row (16..4096); 512 puts skin's narrowest
-   *   Gaussian (σ = 0.08 mm) over ~10 texels of the square-root spacing, linear interpolation error < 1e-6
+   *   Gaussian (σ = 0.08 mm) over ~10 texels: interpolation error < 1e-6
    */
   constructor(profile = 'skin', options = {}) {
     const { size = 512 } = checkOptions('ProfileLookup options', options, ['size']);
@@ -34,14 +31,12 @@ export class ProfileLookup {
     this.setProfile(profile);
   }
 
-  /** Refills both rows from the profile's `transmittance` and `marginalIntegral`. */
   setProfile(profile) {
     const p = getProfile(profile);
     this.profile = p;
     this.transmittanceRangeMm = rangeWhere((d) => p.transmittance(d));
     this.marginalRangeMm = rangeWhere((x) => p.marginalIntegral(x, Infinity));
-    // Radius holding all but 1 % of every channel's marginal energy (both sides): what the blur
-    // must resolve pixel by pixel for the 'footprint' method to be exact within about 1 %.
+    // What the 'footprint' blur must resolve pixel by pixel to be exact within about 1 %.
     this.marginalRadiusMm = radiusHolding(p, 0.01);
     const { data, width } = this.texture.image;
     for (let i = 0; i < width; i++) {
@@ -53,8 +48,7 @@ export class ProfileLookup {
   }
 
   /**
-   * G(x) = ∫_0^x marginal, per channel, read from the table exactly as shaders/common/profileLookup.glsl
-   * reads row 1 (square-root spacing, linear between texels, held past the range).
+   * G(x) = ∫_0^x marginal, read from the table as shaders/common/profileLookup.glsl reads row 1.
    * @param {number} xMm
    * @returns {number[]} [r, g, b]
    */

@@ -1,16 +1,12 @@
-// Several profiles' GPU tables stacked for one blur pass (PROFILE_COUNT > 1): the blur reads a
-// pixel's own profile (its slot, src/profiles/profileSlots.js) from one texture of each kind
-// instead of binding one texture per profile.
-//   profileTexture: slot p's ProfileLookup rows at 2p (T(d)) and 2p + 1 (G(x)), same width;
-//   footprintTexture: slot p's FootprintTable rows at p · FOOTPRINT_ROWS + row (every profile's
-//     table has the same columns for the same tap budget);
-//   marginalRangesMm: slot p's ProfileLookup.marginalRangeMm.
-// Refilled only when the slots' profiles or the tap budget change (a table takes tens of ms).
+// Several profiles' GPU tables stacked for one blur pass (PROFILE_COUNT > 1), read by a pixel's slot
+// (src/profiles/profileSlots.js): profileTexture rows 2p (T(d)) and 2p + 1 (G(x)); footprintTexture
+// rows p · FOOTPRINT_ROWS + row (same columns for the same tap budget). Refilled only when the
+// profiles or the tap budget change: a table takes tens of ms.
 import { DataTexture, FloatType, NearestFilter, RGBAFormat, RGFormat } from 'three';
 import { FOOTPRINT_ROWS } from './footprints.js';
 import { tableOf } from './FootprintTable.js';
 
-/** A float texture of `width` × `height` with `format`, nearest-filtered (the shaders interpolate themselves). */
+/** Nearest-filtered: the shaders interpolate themselves. */
 function floatTexture(data, width, height, format, name) {
   const texture = new DataTexture(data, width, height, format, FloatType);
   texture.minFilter = texture.magFilter = NearestFilter;

@@ -1,12 +1,8 @@
-// A diffusion profile's energy over axis-aligned rectangles, as a 2D float table the dense
-// reference reads (shaders/common/quadrantEnergy.glsl):
-//   Q(a, b) = ∫_0^a ∫_0^b R(√(x² + y²)) dy dx   (a, b ≥ 0 mm; Q → 1/4 per channel as a, b → ∞)
-// so the energy over any pixel square [x0, x1] × [y0, y1] is the double difference
-// Q(x1, y1) − Q(x0, y1) − Q(x1, y0) + Q(x0, y0), Q extended as an odd function of each argument.
-// Exact for any radial profile up to the table's resolution, however narrow the profile is
-// against a pixel (skin's 0.08 mm Gaussian, Burley's 1/r centre), and the double differences of a
-// whole row or block telescope: interpolation errors cannot pile up over many pixels.
-// Texel (i, j) holds Q(x_i, x_j) with x_k = (k / (size − 1))² · range, like ProfileLookup's rows.
+// A profile's energy over axis-aligned rectangles, for the dense reference
+// (shaders/common/quadrantEnergy.glsl): Q(a, b) = ∫_0^a ∫_0^b R(√(x² + y²)) dy dx, odd in each
+// argument, so a pixel's energy is a double difference of Q: exact however narrow the profile is
+// against a pixel, and the differences of a row telescope, so interpolation errors cannot pile up.
+// Texel (i, j) holds Q(x_i, x_j), x_k = (k / (size − 1))² · range, like ProfileLookup's rows.
 import { DataTexture, FloatType, NearestFilter, RGBAFormat } from 'three';
 import { getProfile } from './presets.js';
 import { gaussLegendre } from '../math/quadrature.js';
@@ -18,7 +14,7 @@ const TAIL = 1e-6;
 /** Gauss-Legendre points per cell and axis: cells are small against the profile's variation. */
 const ORDER = 4;
 
-/** Smallest radius (mm, growing from 0.25 by 1.25×) outside which every channel holds < TAIL. */
+/** Smallest radius (mm) outside which every channel holds < TAIL. */
 const rangeOf = (profile) => firstBelow((r) => Math.max(...profile.transmittance(r)), TAIL);
 
 export class QuadrantEnergyLookup {
@@ -35,16 +31,13 @@ export class QuadrantEnergyLookup {
     this.setProfile(profile);
   }
 
-  /**
-   * Refills the table from the profile's radial function R: each cell between grid lines is
-   * integrated with a tensor Gauss-Legendre rule, then the cells are summed (float64) into Q.
-   */
+  /** Each cell by tensor Gauss-Legendre, then summed (float64) into Q. */
   setProfile(profile) {
     const p = getProfile(profile);
     const { data, width: n } = this.texture.image;
     const range = rangeOf(p);
     const grid = Float64Array.from({ length: n }, (_, k) => (k / (n - 1)) ** 2 * range);
-    // Quadrature points of every cell along one axis (the same on both: the table is symmetric).
+    // Quadrature points along one axis (the same on both).
     const { nodes, weights } = gaussLegendre(ORDER);
     const points = new Float64Array((n - 1) * ORDER);
     const pointWeights = new Float64Array((n - 1) * ORDER);
@@ -94,8 +87,7 @@ export class QuadrantEnergyLookup {
   }
 
   /**
-   * Q(a, b) read from the table exactly as shaders/common/quadrantEnergy.glsl reads it (odd in each
-   * argument, bilinear between texels in square-root coordinates, held past the range).
+   * Q(a, b) read from the table as shaders/common/quadrantEnergy.glsl reads it.
    * @param {number} aMm
    * @param {number} bMm
    * @returns {number[]} [r, g, b]

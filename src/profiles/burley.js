@@ -7,12 +7,10 @@ import { radialProfile, checkFraction } from './radialProfile.js';
 const rgbOf = (value) => (typeof value === 'number' ? [value, value, value] : value);
 
 /**
- * Burley's radius holding 99.7 % of the energy in units of the scatter distance: s·r for u = 0.003
- * from the closed-form inverse below (REFERENCE §2 quotes 16.56).
+ * The radius holding `fraction` of the energy, in scatter distances (16.56 at 99.7 %, REFERENCE §2):
+ * Christensen & Burley 2015's closed-form inverse, u = 1 − CDF.
  */
 function burleyScaledRadius(fraction) {
-  // Christensen & Burley 2015: with u = 1 − CDF, G = 1 + 4u(2u + √(1 + 4u²)),
-  // s·r = 3 ln((1 + G^{-1/3} + G^{1/3}) / (4u))
   const u = 1 - fraction;
   const G = 1 + 4 * u * (2 * u + Math.sqrt(1 + 4 * u * u));
   const g3 = Math.cbrt(G);

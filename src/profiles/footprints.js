@@ -1,24 +1,18 @@
 /**
- * Where the 'footprint' blur puts its taps. Per pixel the blur covers the pixels of one side of its
- * axis with contiguous footprints: the centre pixel alone, then BLOCKS footprints, then a last one
- * running to the end of the kernel. Each footprint is weighted by the exact energy of the profile's
- * marginal over its pixels and sampled once, between two texels, where it keeps the kernel's
- * variance (footprintSamplePosition). A footprint of one pixel is exact; a wider one answers a step
- * edge inside it with a step instead of the true ramp.
+ * Where the 'footprint' blur puts its taps: each side of the axis is covered by contiguous
+ * footprints (the centre pixel alone, then the rest, the last running to the kernel's end), each
+ * weighted by the marginal's exact energy over its pixels and sampled once, between two texels.
+ * A one-pixel footprint is exact; a wider one answers a step edge inside it with a step, not a ramp.
  *
- * For a footprint over pixels a..b sampled at t = q + f (q whole, 0 ≤ f < 1: texel q weighs 1 − f,
- * q + 1 weighs f), with E[i..j] the energy of pixels i..j and W = E[a..b], the worst step-edge
- * error (the edge at any pixel boundary inside it) is, per channel,
- *   max(E[a..q−1], |f·W − E[q+1..b]|, E[q+2..b])
- * (it only ever comes from the one footprint the edge falls in). The allocation minimises the
- * largest of these over all footprints and channels for the tap budget: a binary search on the
- * error bound, each step a greedy cover from the centre outwards (each footprint as wide as the
- * bound allows), which is optimal for a bound on contiguous segments. So the blur is pixel-exact
- * where the profile is steep and uses wide footprints where it is flat, for every channel at once.
+ * For a footprint over pixels a..b sampled at t = q + f (texel q weighs 1 − f, q + 1 weighs f),
+ * E[i..j] the energy of pixels i..j and W = E[a..b], the worst step-edge error is, per channel,
+ *   max(E[a..q−1], |f·W − E[q+1..b]|, E[q+2..b]).
+ * The allocation minimises the largest over all footprints and channels for the tap budget: a
+ * binary search on the bound, each step a greedy cover from the centre out (optimal for a bound on
+ * contiguous segments). So the blur is pixel-exact where the profile is steep, wide where it is flat.
  *
- * The allocation depends on the on-screen scale (pixels per profile mm), which varies per pixel:
- * FootprintTable computes it at FOOTPRINT_SCALES (log-spaced) and the shader takes the nearest row,
- * its edges in mm times the pixel's own scale (snapped, at least one pixel each).
+ * The allocation depends on the on-screen scale (px per profile mm): the table holds it at
+ * FOOTPRINT_SCALES and the shader takes the nearest row, scaled by the pixel's own scale.
  * @module profiles/footprints
  */
 
@@ -27,9 +21,8 @@ export const FOOTPRINT_SCALES = Object.freeze({ min: 0.125, max: 128, perOctave:
 
 /**
  * samples 'auto': at each scale the fewest taps whose worst step-edge error is at most this (a
- * fraction of the step). At 0.2 % the grating transfer is then within 0.03 of the analytic one too
- * (simulated for skin and skinBurley at 0.5-16 px/mm, gratings of 4 pixels per cycle and more; most
- * of what is left is the pixels' own box filter); at 0.3 % it reached 0.039 at 10 px/mm.
+ * fraction of the step). At 0.2 % the grating transfer stays within 0.03 of the analytic one
+ * (simulated, skin and skinBurley, 0.5-16 px/mm, gratings of 4 px per cycle and more).
  */
 export const AUTO_STEP_ERROR = 0.002;
 
@@ -42,9 +35,8 @@ const TAIL = 1e-5;
 const MAX_PIXELS = 4096;
 
 /**
- * Cumulative energy of one side in pixel units: P[c][j] = G(j + 1/2 px) − G(1/2 px), the energy of
- * pixels 1..j in channel c, from `G(xMm)` = ∫_0^x marginal (0 .. 1/2); and, over all channels,
- * S0[j] = Σ e_i and S2[j] = Σ e_i i² (i ≤ j) for the sample positions.
+ * Cumulative energy of one side: P[c][j], pixels 1..j of channel c; over all channels S0[j] = Σ e_i
+ * and S2[j] = Σ e_i i² (i ≤ j), for the sample positions.
  * @param {(xMm: number) => number[]} G
  * @param {number} pxPerMm
  * @returns {{ P: Float64Array[], S0: Float64Array, S2: Float64Array, R: number }} R: the pixels covered
@@ -74,12 +66,10 @@ function sideEnergy(G, pxPerMm) {
 const energy = (P, c, i, j) => (j < i ? 0 : P[c][j] - P[c][i - 1]);
 
 /**
- * Where the footprint over pixels a..b is sampled, pixels: the tap reads texels q and q + 1 with
- * weights 1 − f and f (t = q + f), whose second moment (1 − f)q² + f(q + 1)² is set to the
- * footprint's own, T = Σ e_j j² / Σ e_j over all channels: q = ⌊√T⌋, f = (T − q²) / (2q + 1). So the
- * footprints together keep the kernel's variance (within 0.3 % for skin's red at 5-10 px/mm; the
- * middle overshot it by up to 65 %, the plain centroid undershot by 5 %), which is what its
- * low-frequency transfer 1 − 2π²σ²f² and a point's spread depend on.
+ * Where the footprint over pixels a..b is sampled, px: the tap's second moment (1 − f)q² + f(q + 1)²
+ * equals the footprint's, T = Σ e_j j² / Σ e_j, so the footprints keep the kernel's variance, on
+ * which its low-frequency transfer 1 − 2π²σ²f² depends (the middle overshoots it, the centroid
+ * undershoots).
  */
 export function footprintSamplePosition({ S0, S2 }, a, b) {
   const total = S0[b] - S0[a - 1];
@@ -103,8 +93,8 @@ export function footprintError(side, a, b, t = footprintSamplePosition(side, a, 
 }
 
 /**
- * The fewest footprints over pixels 1..R with every error ≤ bound, each as wide as it may be (its
- * end found by doubling then bisection: a footprint's error grows with its width).
+ * The fewest footprints over pixels 1..R with every error ≤ bound, each as wide as it may be
+ * (doubling then bisection: the error grows with the width).
  */
 function greedyCover(side, R, bound) {
   const ends = [];
@@ -207,12 +197,10 @@ export function autoFootprintAllocation(G, pxPerMm, maxError = AUTO_STEP_ERROR) 
 }
 
 /**
- * The allocation at every table scale, in profile mm, two numbers per footprint: texel k of row r
- * holds (outer edge, sample offset) of footprint k, the last footprint's edge being Infinity
- * (it runs to the kernel's end; the shader stops there). Texels past it are unused.
+ * The allocation at every table scale, in profile mm: texel k of row r holds (outer edge, sample
+ * offset) of footprint k; the last footprint's edge is Infinity (the kernel's end).
  * @param {(xMm: number) => number[]} G
- * @param {number|'auto'} samples a fixed budget for every row, or 'auto': per row the fewest taps
- *   within AUTO_STEP_ERROR (autoFootprintAllocation)
+ * @param {number|'auto'} samples a fixed budget, or 'auto': per row the fewest taps within AUTO_STEP_ERROR
  * @returns {{ data: Float32Array, columns: number, rows: number, stepError: Float64Array, samples: Int32Array }}
  *   data: RG pairs, `columns` footprints per row ((samples − 1) / 2, AUTO_MAX_SAMPLES's for 'auto');
  *   stepError and samples per row

@@ -1,18 +1,15 @@
-// Any radial profile as a sum of 2D Gaussians (d'Eon & Luebke 2007's form), so the isotropic
-// blur (src/3-blur/kernelGroups.js) can split it into groups of Gaussians, each exactly separable.
-// Gaussian-sum profiles are their own fit; Burley and dipole profiles are fit here: their marginal's
-// energy G(x) = ∫_0^x a, the quantity the blur's footprints weigh with, by non-negative weights on
-// Gaussians of fixed, doubling widths. The blur keeps the profile's exact energies and uses the fit
-// only to share each footprint's energy between the groups, so the fit's error never reaches the
-// transfer along the screen axes; its error is stated as `stepError` (the worst |fit − G| over x,
-// per channel, a fraction of a unit step: what a step edge blurred with the fit would be off by).
+// Any radial profile as a sum of 2D Gaussians (d'Eon & Luebke 2007), so the isotropic blur
+// (src/3-blur/kernelGroups.js) can split it into exactly separable groups. Burley and dipole are fit
+// here: G(x) = ∫_0^x marginal, by non-negative weights on Gaussians of fixed widths. The blur uses
+// the fit only to share each footprint's exact energy between groups, so its error never reaches
+// the transfer along the screen axes. `stepError`: the worst |fit − G| per channel.
 import { erf } from '../math/specialFunctions.js';
 
-/** The fit's Gaussians: σ from a quarter of the narrowest channel's length to 8 times the widest's, doubling. */
+/** The fit's σ: from 0.03 × the narrowest channel's median radius to 8 × the widest's, by 2.2. */
 const SIGMA_RANGE = Object.freeze({ belowNarrowest: 0.03, aboveWidest: 8, ratio: 2.2 });
-/** Where G is matched: this many x, square-root spaced (dense near 0, where Burley is steepest). */
+/** Where G is matched: square-root spaced, dense near 0 where Burley is steepest. */
 const FIT_POINTS = 400;
-/** How strongly the fit keeps unit energy per channel (a row of the least squares, this heavy). */
+/** The weight of the unit-energy row of the least squares. */
 const UNIT_ENERGY_WEIGHT = 100;
 
 /**
@@ -64,12 +61,11 @@ function leastSquaresOn(A, b, columns) {
 /** 0.5 erf(x / √(2v)): a normalised Gaussian's marginal energy from 0 to x. */
 const halfEnergy = (xMm, varianceMm2) => 0.5 * erf(xMm / Math.sqrt(2 * varianceMm2));
 
-/** profile → its fit (fitting takes a few ms; the built-ins are fit at most once). */
+/** profile → its fit (a few ms). */
 const fits = new WeakMap();
 
 /**
- * The profile as a Gaussian sum: its own `gaussians` when it has them (exact, stepError 0), else a
- * fit of its marginal energy G(x) (see the header).
+ * The profile as a Gaussian sum: its own `gaussians` (exact), else the fit.
  * @param {object} profile a profile (see src/profiles/radialProfile.js)
  * @returns {{ gaussians: ReadonlyArray<{ varianceMm2: number, weights: number[] }>, stepError: number[], exact: boolean }}
  *   the Gaussians by increasing variance, RGB weights (each channel sums to 1 within 1e-3)

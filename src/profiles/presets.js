@@ -22,10 +22,8 @@ export const DEON_SKIN_GAUSSIANS = Object.freeze(
 );
 
 /**
- * Jimenez 2009 four-Gaussian fit of marble (REFERENCE §2). The published table has a leading (0, 0, 0)
- * weight row that belongs to a zero-variance (delta) term with no energy: it is dropped, and the four
- * variances pair with the four remaining rows. The published green and blue weights sum to 0.9999, so
- * gaussianSumProfile renormalises each channel to sum exactly 1.
+ * Jimenez 2009 four-Gaussian fit of marble (REFERENCE §2). The table's leading (0, 0, 0) weight row,
+ * a zero-variance term with no energy, is dropped; green and blue sum to 0.9999 and are renormalised.
  * @type {ReadonlyArray<Readonly<{varianceMm2: number, weights: ReadonlyArray<number>}>>}
  */
 export const MARBLE_GAUSSIANS = Object.freeze(
@@ -38,19 +36,15 @@ export const MARBLE_GAUSSIANS = Object.freeze(
 );
 
 /**
- * Scatter distances of the `skinBurley` preset, chosen so that each channel's 99.7 % radius equals the
- * d'Eon skin profile's: l_c = skin.radiusMm(0.997)_c / 16.5644 (Burley's 99.7 % radius is 16.5644 l).
- * Computed with this module (skin 99.7 % radii 6.9494, 1.6083, 0.98327 mm), rounded to 5 digits; the
- * unit tests recompute them. Matching only this radius leaves the shapes different: Burley's sharp
- * centre and exponential tail versus the Gaussians' rounded ones.
+ * `skinBurley`'s scatter distances: each channel's 99.7 % radius equals d'Eon skin's,
+ * l_c = skin.radiusMm(0.997)_c / 16.5644 (Burley's 99.7 % radius is 16.5644 l), to 5 digits (the
+ * unit tests recompute them). The shapes still differ: Burley's sharp centre and exponential tail.
  */
 export const SKIN_BURLEY_SCATTER_DISTANCE_MM = Object.freeze([0.41954, 0.097094, 0.059361]);
 
 /**
- * Whole milk, from the table of measured scattering coefficients in Jensen et al. 2001 ("A practical
- * model for subsurface light transport", SIGGRAPH; σs', σa per RGB for marble, skin, milk, ketchup, ...):
- * σs' = (2.55, 3.21, 3.77)/mm, σa = (0.0011, 0.0024, 0.014)/mm, η = 1.3.
- * Caveat: recalled, not re-read from the paper here (REFERENCE.md names the table, not its numbers);
+ * Whole milk, from the measured coefficients of Jensen et al. 2001 ("A practical model for subsurface
+ * light transport"), per mm. Recalled, not re-read (REFERENCE.md names the table, not its numbers):
  * check them against the paper before relying on milk quantitatively.
  */
 export const WHOLE_MILK_COEFFICIENTS = Object.freeze({
@@ -59,13 +53,7 @@ export const WHOLE_MILK_COEFFICIENTS = Object.freeze({
   eta: 1.3,
 });
 
-/**
- * The built-in profiles (built on import: pure computation, no side effects):
- * - skin: d'Eon & Luebke six Gaussians
- * - skinBurley: Burley with SKIN_BURLEY_SCATTER_DISTANCE_MM (same 99.7 % radii as skin)
- * - marble: Jimenez 2009 four-Gaussian marble fit
- * - milk: Jensen 2001 dipole of whole milk
- */
+/** The built-in profiles, from the data above. */
 export const profiles = Object.freeze({
   skin: gaussianSumProfile('skin', DEON_SKIN_GAUSSIANS),
   skinBurley: burleyProfile({ name: 'skinBurley', scatterDistanceMm: [...SKIN_BURLEY_SCATTER_DISTANCE_MM] }),
@@ -74,10 +62,8 @@ export const profiles = Object.freeze({
 });
 
 /**
- * The reference transmittance of Jimenez et al. 2010 (REFERENCE §5) for skin:
- *   T(s) = Σ_i w_i exp(−s²/v_i) over the six d'Eon Gaussians.
- * This is NOT the exact integral of the profile (that is profiles.skin.transmittance, with exp(−s²/2v));
- * the two agree at s_exact = √2 · s. Kept because the reference's artist-tuned scale assumes it.
+ * Jimenez et al. 2010's skin transmittance (REFERENCE §5), T(s) = Σ w_i exp(−s²/v_i): not the exact
+ * integral (profiles.skin.transmittance, exp(−s²/2v), equal at √2·s); the reference's scale assumes it.
  * @param {number} sMm scaled thickness in mm
  * @returns {number[]} [r, g, b]
  */
@@ -102,7 +88,7 @@ const SAMPLE_SCALES = Object.freeze([0.1, 0.5, 1, 2, 5]);
 /** Profiles already checked: the built-ins (known good) and each custom object once. */
 const checkedProfiles = new WeakSet(Object.values(profiles));
 
-/** Checks one call's [r, g, b]: an array of 3 finite numbers, each ≥ 0 (naming the call and the channel). */
+/** Checks one call's [r, g, b]: 3 finite numbers ≥ 0. */
 function checkChannels(who, call, values) {
   if (!values || typeof values !== 'object' || !(values.length >= 3)) {
     throw new TypeError(`${who}: ${call} must return [r, g, b], got ${describeValue(values)}`);
@@ -117,7 +103,7 @@ function checkChannels(who, call, values) {
   return values;
 }
 
-/** Checks that a call gives 1 per channel within PROFILE_ENERGY_TOLERANCE (a profile carries unit energy). */
+/** Checks that a call gives 1 per channel within PROFILE_ENERGY_TOLERANCE. */
 function checkUnitEnergy(who, call, values) {
   checkChannels(who, call, values);
   for (let c = 0; c < 3; c++) {
@@ -129,9 +115,7 @@ function checkUnitEnergy(who, call, values) {
 }
 
 /**
- * Checks a custom profile once, where it is first accepted: its functions sampled at a few radii
- * give finite, non-negative values, and it carries unit energy per channel. The message names the
- * profile, the function, the argument and the channel that fail.
+ * Checks a custom profile once: finite, non-negative values at a few radii, unit energy per channel.
  * @param {object} profile
  * @returns {object} the profile
  */
@@ -158,7 +142,7 @@ function checkCustomProfile(profile) {
 }
 
 /**
- * Resolves a profile name or checks a profile object (once per object: see checkCustomProfile).
+ * Resolves a profile name or checks a profile object.
  * @param {'skin'|'skinBurley'|'marble'|'milk'|object} nameOrProfile
  * @returns {Readonly<object>} the profile
  * @throws {TypeError} for anything else, naming the accepted names; for a profile whose functions

@@ -1,19 +1,15 @@
-// Several profiles in one pipeline, pure: which profiles a frame holds and the index each material
-// writes into the multi-target (src/2-scene-split/subsurfaceTarget.js, the surface's b channel).
-// Slot 0 is the first profile in use, so a frame of one profile has one slot whatever the
-// pipeline's default is; the blur is then compiled as without this feature (PROFILE_COUNT 1).
-// test/node/profiles/profileSlots.test.js.
+// Which profiles a frame holds and the slot each material writes (the b channel of
+// src/2-scene-split/subsurfaceTarget.js). Slot 0 is the first profile in use, so a frame of one
+// profile compiles the blur with PROFILE_COUNT 1 whatever the pipeline's default.
 
 /**
- * The most profiles one pipeline blurs in a frame. Each slot costs a 2-row block of the stacked
- * profile table and FOOTPRINT_ROWS rows of the stacked footprint table; 8 keeps both small (8 × 81
- * rows) and the per-slot uniform array short; Unity HDRP allows 15.
+ * The most profiles one pipeline blurs in a frame: 8 keeps the stacked tables (2 + FOOTPRINT_ROWS
+ * rows a slot) and the per-slot uniform array small; Unity HDRP allows 15.
  */
 export const MAX_PROFILES = 8;
 
 /**
- * The slots of a frame: the distinct profiles among `profiles` (each material's, in binding
- * order; the pipeline's own when none is bound), each material's slot.
+ * The distinct profiles among `profiles` (in binding order) and each material's slot.
  * @template P
  * @param {readonly P[]} profiles each bound material's profile (objects compared by identity)
  * @param {P} fallback the pipeline's profile: the one slot when no material is bound

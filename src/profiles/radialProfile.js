@@ -1,9 +1,6 @@
 /**
- * Diffusion profiles: how much of the light entering a surface at one point leaves it at distance r.
- *
- * Every profile works per RGB channel, takes distances in millimetres and is normalised so that each
- * channel carries unit energy over the plane (the colour/albedo is applied by the material, not here).
- *
+ * Diffusion profiles: how much of the light entering a surface at one point leaves it at distance r,
+ * per RGB channel, in millimetres, unit energy per channel (the material applies the albedo).
  * A profile object has:
  * - `name`                          string
  * - `R(rMm)`                        radial profile [r,g,b] in 1/mm², ∫∫ R dA = 1 per channel
@@ -15,8 +12,7 @@
  * - `lengthScaleMm`                 a typical radius (largest channel's median radius), used to scale quadratures
  * - `gaussians`                     Gaussian-sum profiles only: [{ varianceMm2, weights: [r,g,b] }]
  *
- * `radialProfile` builds one from R alone, deriving every missing part numerically; the closed-form
- * families (gaussianSum.js, burley.js, dipole.js) give their own parts and let it fill the rest.
+ * `radialProfile` derives the parts a closed-form family (gaussianSum.js, burley.js, dipole.js) lacks.
  * @module profiles/radialProfile
  */
 
@@ -34,12 +30,10 @@ export function checkFraction(fraction) {
 }
 
 /**
- * Energy of a radial profile over the strip x0 < x < x1 (the generic numerical path for marginalIntegral):
- *   ∫∫_{x0<x<x1} R dA = ∫_0^∞ R(r) · r · Θ(r) dr,  Θ(r) = 2 (acos(clamp(x0/r)) − acos(clamp(x1/r))),
- * Θ(r) being the angle of the circle of radius r that lies inside the strip. Θ is constant below
- * min(|x0|, |x1|) and has square-root kinks at |x0| and |x1|, so the integral is split there and each
- * piece is integrated with a u² substitution at its left end (adaptive Gauss-Legendre). R's 1/r
- * singularity (Burley) is harmless: the integrand carries R·r. Relative error < 1e-9 in the tests.
+ * Energy of a radial profile over the strip x0 < x < x1: ∫_0^∞ R(r) · r · Θ(r) dr, Θ(r) the angle of
+ * the circle of radius r inside the strip. Θ is constant below min(|x0|, |x1|) and has square-root
+ * kinks at |x0| and |x1|: the integral is split there, each piece with a u² substitution at its left
+ * end. R's 1/r singularity (Burley) is harmless: the integrand carries R·r.
  * @param {(rMm: number) => ArrayLike<number>} R radial profile (RGB)
  * @param {number} x0Mm lower bound (may be -Infinity)
  * @param {number} x1Mm upper bound (may be Infinity)
@@ -61,7 +55,7 @@ export function stripIntegral(R, x0Mm, x1Mm, { lengthScaleMm, cdf, absTol = 1e-1
     .filter((b) => Number.isFinite(b) && b > 0)
     .sort((a, b) => a - b);
   const first = breaks.length > 0 ? breaks[0] : Infinity;
-  // Θ is constant on (0, first): evaluate it inside and integrate R·r over the disk
+  // Θ is constant on (0, first)
   const thetaInner = theta(first === Infinity ? 1 : first / 2);
   let total;
   if (cdf) {
@@ -87,13 +81,8 @@ export function stripIntegral(R, x0Mm, x1Mm, { lengthScaleMm, cdf, absTol = 1e-1
 }
 
 /**
- * Fills the parts of a profile that have no closed form with the generic numerical paths, and freezes it.
- * `R` and `lengthScaleMm` are required; `marginal`, `marginalIntegral`, `transmittance`, `cdf` and
- * `radiusMm` are derived when missing:
- * - marginal: a(x) = 2∫_0^∞ R(|x| cosh t) |x| cosh t dt (r = |x| cosh t removes the 1/√(r²−x²) singularity)
- * - marginalIntegral: stripIntegral
- * - transmittance: ∫_d^∞ R(r) 2πr dr, cdf = 1 − transmittance
- * - radiusMm: bisection on the cdf.
+ * Fills the parts of a profile without closed form numerically, and freezes it. The marginal
+ * substitutes r = |x| cosh t, which removes the 1/√(r²−x²) singularity.
  * @param {{name: string, R: (rMm: number) => number[], lengthScaleMm: number,
  *   marginal?: Function, marginalIntegral?: Function, transmittance?: Function, cdf?: Function,
  *   radiusMm?: Function, gaussians?: Array}} parts

@@ -1,14 +1,12 @@
-// Boolean-only fields for the library's passes. three's Pass (and pmndrs's) keeps `enabled`,
-// `needsSwap`, `clear` and `renderToScreen` as plain fields, so `pass.enabled = 'no'` would be
-// kept and read as true. These accessors, on the class's prototype, take booleans only (a TypeError
-// naming the class and the field otherwise) and read back the boolean, as EffectComposer expects.
-// Defined at runtime, not in the class body: the declarations keep the base class's `boolean` fields.
+// three's Pass keeps `enabled` and the like as plain fields, so `pass.enabled = 'no'` would read as
+// true: these accessors take booleans only. Defined at run time, not in the class body, so the
+// declarations keep the base class's `boolean` fields.
 import { checkBoolean } from './parameterChecks.js';
 
 const values = new WeakMap();
 
 /**
- * Makes each of `names` a boolean-only accessor on `prototype` (instances keep their values privately).
+ * Makes each of `names` a boolean-only accessor on `prototype`.
  * @param {object} prototype a class's prototype
  * @param {ReadonlyArray<string>} names
  */
@@ -30,5 +28,4 @@ export function booleanFields(prototype, names) {
   }
 }
 
-/** The fields of three's Pass that are booleans. */
 export const PASS_BOOLEANS = Object.freeze(['enabled', 'needsSwap', 'clear', 'renderToScreen']);

@@ -1,12 +1,8 @@
 // What the orchestrator checks before each frame, where three itself would draw silently:
-// - the size setSize gave against the GPU's largest render target (a RangeError: nothing could be
-//   drawn at that size, and three's own buffers fail there too);
-// - the camera (a projection that is not finite: NaN near or far, a zero-area view), the scene
-//   (an overrideMaterial) and the pipeline's light (removed from the scene, a colour or intensity
-//   that is not finite, a light frustum of zero size): each is a console warning, once per
-//   pipeline, and a message in `sss.problems` while it lasts; the frame is drawn as three would draw
-//   it (nothing for a broken camera, no scattering under an override, no transmittance from a
-//   broken light), never with NaN pixels.
+// - the size against the GPU's largest render target (a RangeError: three's buffers fail there too);
+// - the camera, the scene (an overrideMaterial) and the light: a console warning once per pipeline
+//   and a message in `sss.problems` while it lasts; the frame is drawn as three would draw it,
+//   never with NaN pixels.
 import { checkNumber } from './parameterChecks.js';
 import { MAX_TARGET_SIZE } from '../options.js';
 
@@ -17,8 +13,7 @@ const GL_MAX_RENDERBUFFER_SIZE = 0x84e8;
 const limitsByRenderer = new WeakMap();
 
 /**
- * The largest render target `renderer`'s GPU makes, pixels per side (the smaller of
- * MAX_TEXTURE_SIZE and MAX_RENDERBUFFER_SIZE), with both.
+ * The largest render target `renderer`'s GPU makes, pixels per side, and the two limits behind it.
  * @param {import('three').WebGLRenderer} renderer
  * @returns {{ texture: number, renderbuffer: number, size: number }}
  */
@@ -37,8 +32,8 @@ export function renderTargetLimits(renderer) {
 }
 
 /**
- * Checks a size given to setSize: finite numbers of at least 1 pixel (three's composer passes
- * fractional ones with a fractional pixel ratio), and within `limits` when the GPU's are known.
+ * Checks a size given to setSize: at least 1 pixel (three's composer passes fractional ones with a
+ * fractional pixel ratio), and within `limits` when known.
  * @param {*} width
  * @param {*} height
  * @param {string} who e.g. 'SubsurfaceScattering.setSize'
@@ -60,7 +55,7 @@ function checkWithin({ width, height }, limits, who) {
 }
 
 /**
- * Checks the size last given to setSize against `renderer`'s GPU (see checkTargetSize).
+ * Checks the size last given to setSize against `renderer`'s GPU.
  * @param {import('three').WebGLRenderer} renderer
  * @param {{ width: number, height: number }} size
  * @param {string} who
@@ -74,17 +69,13 @@ export function checkTargetLimits(renderer, size, who) {
 
 const format = (v) => (Number.isFinite(v) ? String(Number(v.toPrecision(6))) : String(v));
 
-/** True when every element of a Matrix4 is finite. */
 function finiteMatrix(matrix) {
   const e = matrix.elements;
   for (let i = 0; i < 16; i++) if (!Number.isFinite(e[i])) return false;
   return true;
 }
 
-/**
- * A frame's checks of the camera, the scene and the light (see the header): `begin()`, the checks,
- * `end()`; `current` holds the last frame's messages. Each kind of problem is warned about once.
- */
+/** A frame's checks: `begin()`, the checks, `end()`; `current` holds the last frame's messages. */
 export class FrameChecks {
   /** @param {string} who the class named in the warnings */
   constructor(who) {
@@ -104,7 +95,7 @@ export class FrameChecks {
     this.current = this._next ? Object.freeze(this._next) : (this.current.length ? Object.freeze([]) : this.current);
   }
 
-  /** Records a problem of kind `key` (warned about the first time only). */
+  /** Warns the first time only per `key`. */
   problem(key, message) {
     (this._next ??= []).push(message);
     if (this._warned.has(key)) return;
@@ -112,7 +103,7 @@ export class FrameChecks {
     console.warn(`${this.who}: ${message}`);
   }
 
-  /** A camera whose projection is not finite draws nothing (in three too): say why. */
+  /** A camera whose projection is not finite draws nothing (in three too). */
   camera(camera) {
     const perspective = camera.isPerspectiveCamera === true;
     const { near, far } = camera;
@@ -128,7 +119,6 @@ export class FrameChecks {
     return false;
   }
 
-  /** scene.overrideMaterial: the scene is drawn with it, as three draws it, without scattering. */
   scene(scene) {
     if (!scene.overrideMaterial) return true;
     this.problem('overrideMaterial', 'scene.overrideMaterial is set: the scene is drawn with it as three draws it, without subsurface scattering or transmittance');
@@ -136,8 +126,8 @@ export class FrameChecks {
   }
 
   /**
-   * The pipeline's light: its colour and intensity (checked whenever there is one: three lights
-   * the scene with them) and, while transmittance is on, its place in the scene and its frustum.
+   * The light's colour and intensity (always: three lights the scene with them) and, with
+   * transmittance on, its place in the scene and its frustum.
    * @param {import('../1-light-depth/LightDepthTarget.js').LightDepthTarget} lightDepth
    * @param {import('three').Scene} scene
    * @param {boolean} transmittance

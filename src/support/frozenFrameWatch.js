@@ -1,16 +1,13 @@
-// Upgrading from 0.1, where `sss.enabled = false` turned the blur off: since 0.2 it skips the
-// pass, as for any pass, and where nothing else draws the scene the composer shows its last frame,
-// frozen. A disabled pass is never called, but EffectComposer reads `pass.enabled` every frame, so
-// the accessor watches: on a read after the renderer has drawn something (info.render.frame moved)
-// it asks whether anything drew the pass's scene in between (three calls scene.onAfterRender on
-// every renderer.render(scene, ...)). Two such frames in a row without it: one console warning.
-// A RenderPass drawing the scene each frame never leaves two in a row, whatever the pass order.
-// While the pass is enabled nothing is watched; the scene's hook is there only while it is disabled.
+// `sss.enabled = false` skips the pass, and where nothing else draws the scene the composer shows
+// its last frame, frozen. A disabled pass is never called, but EffectComposer reads `enabled` every
+// frame: on a read after a new frame (info.render.frame) the accessor asks whether anything drew the
+// scene in between (scene.onAfterRender). Two frames in a row without: one console warning. The
+// scene's hook is there only while the pass is disabled.
 
 /** Frames in a row without a draw of the scene before it counts as frozen. */
 const FROZEN_FRAMES = 2;
 
-/** pass → the renderer of its last frame (set by watchRendered). */
+/** pass → the renderer of its last frame. */
 const renderers = new WeakMap();
 /** pass → its watch, from the first time it is disabled after a frame. */
 const watches = new WeakMap();
@@ -25,7 +22,6 @@ class FrozenFrameWatch {
     this.unhook = null;
   }
 
-  /** Starts watching `scene` (the pass was just disabled). */
   start(scene) {
     this.stop();
     if (this.warned) return;
@@ -34,7 +30,7 @@ class FrozenFrameWatch {
     this.hook(scene);
   }
 
-  /** Marks draws of `scene` through its onAfterRender, chained to whatever it had. */
+  /** Chained to whatever onAfterRender the scene had. */
   hook(scene) {
     const watch = this;
     const own = Object.hasOwn(scene, 'onAfterRender');
@@ -59,7 +55,7 @@ class FrozenFrameWatch {
     this.scene = null;
   }
 
-  /** One read of `enabled` (false) by the composer, or by anyone: counts only once a frame was drawn. */
+  /** A read of `enabled` (false): counts once a frame. */
   check(scene) {
     if (this.scene === null) return;
     if (scene !== this.scene) this.start(scene); // the pass's scene was reassigned meanwhile
@@ -76,9 +72,8 @@ class FrozenFrameWatch {
 }
 
 /**
- * Wraps the `enabled` accessor of `prototype` (booleanFields' boolean-only one) so that a disabled
- * pass whose scene nothing draws warns once with `message`. The pass calls `watchRendered` from
- * render() (the renderer whose frames to count) and `stopWatching` from dispose().
+ * Wraps `prototype`'s `enabled` accessor (booleanFields') to warn once with `message`; the pass
+ * calls `watchRendered` from render() and `stopWatching` from dispose().
  * @param {object} prototype
  * @param {string} message
  */
@@ -107,12 +102,10 @@ export function warnWhenDisabledFreezes(prototype, message) {
   });
 }
 
-/** From the pass's render(): the renderer its frames go through. */
 export function watchRendered(pass, renderer) {
   renderers.set(pass, renderer);
 }
 
-/** From the pass's dispose(): the scene's hook removed. */
 export function stopWatching(pass) {
   watches.get(pass)?.stop();
 }

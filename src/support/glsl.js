@@ -1,17 +1,11 @@
-// The one way this library puts GLSL together, and the one way its enums reach GLSL.
-//
-// - assembleGlsl: a shader's own chunks are pulled in with `#include "common/finite.glsl"` (a path
-//   under shaders/), each at most once, recursively; three's `#include <chunk>` lines are left for
-//   three to resolve. An include with no chunk, or a chunk given but never included, throws: a
-//   renamed or forgotten chunk fails when the pass is built, not as a silently different shader.
-// - enumDefines: an option's accepted values become named defines (`DEBUG_VIEW_MASK`), and the
-//   current value the define `DEBUG_VIEW`, so shaders compare names (`#if DEBUG_VIEW ==
-//   DEBUG_VIEW_MASK`) and never an array position.
-// - glslFloat: a JS number as a GLSL float literal, for constants shared with the float64 oracle.
+// How GLSL is put together and how enums reach it.
 
 const LOCAL_INCLUDE = /^[ \t]*#include[ \t]+"([^"]+)"[ \t]*$/gm;
 
 /**
+ * Pulls in the shader's own chunks (`#include "common/finite.glsl"`, a path under shaders/), each
+ * once; three's `#include <chunk>` is left to three. A missing or unused chunk throws, so a renamed
+ * one fails when the pass is built, not as a silently different shader.
  * @param {string} name who the shader belongs to, for messages (e.g. 'SubsurfaceBlurPass')
  * @param {string} source GLSL with `#include "path.glsl"` lines
  * @param {Record<string, string>} chunks every chunk this shader includes, by its path under shaders/
@@ -41,8 +35,8 @@ export function constantCase(text) {
 }
 
 /**
- * Named defines for an enumerated option: `PREFIX_VALUE` = its position for every accepted value,
- * and `PREFIX` = the name of the current one.
+ * Named defines for an enumerated option, so shaders compare names (`#if DEBUG_VIEW ==
+ * DEBUG_VIEW_MASK`), never an array position.
  * @param {string} prefix e.g. 'DEBUG_VIEW'
  * @param {ReadonlyArray<string>} values the accepted values, e.g. DEBUG_VIEWS
  * @param {string} current one of `values`
@@ -69,7 +63,7 @@ export function setDefines(material, defines) {
   }
 }
 
-/** A finite JS number as a GLSL float literal: 4 → '4.0', 1e-5 → '0.00001'. */
+/** 4 → '4.0': constants shared with the float64 oracle. */
 export function glslFloat(value) {
   if (!Number.isFinite(value)) throw new RangeError(`glslFloat: ${value} is not finite`);
   const text = String(value);

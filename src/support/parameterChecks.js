@@ -1,11 +1,7 @@
 /**
- * Argument validation shared by the library.
- *
- * Every check throws with a message that names the parameter, the accepted range and the value it
- * got, so a wrong call is fixed from the message alone:
- * - TypeError when the value has the wrong type (not a finite number, not an array of 3, ...);
- * - RangeError when it has the right type but lies outside the accepted range or set.
- * Each check returns the value it accepted, so it can be used inline.
+ * Argument validation. Each message names the parameter, the accepted range and the value, so a
+ * wrong call is fixed from the message alone: TypeError for a wrong type, RangeError for a value
+ * out of range. Each check returns the value it accepted.
  * @module parameterChecks
  */
 
@@ -27,7 +23,7 @@ export function describeValue(value) {
 }
 
 /**
- * Writes an interval in math notation, e.g. "[0, 100]", "(0, 10]", "[0, ∞)".
+ * "[0, 100]", "(0, 10]", "[0, ∞)".
  * @param {{min?: number, max?: number, minExclusive?: boolean, maxExclusive?: boolean}} range
  * @returns {string}
  */
@@ -38,7 +34,6 @@ function describeInterval({ min = -Infinity, max = Infinity, minExclusive = fals
 }
 
 /**
- * True when `value` lies in the interval.
  * @param {number} value
  * @param {{min?: number, max?: number, minExclusive?: boolean, maxExclusive?: boolean}} range
  * @returns {boolean}
@@ -54,7 +49,6 @@ function inInterval(value, { min = -Infinity, max = Infinity, minExclusive = fal
  * @param {string} name parameter name used in the message, e.g. 'widthMm'
  * @param {*} value
  * @param {{min?: number, max?: number, minExclusive?: boolean, maxExclusive?: boolean, unit?: string}} [range]
- *   bounds (inclusive unless the *Exclusive flag is set) and an optional unit printed after the interval
  * @returns {number} the value
  * @throws {TypeError} "widthMm must be a finite number, got NaN"
  * @throws {RangeError} "widthMm must be in [0, 100] mm, got -1"
@@ -90,7 +84,6 @@ export function checkInteger(name, value, min, max, unit) {
 
 /**
  * Checks that `value` is an odd integer in min..max (both inclusive).
- * Both error types carry the same message so callers can match on the accepted range.
  * @param {string} name
  * @param {*} value
  * @param {number} min smallest accepted value (odd)
@@ -109,8 +102,9 @@ export function checkOddInteger(name, value, min, max) {
 }
 
 /**
- * Checks that `value` is an RGB triple: an array (or typed array) of 3 finite numbers, each inside
- * an optional interval.
+ * Checks that `value` is an array (or typed array) of 3 finite numbers, or a THREE.Color or
+ * THREE.Vector3 (three's own RGB types, read as their r, g, b or x, y, z), each inside an optional
+ * interval.
  * @param {string} name
  * @param {*} value
  * @param {{min?: number, max?: number, minExclusive?: boolean, maxExclusive?: boolean, unit?: string}} [range]
@@ -119,6 +113,8 @@ export function checkOddInteger(name, value, min, max) {
  * @throws {RangeError} "strength[1] must be in [0, 1], got 2"
  */
 export function checkRgb(name, value, range = {}) {
+  if (value?.isColor === true) value = [value.r, value.g, value.b];
+  else if (value?.isVector3 === true) value = [value.x, value.y, value.z];
   const isList = Array.isArray(value) || (ArrayBuffer.isView(value) && !(value instanceof DataView));
   if (!isList || value.length !== 3 || !Array.from(value).every((v) => typeof v === 'number' && Number.isFinite(v))) {
     throw new TypeError(`${name} must be an array of 3 finite numbers, got ${describeValue(value)}`);
@@ -158,8 +154,8 @@ export function checkBoolean(name, value) {
 }
 
 /**
- * Checks an options argument: undefined (no options) or a plain object whose keys are all in
- * `accepted` (when given), so a misspelt option is named instead of ignored.
+ * Checks an options argument: undefined or a plain object whose keys are all in `accepted`, so a
+ * misspelt option is named instead of ignored.
  * @param {string} name e.g. 'SubsurfaceScattering options'
  * @param {*} value
  * @param {ReadonlyArray<string>} [accepted] the option names; omitted: any keys

@@ -1,11 +1,9 @@
-// The renderer and scene state the stages change while they draw, saved before and restored after
-// (in a `finally`, so an exception leaves the renderer as it was): three's own passes restore
-// what they touch, and a user's next render must not inherit a stage's clear colour or target.
+// A user's next render must not inherit a stage's clear colour or target: as three's own passes
+// do, the stages put back what they change, in a `finally` so an exception does too.
 import { Color } from 'three';
 
 /**
- * Runs `draw()` and puts back the render target, autoClear, clear colour and alpha, the shadow
- * maps' autoUpdate, and the scene's background and overrideMaterial as they were.
+ * Runs `draw()` and puts back the renderer's and the scene's state.
  * @param {import('three').WebGLRenderer} renderer
  * @param {import('three').Scene} scene
  * @param {() => T} draw

@@ -1,6 +1,5 @@
-// What every GPU stage needs from the renderer, checked once with a message that says what is
-// missing: WebGL2 (multiple render targets, texelFetch) and renderable float/half-float colour
-// targets (light is HDR: 8-bit targets would clamp and band it).
+// What every GPU stage needs from the renderer: WebGL2 (multiple render targets, texelFetch) and
+// renderable float colour targets (light is HDR: 8-bit targets would clamp and band it).
 import { describeValue } from './parameterChecks.js';
 
 /**
@@ -22,9 +21,8 @@ export function assertFloatRenderTargets(renderer, who) {
 }
 
 /**
- * A short description of a value for error messages, minification-proof: a three.js object by its
- * `type` ('PointLight', 'Mesh') and its name as the user gave it, else by what it is (a class's
- * constructor name only when nothing else says it: production builds minify those).
+ * A value for error messages: a three.js object by its `type` and name, the constructor's name only
+ * when nothing else says it (production builds minify those).
  */
 export function describe(value) {
   if (value && typeof value === 'object' && !Array.isArray(value) && !ArrayBuffer.isView(value)) {

@@ -1,16 +1,9 @@
-// How large a profile millimetre is on screen: the one formula the orchestrator's frame plan, the
-// bench and (as shaders/common/screenScale.glsl) the blur and the dense reference use.
-//
-// A world length L at view depth z spans L · P / z in normalised device coordinates, P being the
-// projection's scale on that axis (projectionMatrix.elements[0] for x, [5] for y), and NDC's 2 span
-// `resolution` pixels. So one profile millimetre, `widthWorld` world units long, spans
-//   widthWorld · P / (2 · z) · resolution   pixels,
-// with z = 1 for an orthographic camera (its P already maps world units to NDC). Taking x and y
-// scales apart fixes the reference's aspect bug (REFERENCE §4): one scale for both axes made its
-// horizontal blur `aspect` times wider in world space.
+// How large a profile millimetre is on screen (also shaders/common/screenScale.glsl): a length L at
+// view depth z spans L · P / z in NDC, P the projection's scale on that axis, and NDC's 2 span
+// `resolution` pixels (z = 1 orthographic). Taking x and y apart fixes the reference's aspect bug
+// (REFERENCE §4): one scale for both made its horizontal blur `aspect` times wider.
 
 /**
- * True when `camera` projects perspectively (the step shrinks with depth); false for orthographic.
  * @param {import('three').Camera} camera
  */
 export function isPerspective(camera) {

@@ -1,16 +1,10 @@
-// The settings of an entry's object as properties, made from the one schema (src/options.js), so
-// the WebGL pipeline and the WebGPU node read, check and document each setting the same way:
-// reading gives the value kept; assigning checks it against the schema (a TypeError or RangeError
-// naming the property as the user wrote it), keeps it, then lets the object act on it through
-// its _applySetting(name, value, previous) (a recompile, a uniform, a rebind), which may refuse it:
-// the value is then put back and nothing changed. A setting the schema marks read-only refuses
-// every assignment, naming what to do instead.
+// The settings as properties made from the one schema (src/options.js), so the WebGL pipeline and
+// the WebGPU node check each setting the same way. An assignment is checked, kept, then applied by
+// the object's _applySetting (a recompile, a uniform, a rebind); if that throws, the value is put back.
 import { propertiesOf } from '../options.js';
 
 /**
- * `Base` with the properties of `schema`'s settings on its prototype. The object keeps the values
- * in `this._settings` (its constructor fills it with the checked options) and defines
- * `_applySetting(name, value, previous)`.
+ * `Base` with `schema`'s settings as properties; the values live in `this._settings`.
  * @template {new (...args: any[]) => object} B
  * @param {B} Base
  * @param {Readonly<Record<string, import('../options.js').OptionSpec>>} schema

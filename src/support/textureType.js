@@ -1,9 +1,6 @@
-// Changing a render target texture's data type after three has allocated it: three sizes its
-// buffers at their first use and keeps them, so the target is disposed for three to reallocate
-// them, in the new type, on its next use (its clears and scissors then start over).
-
 /**
- * Gives `texture` of `target` the data type `type`.
+ * Gives `texture` of `target` the data type `type`: three allocates at first use and keeps the
+ * buffers, so the target is disposed for three to reallocate them.
  * @param {import('three').WebGLRenderTarget} target
  * @param {import('three').Texture} texture one of target.textures
  * @param {number} type a three.js data type (HalfFloatType, FloatType)

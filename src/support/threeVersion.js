@@ -1,36 +1,32 @@
-// The three.js releases this library supports: the oldest and the newest the version matrix runs
-// the browser tests against (scripts/threeMatrix.js, in CI), and package.json's peer range, which
-// a unit test holds equal to SUPPORTED_THREE_RANGE. The material hook injects into three's shader
-// chunks at fixed points, so outside the range it may fail; its error names both. The constructors
-// check REVISION first (checkThreeRevision): on r160 the multi-target's `textures` (r163+) is
-// missing and the page died with "Cannot read properties of undefined (reading '0')".
+// The three.js releases supported: the oldest and newest the browser tests run against
+// (scripts/threeMatrix.js), held equal to package.json's peer range by a unit test. The material
+// hook injects into three's shader chunks at fixed points, so outside the range it may fail, and
+// older releases lack what the stages use (the multi-target's `textures`, r163).
 import { REVISION } from 'three';
 
-/** The oldest and newest supported three releases, as REVISION numbers (0.168.0 is 168). */
+/** As REVISION numbers (0.168.0 is 168). */
 export const SUPPORTED_THREE = Object.freeze({ oldest: 168, newest: 187 });
 
 /**
- * The releases the WebGPURenderer entry supports: its own floor, r187. The node needs
- * MRTNode.setClearColor (three.js pull request #34250: the subsurface outputs must clear to alpha
- * 0, three clears extra attachments to alpha 1) and RenderPipeline (r183's name of PostProcessing).
+ * The WebGPU entry's floor, r187: MRTNode.setClearColor (three.js pull request #34250: the
+ * subsurface outputs must clear to alpha 0, three clears extra attachments to 1) and RenderPipeline.
  */
 export const WEBGPU_THREE = Object.freeze({ oldest: 187, newest: SUPPORTED_THREE.newest });
 
-/** The peer dependency range of `releases`: every release from the oldest to the newest. */
+/** The peer dependency range of `releases`. */
 export const rangeOf = (releases) => `>=0.${releases.oldest}.0 <0.${releases.newest + 1}.0`;
 
-/** The main entry's peer range (package.json's peerDependencies; a unit test holds them equal). */
+/** package.json's peerDependencies. */
 export const SUPPORTED_THREE_RANGE = rangeOf(SUPPORTED_THREE);
 
-/** The webgpu entry's peer range (package.json's subpathPeerDependencies). */
+/** package.json's subpathPeerDependencies. */
 export const WEBGPU_THREE_RANGE = rangeOf(WEBGPU_THREE);
 
-/** "three r187" (or whatever REVISION is loaded), for error messages. */
+/** "three r187", for error messages. */
 export function threeRelease() {
   return `three r${REVISION}`;
 }
 
-/** Whether the loaded three is within the supported range. */
 export function isSupportedThree(revision = REVISION) {
   const r = Number.parseInt(revision, 10);
   return r >= SUPPORTED_THREE.oldest && r <= SUPPORTED_THREE.newest;
@@ -44,11 +40,8 @@ export function supportedThreeNote(releases = SUPPORTED_THREE) {
 let warnedNewer = false;
 
 /**
- * Checks the loaded three release before anything is built: older than the oldest supported one
- * is an Error naming it and the range (such releases lack what the stages use); newer than the
- * newest is one console warning (untested, it may work: the material hook still fails loudly if
- * three's shader chunks changed).
- * The one version gate of both entries.
+ * The one version gate of both entries: too old throws; newer warns once (untested, may work: the
+ * material hook fails loudly if three's chunks changed).
  * @param {string} who what is being built, e.g. 'SubsurfaceScattering'
  * @param {{ oldest: number, newest: number }} [releases] the entry's range (SUPPORTED_THREE, WEBGPU_THREE)
  * @param {string} [revision] three's REVISION (a parameter for the tests)

@@ -1,4 +1,5 @@
 import { describe, it, expect } from 'vitest';
+import { Color, Vector3 } from 'three';
 import { checkNumber, checkInteger, checkOddInteger, checkRgb, checkOneOf, describeValue } from '../../../src/support/parameterChecks.js';
 
 describe('checkNumber', () => {
@@ -67,6 +68,10 @@ describe('checkRgb', () => {
   });
   it('throws TypeError for wrong shapes, RangeError naming the component', () => {
     expect(() => checkRgb('strength', [1, 2])).toThrow(/strength must be an array of 3 finite numbers, got \[1, 2\]/);
+    // three's own RGB types read as [r, g, b] (and a Color or Vector3 out of range is refused the same).
+    expect(checkRgb('strength', new Color(1, 0.5, 0.25))).toEqual([1, 0.5, 0.25]);
+    expect(checkRgb('strength', new Vector3(0.2, 0.4, 0.6))).toEqual([0.2, 0.4, 0.6]);
+    expect(() => checkRgb('strength', new Color(2, 0, 0), { min: 0, max: 1 })).toThrow(/strength\[0\] must be in \[0, 1\], got 2/);
     expect(() => checkRgb('strength', [1, NaN, 2])).toThrow(TypeError);
     expect(() => checkRgb('strength', 0.5)).toThrow(TypeError);
     expect(() => checkRgb('strength', [0, 2, 0], { min: 0, max: 1 })).toThrow(new RangeError('strength[1] must be in [0, 1], got 2'));
