@@ -12,9 +12,8 @@ const _corner = new Vector3();
 const _inverse = new Matrix4();
 
 /**
- * What the fitted range leaves around what it holds, as a fraction of its depth (the bounds of a
- * mesh whose pose moved since they were taken), and the nearest a spot light's near may be, as a
- * fraction of its far (the depth buffer orders the surfaces: 24 bits over near..far).
+ * The fitted range's margin, a fraction of its depth, and a perspective near's least share of
+ * far (the 24-bit depth buffer orders the surfaces over near..far).
  */
 export const FIT = Object.freeze({ MARGIN: 0.02, MIN_NEAR: 1e-3 });
 
@@ -219,9 +218,9 @@ export class LightDepthView {
   }
 
   /**
-   * Follows another SpotLight or DirectionalLight from the next render on (the target and the
-   * materials reading it stay); the camera changes kind with the light's (onCameraChange).
-   * @param {import('three').SpotLight | import('three').DirectionalLight} light
+   * Follows another light from the next render on; the target, read by the materials, stays (the
+   * camera changes kind with the light's: onCameraChange).
+   * @param {import('three').SpotLight | import('three').DirectionalLight | import('three').PointLight} light
    */
   setLight(light) {
     checkLight(this.who, light);
@@ -238,12 +237,10 @@ export class LightDepthView {
   }
 
   /**
-   * Fits the light camera's near and far to what the map must hold: every visible mesh with a
-   * material for which `transmits(material)` holds, and whatever the light sees in front of them
-   * (it counts as thickness). The light's shadow camera keeps its angle or extent; its near and
-   * far clipped a mesh away silently (0.5 by default: a light 0.45 m from a disc sent nothing).
-   * A point light is aimed at those meshes (a perspective view around their bounding sphere) where
-   * they fit in a cone of up to POINT_AIM_DEG; around it, it takes six faces (isCube).
+   * Fits near and far to the visible meshes whose material `transmits`, and to what the light sees
+   * in front of them (it counts as thickness): the shadow camera's near and far clipped meshes
+   * away silently. A point light is aimed at those meshes where they fit a cone of POINT_AIM_DEG,
+   * else it takes six faces (isCube).
    * @param {import('three').Scene} scene (world matrices up to date)
    * @param {(material: import('three').Material) => boolean} transmits
    * @returns {string|null} what cannot be fitted: a spot light inside a transmitting mesh's bounds
