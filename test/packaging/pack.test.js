@@ -71,7 +71,8 @@ describe('npm pack', () => {
       expect(out.resolvedFrom).toBe(`file://${join(app, 'node_modules', 'three-separable-sss', 'dist', 'three-separable-sss.js')}`);
       expect(out.isClass).toBe(true);
       expect(out['.']).toContain('SubsurfaceScattering');
-      expect(out['.']).toContain('makeSubsurface');
+      expect(out['.']).toContain('getProfile');
+      expect(out['./stages']).toContain('makeSubsurface'); // the parts of a hand-built pipeline
       expect(out['./postprocessing']).toEqual(['SubsurfaceScatteringPass']);
       expect(out['./react']).toContain('SubsurfaceComposer');
       expect(out['./package.json']).toEqual(['default']);

@@ -21,16 +21,17 @@ describe('the built package', () => {
       // The subpath exports too: pmndrs postprocessing's pass, the React Three Fiber components.
       const pmndrs = await import(${JSON.stringify(`${outDir}/postprocessing.js`)});
       const react = await import(${JSON.stringify(`${outDir}/react.js`)});
+      const stages = await import(${JSON.stringify(`${outDir}/stages.js`)});
       const internals = await import(${JSON.stringify(`${outDir}/internals.js`)});
       const added = Object.getOwnPropertyNames(globalThis).filter((k) => !before.has(k));
-      const k17 = m.computeKernel({ samples: 17, method: 'reference' });
+      const k17 = stages.computeKernel({ samples: 17, method: 'reference' });
       console.log(JSON.stringify({
-        exports: Object.keys(m).sort(), added, typeofWindow: typeof window, typeofDocument: typeof document,
+        exports: Object.keys(m).sort(), stages: Object.keys(stages).sort(), added, typeofWindow: typeof window, typeofDocument: typeof document,
         pmndrs: Object.keys(pmndrs).sort(), react: Object.keys(react).sort(), internals: Object.keys(internals).sort(),
         planned: internals.planBlur({ method: 'footprint', samples: 'auto', scattering: true, marginalRadiusMm: 3, denseRadiusMm: 0, kernelReachMm: {} }, 2),
         centre17: Array.from(k17.slice(0, 4)),
-        sizes: [11, 17, 25].map((n) => m.referenceKernel(n).length / 4),
-        chunk: m.transmittanceChunk.includes('sssTransmittance('),
+        sizes: [11, 17, 25].map((n) => stages.referenceKernel(n).length / 4),
+        chunk: stages.transmittanceChunk.includes('sssTransmittance('),
       }));`;
     const out = JSON.parse(execFileSync(process.execPath, ['--input-type=module', '--no-deprecation', '-e', script], { encoding: 'utf8' }));
     expect(out.typeofWindow).toBe('undefined');
@@ -41,9 +42,8 @@ describe('the built package', () => {
     // The unstable entry: the blur's plan runs in plain Node too (63 taps: the footprints' budget).
     expect(out.internals).toContain('planBlur');
     expect(out.planned).toEqual({ samples: 63, kernelPixels: 6, blur: true, passes: 'separable', groups: 1, groupings: null }); // a plan without profiles blurs with one kernel
-    for (const name of ['computeKernel', 'profiles', 'transmittance', 'LightDepthTarget', 'transmittanceChunk', 'makeSubsurface', 'SubsurfaceBlurPass', 'SubsurfaceScattering']) {
-      expect(out.exports).toContain(name);
-    }
+    for (const name of ['profiles', 'transmittance', 'getProfile', 'SubsurfaceScattering']) expect(out.exports).toContain(name);
+    for (const name of ['computeKernel', 'LightDepthTarget', 'transmittanceChunk', 'makeSubsurface', 'SubsurfaceBlurPass']) expect(out.stages).toContain(name);
     expect(out.chunk).toBe(true);
     expect(out.sizes).toEqual([11, 17, 25]);
     // The reference's published 17-tap centre weight (REFERENCE §3), offset 0.

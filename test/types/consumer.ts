@@ -97,6 +97,7 @@ export const ALL_INTERNALS = {
   nearestViewDepth: INTERNALS.nearestViewDepth,
   MIN_KERNEL_PIXELS: INTERNALS.MIN_KERNEL_PIXELS satisfies number,
   BlurStage: INTERNALS.BlurStage,
+  useDenseReference: INTERNALS.useDenseReference satisfies (pipeline: SubsurfaceScattering, enabled?: boolean) => unknown,
   DenseSubsurfacePass: new INTERNALS.DenseSubsurfacePass({ camera, surfaceTexture: depth, profile: 'skin' }).profile,
   DRAW_PHASES: INTERNALS.DRAW_PHASES.SPLIT satisfies 'split',
   footprintsOf: INTERNALS.footprintsOf(kernel).edgesMm satisfies number[],
