@@ -261,13 +261,14 @@ export class LightDepthView {
     const perspective = !this.light.isDirectionalLight;
     const cube = this.isCube;
     const ranges = new Map(seen.map((object) => [object, depthRange(object, view, cube)]).filter(([, range]) => range));
-    const far = Math.max(...targets.map((object) => ranges.get(object)?.[1] ?? -Infinity));
+    const far = targets.reduce((most, object) => Math.max(most, ranges.get(object)?.[1] ?? -Infinity), -Infinity); // no spread: scenes of 100k meshes
     if (!(perspective ? far > 0 : Number.isFinite(far))) { // nothing to hold: the map goes unread
       this.fitted = null;
       return null;
     }
     // Whatever lies before the farthest transmitting surface may stand between it and the light.
-    let near = Math.min(...[...ranges.values()].filter(([n, f]) => f > (perspective ? 0 : -Infinity) && n < far).map(([n]) => n));
+    let near = Infinity;
+    for (const [n, f] of ranges.values()) if (f > (perspective ? 0 : -Infinity) && n < far) near = Math.min(near, n);
     const margin = FIT.MARGIN * Math.max(far - near, Math.abs(far), Math.abs(near)) || FIT.MARGIN; // a flat mesh in the light's plane: some depth
     near -= margin;
     if (perspective) near = Math.max(cube ? 0 : near, FIT.MIN_NEAR * far); // six faces: the nearest is not a corner's
