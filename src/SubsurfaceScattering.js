@@ -30,7 +30,9 @@ import { withSettings } from './support/settings.js';
 import { stopWatching, warnWhenDisabledFreezes, watchRendered } from './support/frozenFrameWatch.js';
 import { PASS_BOOLEANS, booleanFields } from './support/booleanFields.js';
 import { FrameChecks, checkTargetSize, checkTargetLimits } from './support/frameChecks.js';
-import { PIPELINE_SCHEMA, checkNeedsLight, checkPipelineOptions, propertiesOf } from './options.js';
+import {
+  CAST_SHADOW, MAX_LIGHTS, PIPELINE_SCHEMA, checkNeedsLight, checkPipelineOptions, lightsOf, propertiesOf,
+} from './options.js';
 import { estimatePixelsPerMm } from './framePlan.js';
 import { LightDepthTarget } from './1-light-depth/LightDepthTarget.js';
 import { PipelineMaterials } from './2-scene-split/PipelineMaterials.js';
@@ -85,8 +87,10 @@ export class SubsurfaceScattering extends PassWithSettings {
     this._profileLookup = new ProfileLookup(o.profile);
     /** @internal Tables of the other profiles its materials name (computing one takes tens of ms: kept). */
     this._otherLookups = new Map();
-    /** @internal Stage 1, for transmittance (null without a light). */
-    this._lightDepth = o.light ? new LightDepthTarget(o.light, { size: o.lightDepthSize }) : null;
+    /** @internal Stage 1, for transmittance: a map per light (none without a light). */
+    this._lightDepths = lightsOf(o.light, o.scene).slice(0, MAX_LIGHTS).map((light) => new LightDepthTarget(light, { size: o.lightDepthSize }));
+    /** @internal Whether a material of this pipeline transmits (the light depth map holds its thickness). */
+    this._transmitsThrough = (m) => this._subsurfaceMaterials.entries.get(m)?.options.transmittance === true;
     /** @internal The size setSize last gave, device pixels (checked against the GPU's limits on the next frame). */
     this._size = { width: 1, height: 1 };
     /** @internal The GPU's render target limits, known from the first frame on. */
@@ -119,7 +123,7 @@ export class SubsurfaceScattering extends PassWithSettings {
     /** @internal The materials made subsurface through this pipeline (see makeSubsurface; `materials` is the public view). */
     this._subsurfaceMaterials = new PipelineMaterials(this, () => ({
       worldUnitInMm: this.worldUnitInMm,
-      lightDepth: this.transmittance ? this._lightDepth : null,
+      lightDepths: this.transmittance ? this._lightDepths : [],
       profile: this.profile,
       lookupOf: (profile) => this._lookupOf(profile),
       checkProfiles: (profiles) => this._checkProfiles(this.method, profiles, this.profile, 'makeSubsurface'),
@@ -176,11 +180,59 @@ export class SubsurfaceScattering extends PassWithSettings {
         this._composePass.setSplit(value);
         return;
       case 'lightDepthSize':
-        this._lightDepth?.setSize(value);
+        for (const lightDepth of this._lightDepths) lightDepth.setSize(value);
+        return;
+      case 'light':
+        this._setLight(value, previous);
         return;
       default: // scene, camera, multisampling: read each frame
     }
   }
+
+  /**
+   * Other lights, or none: each map follows its light from the next frame (kept where there was
+   * one at its place, so its materials read it on); from none to a light transmittance turns on (as
+   * the constructor's default), to none off.
+   * @private
+   */
+  _setLight(light, previous) {
+    if (light === previous) return;
+    if (light === null) checkNeedsLight('debugView', this.debugView, null); // a light's view stays: refused
+    const switches = previous === null || light === null;
+    if (switches) this._settings.transmittance = light !== null;
+    if (!this._useLights(lightsOf(light, this.scene)) && switches) this._subsurfaceMaterials.rebindAll();
+  }
+
+  /**
+   * A map for each of `lights` (up to MAX_LIGHTS), kept where there was one at its place (its
+   * materials read it on), retargeted to its light; the materials rebound where the count changes.
+   * @private @param {readonly object[]} lights
+   * @returns {boolean} whether the materials were rebound
+   */
+  _useLights(lights) {
+    const maps = this._lightDepths;
+    const count = maps.length;
+    lights.slice(0, MAX_LIGHTS).forEach((light, i) => {
+      if (!maps[i]) maps[i] = new LightDepthTarget(light, { size: this.lightDepthSize });
+      else if (maps[i].light !== light) maps[i].setLight(light);
+    });
+    for (const extra of maps.splice(Math.min(lights.length, MAX_LIGHTS))) extra.dispose();
+    if (count === maps.length) return false;
+    this._subsurfaceMaterials.rebindAll(); // the bindings list the maps
+    return true;
+  }
+
+  /** The maps of the scene's shadow-casting lights (`light` 'castShadow'), this frame's. @private */
+  _castShadowLights(scene, checks) {
+    const lights = lightsOf(CAST_SHADOW, scene);
+    if (lights.length > MAX_LIGHTS) {
+      checks.problem('castShadowLights', `${lights.length} lights cast shadows: transmittance comes from the first ${MAX_LIGHTS} in the scene's order (list the ones you want in \`light\`)`);
+    }
+    this._useLights(lights);
+  }
+
+  /** @internal The first light's map, or null (the tests' and the bench's handle on stage 1). */
+  get _lightDepth() { return this._lightDepths[0] ?? null; }
 
   /**
    * The diffusion profile of the materials that name none: a preset's name or a profile object,
@@ -258,15 +310,21 @@ export class SubsurfaceScattering extends PassWithSettings {
     const checks = this._checks.begin();
     checks.camera(camera);
     checks.scene(scene);
-    const lightWorks = this._lightDepth !== null && checks.light(this._lightDepth, scene, this.transmittance);
+    // 'castShadow': the scene's lights that cast shadows now, more than MAX_LIGHTS said once.
+    if (this.light === CAST_SHADOW) this._castShadowLights(scene, checks);
+    // The lights' checks fit their maps to the meshes, as the scene split's render will place them.
+    if (this._lightDepths.length > 0 && scene.matrixWorldAutoUpdate === true) scene.updateMatrixWorld();
+    const works = this._lightDepths.map((lightDepth) => checks.light(lightDepth, scene, this.transmittance, this._transmitsThrough));
     checks.end();
-    // 1. Light depth: linear depth seen from the light, for transmittance (not for a light that is
-    //    off, nor one that reaches no subsurface mesh from behind: its map would go unread).
-    if (lightWorks && isShining(this._lightDepth.light, scene, camera) && this._transmits(scene, camera)) {
-      this._stage('lightDepth', () => this._lightDepth.render(renderer, scene));
-    } else {
-      this._lightDepth?.invalidate();
-    }
+    // 1. Light depth: linear depth seen from each light, for transmittance (not for a light that
+    //    is off, nor one that reaches no subsurface mesh from behind: its map would go unread).
+    this._lightDepths.forEach((lightDepth, i) => {
+      if (works[i] && isShining(lightDepth.light, scene, camera) && this._transmits(lightDepth.light, scene, camera)) {
+        this._stage('lightDepth', () => lightDepth.render(renderer, scene));
+      } else {
+        lightDepth.invalidate();
+      }
+    });
     // 2. Scene split: the opaque scene into the multi-target (colour | diffuse | surface | depth),
     //    multisampled as asked (or as the composer's buffer is).
     Object.assign(this._scenePass, { scene, camera, clearColor: this.clearColor, clearAlpha: this.clearAlpha });
@@ -317,16 +375,15 @@ export class SubsurfaceScattering extends PassWithSettings {
   }
 
   /**
-   * Whether the light can send transmitted light to a subsurface mesh of this pipeline this frame
+   * Whether `light` can send transmitted light to a subsurface mesh of this pipeline this frame
    * (lightFromBehind at each one's nearest point); the thickness view always reads the map.
    * @private
    */
-  _transmits(scene, camera) {
+  _transmits(light, scene, camera) {
     if (materialOutputOf(this.debugView) === 'thickness') return true;
-    // The matrices as the scene split's render will see them (three updates them the same way).
-    if (scene.matrixWorldAutoUpdate === true) scene.updateMatrixWorld();
+    // The camera's matrices as the scene split's render will see them (the scene's are: render step 0).
     if (camera.parent === null && camera.matrixWorldAutoUpdate === true) camera.updateMatrixWorld();
-    return lightReachesFromBehind(this._lightDepth.light, scene, camera, (m) => this._subsurfaceMaterials.entries.get(m)?.options.transmittance);
+    return lightReachesFromBehind(light, scene, camera, this._transmitsThrough);
   }
 
   /** The largest on-screen size of a profile mm over the subsurface meshes the split drew. @private */
@@ -428,7 +485,7 @@ export class SubsurfaceScattering extends PassWithSettings {
     this._scenePass.dispose();
     this._blur.dispose();
     this._composePass.dispose();
-    this._lightDepth?.dispose();
+    for (const lightDepth of this._lightDepths) lightDepth.dispose();
     this._profileLookup.dispose();
     for (const lookup of this._otherLookups.values()) lookup.dispose();
   }

@@ -46,6 +46,10 @@ export const METHOD_TABLE = Object.freeze({
  * The preset diffusion profiles by name (src/profiles/presets.js's `profiles`).
  * @typedef {'skin'|'skinBurley'|'marble'|'milk'} ProfileName
  */
+/**
+ * A light transmittance is drawn from.
+ * @typedef {import('three').SpotLight|import('three').DirectionalLight|import('three').PointLight} TransmittingLight
+ */
 
 /**
  * A diffusion profile as the pipeline reads it back: a preset of `profiles`, or one made by
@@ -111,6 +115,35 @@ export const SAMPLE_RANGE = Object.freeze({ min: 3, max: 63 });
 /** The light depth map's resolution, pixels. */
 export const LIGHT_DEPTH_SIZES = Object.freeze({ min: 16, max: 8192 });
 
+/** The most lights transmittance is drawn from at once (`light` as a list), each with its own map. */
+export const MAX_LIGHTS = 4;
+
+/** A SpotLight, DirectionalLight or PointLight (or null where `orNull`), else a TypeError naming `name`. */
+function checkOneLight(light, name, orNull = true) {
+  if ((light !== null || !orNull) && !(light?.isSpotLight || light?.isDirectionalLight || light?.isPointLight)) {
+    throw new TypeError(`${name} must be a THREE.SpotLight, THREE.DirectionalLight${orNull ? `, THREE.PointLight, a list of them, '${CAST_SHADOW}' or null` : ' or THREE.PointLight'}, got ${describe(light)}`);
+  }
+  return light;
+}
+
+/** `light`'s value for every light of the scene that casts shadows (up to MAX_LIGHTS), found each frame. */
+export const CAST_SHADOW = 'castShadow';
+
+/**
+ * The lights of a `light` setting, as a list: none for null, those of `scene` that cast shadows
+ * for CAST_SHADOW (visible, in scene order, up to MAX_LIGHTS; none without a scene).
+ * @param {*} light
+ * @param {import('three').Scene} [scene]
+ */
+export function lightsOf(light, scene) {
+  if (light !== CAST_SHADOW) return light === null ? [] : Array.isArray(light) ? light : [light];
+  const casters = [];
+  scene?.traverseVisible((object) => {
+    if (object.castShadow === true && (object.isSpotLight || object.isDirectionalLight || object.isPointLight)) casters.push(object);
+  });
+  return casters;
+}
+
 /** The widest material accepted, mm of material per profile mm (a metre of skin is a mistake). */
 export const MAX_WIDTH_MM = 1000;
 
@@ -175,13 +208,15 @@ export const PIPELINE_SCHEMA = Object.freeze({
     },
   },
   light: {
-    default: null, access: 'readonly', type: "import('three').SpotLight|import('three').DirectionalLight|null",
-    doc: 'the light shining through thin parts (transmittance); null: no transmittance',
+    default: null, type: "import('./options.js').TransmittingLight|import('./options.js').TransmittingLight[]|'castShadow'|null",
+    doc: `a spot, directional or point light shining through thin parts (transmittance); the pipeline also takes a list of up to ${MAX_LIGHTS} or 'castShadow' (the scene's shadow casters); null: none (a light assigned after none turns \`transmittance\` on)`,
     check(light, name) {
-      if (light !== null && !(light?.isSpotLight || light?.isDirectionalLight)) {
-        throw new TypeError(`${name} must be a THREE.SpotLight, THREE.DirectionalLight or null, got ${describe(light)}`);
-      }
-      return light;
+      if (light === CAST_SHADOW) return light;
+      if (!Array.isArray(light)) return checkOneLight(light, name);
+      if (light.length < 1 || light.length > MAX_LIGHTS) throw new RangeError(`${name} must list 1 to ${MAX_LIGHTS} lights, got ${light.length}`);
+      light.forEach((each, i) => checkOneLight(each, `${name}[${i}]`, false));
+      if (new Set(light).size < light.length) throw new RangeError(`${name} lists a light twice`);
+      return Object.freeze([...light]); // read back as given, not changed behind the pipeline's back
     },
   },
   worldUnitInMm: {
@@ -351,7 +386,7 @@ export const LIGHT_VIEWS = Object.freeze(['thickness', 'transmittance']);
 export function checkNeedsLight(name, value, light) {
   const needs = name === 'transmittance' ? value === true : name === 'debugView' && LIGHT_VIEWS.includes(value);
   if (needs && !light) {
-    throw new TypeError(`${name} = ${JSON.stringify(value)} needs a light (a THREE.SpotLight or THREE.DirectionalLight given as \`light\` to the constructor); there is none`);
+    throw new TypeError(`${name} = ${JSON.stringify(value)} needs a light (a THREE.SpotLight or THREE.DirectionalLight as \`light\`); there is none`);
   }
   return value;
 }
@@ -438,7 +473,7 @@ export function checkMaterialOptions(options = {}, previous = MATERIAL_DEFAULTS)
  * @typedef {object} SubsurfaceScatteringOptions
  * @property {import('three').Scene} scene the scene drawn, read every frame
  * @property {import('three').Camera} camera the camera drawn with, read every frame
- * @property {import('three').SpotLight|import('three').DirectionalLight|null} [light=null] the light shining through thin parts (transmittance); null: no transmittance
+ * @property {TransmittingLight|TransmittingLight[]|'castShadow'|null} [light=null] a spot, directional or point light shining through thin parts (transmittance); the pipeline also takes a list of up to 4 or 'castShadow' (the scene's shadow casters); null: none (a light assigned after none turns `transmittance` on)
  * @property {number} [worldUnitInMm=1000] millimetres per world unit (three.js: metres, 1000)
  * @property {ProfileName|object} [profile='skin'] a preset's name ('skin', 'skinBurley', 'marble', 'milk') or a profile object (burleyProfile, dipoleProfile, gaussianSumProfile)
  * @property {Method} [method='footprint'] how the blur weighs its taps: 'footprint' (each pixel's footprint, exactly), 'marginal' or 'reference' (fixed taps; Jimenez 2012's kernel); a switch to or from 'footprint' recompiles
@@ -463,7 +498,7 @@ export function checkMaterialOptions(options = {}, previous = MATERIAL_DEFAULTS)
 /**
  * subsurfaceScattering(scenePass, { ... }) (the WebGPU node): the defaults are NODE_DEFAULTS.
  * @typedef {object} SubsurfaceScatteringNodeOptions
- * @property {import('three').SpotLight|import('three').DirectionalLight|null} [light=null] the light shining through thin parts (transmittance); null: no transmittance
+ * @property {TransmittingLight|TransmittingLight[]|'castShadow'|null} [light=null] a spot, directional or point light shining through thin parts (transmittance); the pipeline also takes a list of up to 4 or 'castShadow' (the scene's shadow casters); null: none (a light assigned after none turns `transmittance` on)
  * @property {number} [worldUnitInMm=1000] millimetres per world unit (three.js: metres, 1000)
  * @property {ProfileName|object} [profile='skin'] a preset's name ('skin', 'skinBurley', 'marble', 'milk') or a profile object (burleyProfile, dipoleProfile, gaussianSumProfile)
  * @property {Method} [method='footprint'] how the blur weighs its taps: 'footprint' (each pixel's footprint, exactly), 'marginal' or 'reference' (fixed taps; Jimenez 2012's kernel); a switch to or from 'footprint' recompiles
@@ -486,7 +521,7 @@ export function checkMaterialOptions(options = {}, previous = MATERIAL_DEFAULTS)
  * @typedef {object} PipelineSettings
  * @property {import('three').Scene} scene the scene drawn, read every frame
  * @property {import('three').Camera} camera the camera drawn with, read every frame
- * @property {import('three').SpotLight|import('three').DirectionalLight|null} light the light shining through thin parts (transmittance); null: no transmittance (read-only: given to the constructor)
+ * @property {TransmittingLight|TransmittingLight[]|'castShadow'|null} light a spot, directional or point light shining through thin parts (transmittance); the pipeline also takes a list of up to 4 or 'castShadow' (the scene's shadow casters); null: none (a light assigned after none turns `transmittance` on)
  * @property {number} worldUnitInMm millimetres per world unit (three.js: metres, 1000)
  * @property {Method} method how the blur weighs its taps: 'footprint' (each pixel's footprint, exactly), 'marginal' or 'reference' (fixed taps; Jimenez 2012's kernel); a switch to or from 'footprint' recompiles
  * @property {number|'auto'} samples taps per direction, odd, 3..63 (a budget for 'footprint'); 'auto': as few as the on-screen scale needs
@@ -509,7 +544,7 @@ export function checkMaterialOptions(options = {}, previous = MATERIAL_DEFAULTS)
 /**
  * SubsurfaceScatteringNode's settings, as properties (assigning one checks it as the constructor does).
  * @typedef {object} NodeSettings
- * @property {import('three').SpotLight|import('three').DirectionalLight|null} light the light shining through thin parts (transmittance); null: no transmittance (read-only: given to the constructor)
+ * @property {TransmittingLight|TransmittingLight[]|'castShadow'|null} light a spot, directional or point light shining through thin parts (transmittance); the pipeline also takes a list of up to 4 or 'castShadow' (the scene's shadow casters); null: none (a light assigned after none turns `transmittance` on)
  * @property {number} worldUnitInMm millimetres per world unit (three.js: metres, 1000)
  * @property {Method} method how the blur weighs its taps: 'footprint' (each pixel's footprint, exactly), 'marginal' or 'reference' (fixed taps; Jimenez 2012's kernel); a switch to or from 'footprint' recompiles
  * @property {number|'auto'} samples taps per direction, odd, 3..63 (a budget for 'footprint'); 'auto': as few as the on-screen scale needs

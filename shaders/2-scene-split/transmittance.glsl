@@ -22,6 +22,23 @@ vec3 sssTransmittanceProfile( const in float thicknessWorld ) {
 	return fade * sssReadProfile( sssProfileLookup, 0, thicknessWorld * sssThicknessToProfileMm, sssTransmittanceRangeMm );
 }
 
+// T times the entry cosine over the four texels around `texel` (continuous, texel centres at .5)
+// of the map's part from `origin`, `size` texels (the whole map, or a point light's face: a texel
+// beyond its edge is its edge's), for a point at light depth `depth` (see below).
+vec3 sssTransmittanceAround( sampler2D lightDepthMap, const in vec2 texel, const in ivec2 origin, const in ivec2 size, const in float depth ) {
+	ivec2 base = ivec2( floor( texel ) );
+	vec2 f = texel - vec2( base );
+	vec3 light = vec3( 0.0 );
+	for ( int k = 0; k < 4; k ++ ) {
+		ivec2 offset = ivec2( k & 1, k >> 1 );
+		float weight = ( offset.x == 1 ? f.x : 1.0 - f.x ) * ( offset.y == 1 ? f.y : 1.0 - f.y );
+		vec2 recorded = texelFetch( lightDepthMap, origin + clamp( base + offset, ivec2( 0 ), size - 1 ), 0 ).rg; // depth, entry cosine
+		float thickness = depth - recorded.r;
+		if ( recorded.r > 0.0 && thickness > 0.0 ) light += weight * recorded.g * sssTransmittanceProfile( thickness );
+	}
+	return light;
+}
+
 // The light through this point, per RGB: T of the thickness between the light's nearest surface and
 // the point, times the share of the light that entered there (the entry cosine |N·L|, the map's g:
 // a grazing entry near the light's terminator lets little in), as a fraction of the light,
@@ -36,35 +53,54 @@ vec3 sssTransmittanceProfile( const in float thicknessWorld ) {
 // The map is read a little inward along the (vertex, not bump-mapped) normal, so that a lit surface
 // finds itself and not a texel of whatever lies beside it (REFERENCE §5's shrink, about 0.6 mm);
 // the thickness is measured from the point itself, so the shrink does not shorten it.
-vec3 sssTransmittance( const in vec3 viewPosition, const in vec3 viewVertexNormal ) {
+// The map and the light's matrices are arguments: the material reads one map per light.
+vec3 sssTransmittanceFrom( sampler2D lightDepthMap, const in mat4 viewToLightView, const in mat4 lightProjection, const in vec3 viewPosition, const in vec3 viewVertexNormal ) {
 	vec3 shrunk = viewPosition - sssShrinkWorld * viewVertexNormal;
-	vec4 lightView = sssViewToLightView * vec4( shrunk, 1.0 );
-	vec4 clip = sssLightProjection * lightView;
+	vec4 lightView = viewToLightView * vec4( shrunk, 1.0 );
+	vec4 clip = lightProjection * lightView;
 	vec3 ndc = clip.xyz / clip.w;
 	if ( clip.w <= 0.0 || any( greaterThan( abs( ndc.xy ), vec2( 1.0 ) ) ) ) return vec3( 0.0 );
-	float depth = - ( sssViewToLightView * vec4( viewPosition, 1.0 ) ).z; // the point's own light depth
-	ivec2 size = textureSize( sssLightDepthMap, 0 );
-	vec2 texel = ( ndc.xy * 0.5 + 0.5 ) * vec2( size ) - 0.5;
-	ivec2 base = ivec2( floor( texel ) );
-	vec2 f = texel - vec2( base );
-	vec3 light = vec3( 0.0 );
-	for ( int k = 0; k < 4; k ++ ) {
-		ivec2 offset = ivec2( k & 1, k >> 1 );
-		float weight = ( offset.x == 1 ? f.x : 1.0 - f.x ) * ( offset.y == 1 ? f.y : 1.0 - f.y );
-		vec2 recorded = texelFetch( sssLightDepthMap, clamp( base + offset, ivec2( 0 ), size - 1 ), 0 ).rg; // depth, entry cosine
-		float thickness = depth - recorded.r;
-		if ( recorded.r > 0.0 && thickness > 0.0 ) light += weight * recorded.g * sssTransmittanceProfile( thickness );
-	}
-	return light;
+	float depth = - ( viewToLightView * vec4( viewPosition, 1.0 ) ).z; // the point's own light depth
+	ivec2 size = textureSize( lightDepthMap, 0 );
+	return sssTransmittanceAround( lightDepthMap, ( ndc.xy * 0.5 + 0.5 ) * vec2( size ) - 0.5, ivec2( 0 ), size, depth );
+}
+
+// A point light's map (LightDepthView's POINT_FACES): six faces side by side, three across and two
+// up, face k = 2 · axis (x, y, z) + (1 where it looks along −axis), its up +y (+z for the ±y
+// faces). `viewToLight` takes view space to the light's place with the world's axes; the face is
+// the one the shrunk point's largest axis falls in, its depth the distance along that axis.
+vec3 sssPointTransmittanceFrom( sampler2D lightDepthMap, const in mat4 viewToLight, const in vec3 viewPosition, const in vec3 viewVertexNormal ) {
+	vec3 shrunk = ( viewToLight * vec4( viewPosition - sssShrinkWorld * viewVertexNormal, 1.0 ) ).xyz;
+	vec3 a = abs( shrunk );
+	int axis = a.x >= a.y && a.x >= a.z ? 0 : ( a.y >= a.z ? 1 : 2 );
+	vec3 forward = vec3( 0.0 );
+	forward[ axis ] = shrunk[ axis ] < 0.0 ? - 1.0 : 1.0;
+	vec3 up = axis == 1 ? vec3( 0.0, 0.0, 1.0 ) : vec3( 0.0, 1.0, 0.0 );
+	vec3 x = normalize( cross( up, - forward ) );
+	vec3 y = cross( - forward, x );
+	vec2 ndc = vec2( dot( shrunk, x ), dot( shrunk, y ) ) / dot( shrunk, forward );
+	float depth = dot( ( viewToLight * vec4( viewPosition, 1.0 ) ).xyz, forward ); // the point's own, on that face
+	int face = 2 * axis + ( shrunk[ axis ] < 0.0 ? 1 : 0 );
+	ivec2 size = textureSize( lightDepthMap, 0 ) / ivec2( 3, 2 );
+	return sssTransmittanceAround( lightDepthMap, ( ndc * 0.5 + 0.5 ) * vec2( size ) - 0.5, ivec2( face % 3, face / 3 ) * size, size, depth );
 }
 
 // The thickness the light crosses to this point (world units, the map's nearest texel), for the
 // debug view; negative where nothing was recorded or the point is not behind the recorded surface.
-float sssThicknessWorld( const in vec3 viewPosition, const in vec3 viewVertexNormal ) {
-	vec4 clip = sssLightProjection * sssViewToLightView * vec4( viewPosition - sssShrinkWorld * viewVertexNormal, 1.0 );
+float sssThicknessWorldFrom( sampler2D lightDepthMap, const in mat4 viewToLightView, const in mat4 lightProjection, const in vec3 viewPosition, const in vec3 viewVertexNormal ) {
+	vec4 clip = lightProjection * viewToLightView * vec4( viewPosition - sssShrinkWorld * viewVertexNormal, 1.0 );
 	vec3 ndc = clip.xyz / clip.w;
 	if ( clip.w <= 0.0 || any( greaterThan( abs( ndc.xy ), vec2( 1.0 ) ) ) ) return - 1.0;
-	float nearest = texture( sssLightDepthMap, ndc.xy * 0.5 + 0.5 ).r;
-	float thickness = - ( sssViewToLightView * vec4( viewPosition, 1.0 ) ).z - nearest;
+	float nearest = texture( lightDepthMap, ndc.xy * 0.5 + 0.5 ).r;
+	float thickness = - ( viewToLightView * vec4( viewPosition, 1.0 ) ).z - nearest;
 	return nearest > 0.0 && thickness > 0.0 ? thickness : - 1.0;
+}
+
+// The same for the one light of the uniforms above (a custom ShaderMaterial's).
+vec3 sssTransmittance( const in vec3 viewPosition, const in vec3 viewVertexNormal ) {
+	return sssTransmittanceFrom( sssLightDepthMap, sssViewToLightView, sssLightProjection, viewPosition, viewVertexNormal );
+}
+
+float sssThicknessWorld( const in vec3 viewPosition, const in vec3 viewVertexNormal ) {
+	return sssThicknessWorldFrom( sssLightDepthMap, sssViewToLightView, sssLightProjection, viewPosition, viewVertexNormal );
 }

@@ -18,7 +18,10 @@ function uvTransform(texture, into) {
   return into.copy(texture.matrix);
 }
 
-/** The WebGL light depth map: r linear depth, world units (0: no surface), g the entry cosine. */
+/**
+ * The WebGL light depth map: r linear depth, world units (0: no surface), g the entry cosine; a
+ * point light's six faces side by side (LightDepthView.pointFace) where it is not aimed.
+ */
 export class LightDepthTarget extends LightDepthView {
   /**
    * @param {import('three').SpotLight | import('three').DirectionalLight} light
@@ -82,6 +85,22 @@ export class LightDepthTarget extends LightDepthView {
     u.opacity.value = material.opacity;
   }
 
+  /** A point light's six faces, each into its viewport of the target (LightDepthView.pointFace). */
+  _renderFaces(renderer, scene) {
+    const { renderTarget, camera } = this;
+    camera.matrixWorldAutoUpdate = false; // the faces' turns are set by hand
+    try {
+      for (let k = 0; k < 6; k++) {
+        renderTarget.viewport.set(...this.pointFace(k));
+        renderer.setRenderTarget(renderTarget); // three takes the viewport when the target is set
+        renderer.render(scene, camera);
+      }
+    } finally {
+      camera.matrixWorldAutoUpdate = true;
+      renderTarget.viewport.set(0, 0, renderTarget.width, renderTarget.height);
+    }
+  }
+
   /**
    * Renders `scene` from the light; the meshes' materials and the renderer's state are put back.
    * @param {import('three').WebGLRenderer} renderer
@@ -116,7 +135,8 @@ export class LightDepthTarget extends LightDepthView {
         renderer.setClearColor(0x000000, 0); // 0 = no surface
         renderer.autoClear = false;
         renderer.clear(true, true, false);
-        renderer.render(scene, this.camera);
+        if (this.isCube) this._renderFaces(renderer, scene);
+        else renderer.render(scene, this.camera);
         this.valid = true;
       } finally {
         for (const [object, material] of swapped) object.material = material;

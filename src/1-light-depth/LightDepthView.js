@@ -1,12 +1,43 @@
-// Stage 1, renderer-free: the light's camera, its frustum checks and which materials it sees,
-// shared by LightDepthTarget and the WebGPU LightDepthNodeTarget (src/webgpu/1-light-depth/),
+// Stage 1, renderer-free: the light's camera, its frustum checks and fit, and which materials it
+// sees, shared by LightDepthTarget and the WebGPU LightDepthNodeTarget (src/webgpu/1-light-depth/),
 // which bring the target, the depth material and the render.
-import { OrthographicCamera, PerspectiveCamera, Vector3 } from 'three';
+import { Box3, Matrix4, OrthographicCamera, PerspectiveCamera, Sphere, Vector3 } from 'three';
+import { localBoundsOf } from '../support/meshBounds.js';
 import { checkInteger, checkNumber, checkOptions } from '../support/parameterChecks.js';
 import { describe } from '../support/rendererSupport.js';
 import { LIGHT_DEPTH_SIZES, PIPELINE_DEFAULTS } from '../options.js';
 
 const _target = new Vector3();
+const _corner = new Vector3();
+const _inverse = new Matrix4();
+
+/**
+ * The fitted range's margin, a fraction of its depth, and a perspective near's least share of
+ * far (the 24-bit depth buffer orders the surfaces over near..far).
+ */
+export const FIT = Object.freeze({ MARGIN: 0.02, MIN_NEAR: 1e-3 });
+
+/**
+ * The light view depths of `object`'s bounds' corners, [nearest, farthest], or null where it has
+ * none; for a point light's six faces (`cube`) the depth on the face each corner falls in (the
+ * largest of its distances along the axes).
+ */
+function depthRange(object, view, cube) {
+  const box = localBoundsOf(object);
+  if (!box || box.isEmpty()) return null;
+  let near = Infinity;
+  let far = -Infinity;
+  for (let k = 0; k < 8; k++) {
+    _corner.set(k & 1 ? box.max.x : box.min.x, k & 2 ? box.max.y : box.min.y, k & 4 ? box.max.z : box.min.z)
+      .applyMatrix4(object.matrixWorld).applyMatrix4(view);
+    const depth = cube ? Math.max(Math.abs(_corner.x), Math.abs(_corner.y), Math.abs(_corner.z)) : -_corner.z;
+    near = Math.min(near, depth);
+    far = Math.max(far, depth);
+  }
+  return [near, far];
+}
+
+const nameOf = (object) => (object.name ? `mesh "${object.name}"` : `an unnamed ${object.type}`);
 
 /**
  * Whether a material's own shape matters from the light (a cut-out or clipping planes); other
@@ -28,6 +59,45 @@ export function lightSees(material) {
   return Boolean(material) && material.visible !== false && material.transparent !== true && !(material.transmission > 0);
 }
 
+/** Refuses what is not a SpotLight, DirectionalLight or PointLight, naming `who`. */
+function checkLight(who, light) {
+  if (!light || !(light.isSpotLight || light.isDirectionalLight || light.isPointLight)) {
+    throw new TypeError(`${who}: light must be a THREE.SpotLight, THREE.DirectionalLight or THREE.PointLight, got ${describe(light)}`);
+  }
+}
+
+/**
+ * A point light's map: six square faces, three across and two up (face k at column k % 3, row
+ * k / 3 from the bottom), face k looking from the light along +axis (even k) or −axis (odd k),
+ * axis k / 2 (x, y, z), its up +y (+z for the ±y faces). shaders/2-scene-split/transmittance.glsl's
+ * sssPointTransmittanceFrom reads them the same way.
+ */
+export const POINT_FACES = Object.freeze({ ACROSS: 3, UP: 2 });
+
+/** The widest cone, degrees, a point light's map is aimed into (beyond, its six faces: finer than one map that wide). */
+export const POINT_AIM_DEG = 120;
+const _box = new Box3();
+const _worldBox = new Box3();
+const _sphere = new Sphere();
+const _faceForward = new Vector3();
+const _faceUp = new Vector3();
+const _faceX = new Vector3();
+const _faceY = new Vector3();
+
+/** Face `k`'s camera basis (x, y, and z = −forward), as the shader builds it. @param {Matrix4} into */
+function pointFaceBasis(k, into) {
+  const axis = k >> 1;
+  _faceForward.set(0, 0, 0).setComponent(axis, k & 1 ? -1 : 1);
+  _faceUp.set(0, axis === 1 ? 0 : 1, axis === 1 ? 1 : 0);
+  const back = _faceForward.negate();
+  _faceX.crossVectors(_faceUp, back).normalize();
+  _faceY.crossVectors(back, _faceX);
+  return into.makeBasis(_faceX, _faceY, back);
+}
+
+/** The camera a light's view needs: orthographic for a directional light, perspective else. */
+const cameraFor = (light) => (light.isDirectionalLight ? new OrthographicCamera() : new PerspectiveCamera());
+
 /** Left out whatever the material: they bound no volume. */
 export const boundsNoVolume = (object) => object.isPoints === true || object.isLine === true || object.isSprite === true;
 
@@ -39,21 +109,27 @@ export const boundsNoVolume = (object) => object.isPoints === true || object.isL
 export class LightDepthView {
   /**
    * @param {string} who the class named in errors
-   * @param {import('three').SpotLight | import('three').DirectionalLight} light
+   * @param {import('three').SpotLight | import('three').DirectionalLight | import('three').PointLight} light
    * @param {{ size?: number, near?: number, far?: number }} [options] size: of the square target,
-   *   pixels (16..8192, default 1024); near and far: world units (default: the light's shadow camera)
+   *   pixels (16..8192, default 1024); near and far: world units (default: fit's, else the light's
+   *   shadow camera's)
    */
   constructor(who, light, options = {}) {
-    if (!light || !(light.isSpotLight || light.isDirectionalLight)) {
-      throw new TypeError(`${who}: light must be a THREE.SpotLight or THREE.DirectionalLight, got ${describe(light)}`);
-    }
+    checkLight(who, light);
     const { size = PIPELINE_DEFAULTS.lightDepthSize, near, far } = checkOptions(`${who} options`, options, ['size', 'near', 'far']);
     if (near !== undefined) checkNumber('near', near, { min: 0, minExclusive: true, unit: 'world units' });
     if (far !== undefined) checkNumber('far', far, { min: near ?? 0, minExclusive: true, unit: 'world units' });
+    this.who = who;
     this.light = light;
     this.near = near;
     this.far = far;
-    this.camera = light.isSpotLight ? new PerspectiveCamera() : new OrthographicCamera();
+    /** The near and far fitted to what the map must hold (fit), or null: the light's shadow camera's. */
+    this.fitted = null;
+    /** A point light's aim at the transmitting meshes ({ center, fov }: fit), or null: six faces. */
+    this.aim = null;
+    this.camera = cameraFor(light);
+    /** World → the light's view (for a point light: centred on it, the world's axes; its faces turn from there). */
+    this.viewMatrix = new Matrix4();
     /** Pixels: checked by the subclass's setSize(this.size). */
     this.size = size;
     /** Whether the map holds the scene as last rendered; no transmittance from one that does not. */
@@ -113,23 +189,126 @@ export class LightDepthView {
     return this.renderTarget.texture;
   }
 
-  /** @param {number} size pixels, 16..8192 */
+  /** @param {number} size pixels, 16..8192 (a point light's faces: half of it each) */
   setSize(size) {
     checkInteger('size', size, LIGHT_DEPTH_SIZES.min, LIGHT_DEPTH_SIZES.max, 'pixels');
     this.size = size;
-    this.renderTarget.setSize(size, size);
+    const face = this.faceSize;
+    if (this.isCube) this.renderTarget.setSize(POINT_FACES.ACROSS * face, POINT_FACES.UP * face);
+    else this.renderTarget.setSize(size, size);
+  }
+
+  /** Whether the map is a point light's six faces (POINT_FACES), not one view. */
+  get isCube() { return this.light.isPointLight === true && this.aim === null; }
+
+  /** A point light's face, pixels a side (half the size: six faces cost 1.5 times one map). */
+  get faceSize() { return Math.max(8, this.size >> 1); }
+
+  /**
+   * Turns the camera to a point light's face `k` (0..5, POINT_FACES) and returns the viewport it
+   * is drawn into, [x, y, width, height] pixels.
+   * @param {number} k
+   */
+  pointFace(k) {
+    const { camera } = this;
+    pointFaceBasis(k, camera.matrixWorld).setPosition(camera.position);
+    camera.matrixWorldInverse.copy(camera.matrixWorld).invert();
+    const face = this.faceSize;
+    return [(k % POINT_FACES.ACROSS) * face, Math.floor(k / POINT_FACES.ACROSS) * face, face, face];
+  }
+
+  /**
+   * Follows another light from the next render on; the target, read by the materials, stays (the
+   * camera changes kind with the light's: onCameraChange).
+   * @param {import('three').SpotLight | import('three').DirectionalLight | import('three').PointLight} light
+   */
+  setLight(light) {
+    checkLight(this.who, light);
+    const kindChanges = Boolean(light.isDirectionalLight) !== Boolean(this.light.isDirectionalLight);
+    const wasCube = this.isCube;
+    this.light = light;
+    this.fitted = null;
+    this.aim = null;
+    this.valid = false;
+    if (wasCube !== this.isCube) this.setSize(this.size); // six faces, or one map
+    if (!kindChanges) return;
+    this.camera = cameraFor(light);
+    this.onCameraChange?.();
+  }
+
+  /**
+   * Fits near and far to the visible meshes whose material `transmits`, and to what the light sees
+   * in front of them (it counts as thickness): the shadow camera's near and far clipped meshes
+   * away silently. A point light is aimed at those meshes where they fit a cone of POINT_AIM_DEG,
+   * else it takes six faces (isCube).
+   * @param {import('three').Scene} scene (world matrices up to date)
+   * @param {(material: import('three').Material) => boolean} transmits
+   * @returns {string|null} what cannot be fitted: a spot light inside a transmitting mesh's bounds
+   */
+  fit(scene, transmits) {
+    const targets = [];
+    const seen = [];
+    scene.traverseVisible((object) => {
+      if (!object.isMesh) return;
+      const materials = Array.isArray(object.material) ? object.material : [object.material];
+      if (!materials.some(lightSees) || !localBoundsOf(object)) return;
+      seen.push(object);
+      if (materials.some((m) => m && transmits(m))) targets.push(object);
+    });
+    if (this.light.isPointLight) this._aim(targets);
+    this.updateCamera();
+    const view = this.camera.matrixWorldInverse;
+    const perspective = !this.light.isDirectionalLight;
+    const cube = this.isCube;
+    const ranges = new Map(seen.map((object) => [object, depthRange(object, view, cube)]).filter(([, range]) => range));
+    const far = targets.reduce((most, object) => Math.max(most, ranges.get(object)?.[1] ?? -Infinity), -Infinity); // no spread: scenes of 100k meshes
+    if (!(perspective ? far > 0 : Number.isFinite(far))) { // nothing to hold: the map goes unread
+      this.fitted = null;
+      return null;
+    }
+    // Whatever lies before the farthest transmitting surface may stand between it and the light.
+    let near = Infinity;
+    for (const [n, f] of ranges.values()) if (f > (perspective ? 0 : -Infinity) && n < far) near = Math.min(near, n);
+    const margin = FIT.MARGIN * Math.max(far - near, Math.abs(far), Math.abs(near)) || FIT.MARGIN; // a flat mesh in the light's plane: some depth
+    near -= margin;
+    if (perspective) near = Math.max(cube ? 0 : near, FIT.MIN_NEAR * far); // six faces: the nearest is not a corner's
+    this.fitted = { near, far: far + margin };
+    const inside = this.light.isSpotLight ? targets.find((object) => this._inside(object)) : undefined;
+    return inside ? `the spot light${this.light.name ? ` "${this.light.name}"` : ''} is inside the bounds of ${nameOf(inside)}, so its parts nearer than ${Number(this.fitted.near.toPrecision(3))} world units to the light are not in the light's depth map (no transmittance there): move the light out of it` : null;
+  }
+
+  /** Whether the light is inside `object`'s bounds. */
+  _inside(object) {
+    _corner.setFromMatrixPosition(this.light.matrixWorld).applyMatrix4(_inverse.copy(object.matrixWorld).invert());
+    return localBoundsOf(object).containsPoint(_corner);
+  }
+
+  /** A point light's aim at `targets` (their bounding sphere), or null (six faces) where they surround it; the map resized where that changes. */
+  _aim(targets) {
+    const wasCube = this.isCube;
+    _box.makeEmpty();
+    for (const object of targets) _box.union(_worldBox.copy(localBoundsOf(object)).applyMatrix4(object.matrixWorld));
+    _box.getBoundingSphere(_sphere);
+    const distance = _sphere.center.distanceTo(_corner.setFromMatrixPosition(this.light.matrixWorld));
+    const halfAngle = distance > _sphere.radius ? Math.asin(_sphere.radius / distance) * (1 + FIT.MARGIN) : Infinity;
+    this.aim = !_box.isEmpty() && halfAngle <= (POINT_AIM_DEG * Math.PI) / 360 ? { center: _sphere.center.clone(), fov: (2 * halfAngle * 180) / Math.PI } : null;
+    if (this.isCube !== wasCube) this.setSize(this.size);
   }
 
   updateCamera() {
     const { light, camera } = this;
     light.updateMatrixWorld();
-    light.target.updateMatrixWorld();
+    light.target?.updateMatrixWorld();
     const shadowCamera = light.shadow.camera;
     camera.position.setFromMatrixPosition(light.matrixWorld);
-    camera.lookAt(_target.setFromMatrixPosition(light.target.matrixWorld));
-    camera.near = this.near ?? shadowCamera.near;
-    camera.far = this.far ?? shadowCamera.far;
-    if (light.isSpotLight) {
+    if (this.isCube) camera.rotation.set(0, 0, 0); // its faces turn from the world's axes (pointFace)
+    else camera.lookAt(light.isPointLight ? this.aim.center : _target.setFromMatrixPosition(light.target.matrixWorld));
+    camera.near = this.near ?? this.fitted?.near ?? shadowCamera.near;
+    camera.far = this.far ?? this.fitted?.far ?? shadowCamera.far;
+    if (light.isPointLight) {
+      camera.fov = this.aim?.fov ?? 90;
+      camera.aspect = 1;
+    } else if (light.isSpotLight) {
       camera.fov = (2 * light.angle * 180) / Math.PI;
       camera.aspect = 1;
     } else {
@@ -140,6 +319,7 @@ export class LightDepthView {
     }
     camera.updateProjectionMatrix();
     camera.updateMatrixWorld();
+    this.viewMatrix.copy(camera.matrixWorldInverse);
   }
 
   /**
@@ -151,9 +331,9 @@ export class LightDepthView {
     const { light, camera } = this;
     const { near, far } = camera;
     if (light.isSpotLight && !(light.angle > 0 && light.angle <= Math.PI / 2)) return `light.angle ${light.angle} is not in (0, π/2]`;
-    if (light.isSpotLight && !(near > 0)) return `near ${near} is not above 0`;
+    if (!light.isDirectionalLight && !(near > 0)) return `near ${near} is not above 0`;
     if (!(far > near)) return `far ${far} is not beyond near ${near} (light.shadow.camera, or the near and far options)`;
-    if (!light.isSpotLight && !(camera.right !== camera.left && camera.top !== camera.bottom)) {
+    if (light.isDirectionalLight && !(camera.right !== camera.left && camera.top !== camera.bottom)) {
       return `light.shadow.camera spans left ${camera.left} to right ${camera.right}, bottom ${camera.bottom} to top ${camera.top}`;
     }
     if (!camera.projectionMatrix.elements.every(Number.isFinite)) return 'its projection is not finite';

@@ -10,9 +10,9 @@ import { makeSubsurface, getSubsurface, subsurfaceBindingOf } from './subsurface
 export class PipelineMaterials {
   /**
    * @param {object} owner the pipeline whose settings the bindings are
-   * @param {() => { worldUnitInMm: number, lightDepth: object|null, profile: object, lookupOf: (profile: object) => object,
+   * @param {() => { worldUnitInMm: number, lightDepths: object[], profile: object, lookupOf: (profile: object) => object,
    *   checkProfiles: (profiles: object[]) => void, debugOutput: string }} settings the pipeline's current scale, light
-   *   depth (null: no transmittance), profile (the materials' default), the tables of a profile, the check of the
+   *   depth maps (one per light; none: no transmittance), profile (the materials' default), the tables of a profile, the check of the
    *   profiles its materials would use (throws when the pipeline cannot blur them) and debug output
    */
   constructor(owner, settings) {
@@ -30,14 +30,14 @@ export class PipelineMaterials {
   bind(material, options = {}) {
     // Checked whole here, so a later switch of transmittance cannot fail half-way.
     const o = checkMaterialOptions(options, { ...MATERIAL_DEFAULTS, ...this.entries.get(material)?.options });
-    const { worldUnitInMm, lightDepth, lookupOf, checkProfiles, debugOutput } = this.settings();
+    const { worldUnitInMm, lightDepths, lookupOf, checkProfiles, debugOutput } = this.settings();
     checkProfiles(this.profiles(undefined, { material, options: o })); // before binding: a refusal changes nothing
     const lookup = lookupOf(this.profileOf(o));
     const hook = makeSubsurface(material, {
       widthMm: o.widthMm,
       widthScale: o.widthScale,
       worldUnitInMm,
-      transmittance: o.transmittance && lightDepth ? { lightDepth, lookup, translucency: o.translucency, shrinkMm: o.shrinkMm } : null,
+      transmittance: o.transmittance && lightDepths.length > 0 ? { lightDepth: lightDepths, lookup, translucency: o.translucency, shrinkMm: o.shrinkMm } : null,
     }, this.owner);
     hook.debugOutput = debugOutput;
     this.entries.set(material, { hook, options: o });

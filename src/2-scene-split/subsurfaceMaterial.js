@@ -27,7 +27,7 @@ import finiteGlsl from '../../shaders/common/finite.glsl?raw';
 import carriedDepthGlsl from '../../shaders/common/carriedDepth.glsl?raw';
 import { assembleGlsl, enumDefines } from '../support/glsl.js';
 import { checkOneOf, checkOptions } from '../support/parameterChecks.js';
-import { describe } from '../support/rendererSupport.js';
+import { describe, refuseTransmission } from '../support/rendererSupport.js';
 import { checkThreeRevision, supportedThreeNote, threeRelease } from '../support/threeVersion.js';
 import { MATERIAL_DEFAULTS, MATERIAL_SCHEMA, PIPELINE_SCHEMA, checkOption } from '../options.js';
 import { ATTACHMENT_DEFINES, DRAW_PHASES, currentDraw, diffuseCarriesDepth } from './subsurfaceTarget.js';
@@ -37,6 +37,7 @@ import {
   LIGHT_TYPES, TRANSMITTANCE_CHUNKS, TRANSMITTED_LIGHT_DEFINES, lightUniformSlots, transmittanceSettings,
   transmittanceUniformSlots, writeTransmittedLight,
 } from './transmittance.js';
+import { MAX_LIGHTS } from '../options.js';
 
 /** What the diffuse attachment receives (src/4-compose/debugViews.js). */
 export { MATERIAL_OUTPUTS };
@@ -51,8 +52,37 @@ const STANDALONE = Object.freeze({ name: 'makeSubsurface' });
 const declarations = assembleGlsl('makeSubsurface', parsGlsl, { 'common/finite.glsl': finiteGlsl, 'common/carriedDepth.glsl': carriedDepthGlsl, ...TRANSMITTANCE_CHUNKS });
 const defines = Object.freeze({
   ...ATTACHMENT_DEFINES, ...enumDefines('SSS_OUTPUT', MATERIAL_OUTPUTS, 'diffuse'), ...enumDefines('SSS_LIGHT_TYPE', LIGHT_TYPES, 'spot'),
-  ...TRANSMITTED_LIGHT_DEFINES,
+  ...TRANSMITTED_LIGHT_DEFINES, SSS_MAX_LIGHTS: MAX_LIGHTS,
 });
+
+/**
+ * The per-light uniform arrays the material reads (pars.glsl), by the name of the one-light uniform
+ * the model's writer fills (writeTransmittedLight): each light is written through a slot whose
+ * uniforms are views of its index in these arrays.
+ */
+const LIGHT_ARRAYS = Object.freeze({
+  sssTransmits: 'sssLightTransmits', sssLightType: 'sssLightTypes', sssLightColor: 'sssLightColors',
+  sssLightPositionView: 'sssLightPositionsView', sssLightDirectionView: 'sssLightDirectionsView',
+  sssLightCutoffDistance: 'sssLightCutoffDistances', sssLightDecay: 'sssLightDecays', sssSpotConeCos: 'sssSpotConeCosines',
+  sssSpotPenumbraCos: 'sssSpotPenumbraCosines', sssLightDepthMap: 'sssLightDepthMaps', sssViewToLightView: 'sssViewToLightViews',
+  sssLightProjection: 'sssLightProjections', sssLightCube: 'sssLightCubes',
+});
+
+/** The arrays of LIGHT_ARRAYS, each element a fresh slot's first value. */
+function lightArrays() {
+  const slots = Array.from({ length: MAX_LIGHTS }, () => ({ sssTransmits: { value: false }, sssLightType: { value: 0 }, ...lightUniformSlots(), ...transmittanceUniformSlots() }));
+  return Object.fromEntries(Object.entries(LIGHT_ARRAYS).map(([one, many]) => [many, { value: slots.map((slot) => slot[one].value) }]));
+}
+
+/** Light `i`'s slot: the shared uniforms as they are, the per-light ones as views of element `i`. */
+function lightSlot(uniforms, i) {
+  const slot = { ...uniforms };
+  for (const [one, many] of Object.entries(LIGHT_ARRAYS)) {
+    const array = uniforms[many].value;
+    slot[one] = { get value() { return array[i]; }, set value(v) { array[i] = v; } };
+  }
+  return slot;
+}
 
 /** material → its patch: { uniforms, bindings: Map<owner, binding>, restore() } */
 const patches = new WeakMap();
@@ -83,10 +113,10 @@ function patch(material) {
     sssDiffuseCarriesDepth: { value: false },
     sssProfileSlot: { value: 0 },
     sssTransmits: { value: false },
-    sssLightType: { value: 0 },
-    ...lightUniformSlots(),
-    ...transmittanceUniformSlots(),
+    ...transmittanceUniformSlots(), // the shared ones (the one-light map and matrices go unread)
+    ...lightArrays(),
   };
+  const lightSlots = Array.from({ length: MAX_LIGHTS }, (_, i) => lightSlot(uniforms, i));
   const bindings = new Map();
   const previous = {
     onBeforeCompile: material.onBeforeCompile,
@@ -124,12 +154,13 @@ function patch(material) {
     uniforms.sssHidden.value = draw.phase === DRAW_PHASES.HIDDEN;
     uniforms.sssDiffuseCarriesDepth.value = draw.phase === DRAW_PHASES.SPLIT && diffuseCarriesDepth(draw.target);
     const binding = draw.owner === null ? undefined : bindings.get(draw.owner) ?? latest(bindings);
-    if (binding) applyBinding(uniforms, binding, scene, camera);
+    if (binding) applyBinding(uniforms, lightSlots, binding, scene, camera);
     else uniforms.sssTransmits.value = false;
   };
 
   const state = {
     uniforms,
+    lightSlots,
     bindings,
     restore() {
       material.onBeforeCompile = previous.onBeforeCompile;
@@ -147,16 +178,25 @@ function patch(material) {
   return state;
 }
 
-/** Writes one pipeline's settings into the material's uniforms for this draw. */
-function applyBinding(uniforms, binding, scene, camera) {
+/** Writes one pipeline's settings into the material's uniforms for this draw (each light through its slot). */
+function applyBinding(uniforms, lightSlots, binding, scene, camera) {
   const { options, transmittance } = binding;
   uniforms.sssWidthWorld.value = options.widthMm / options.worldUnitInMm;
   uniforms.sssWidthScale.value = options.widthScale;
   uniforms.sssDebugOutput.value = MATERIAL_OUTPUTS.indexOf(binding.debugOutput);
   uniforms.sssProfileSlot.value = binding.profileSlot;
+  uniforms.sssLightTransmits.value.fill(false);
   uniforms.sssTransmits.value = false;
   if (!transmittance || !scene || !camera) return;
-  writeTransmittedLight(uniforms, transmittance, scene, camera);
+  transmittance.forEach((settings, i) => writeTransmittedLight(lightSlots[i], settings, scene, camera));
+  uniforms.sssTransmits.value = uniforms.sssLightTransmits.value.includes(true);
+}
+
+/** The light depth maps of a binding's transmittance: one, or a list of up to MAX_LIGHTS. */
+function lightDepthsOf(lightDepth) {
+  if (!Array.isArray(lightDepth)) return [lightDepth];
+  if (lightDepth.length < 1 || lightDepth.length > MAX_LIGHTS) throw new RangeError(`transmittance: lightDepth must list 1 to ${MAX_LIGHTS} light depth maps, got ${lightDepth.length}`);
+  return lightDepth;
 }
 
 /** The material options with the old name `strength` read as `widthScale` (the pipeline's `strength` is Jimenez's RGB mix). */
@@ -192,7 +232,8 @@ function withWidthScale(options) {
  *   `strength` is its old name, still accepted
  * @param {number} [options.worldUnitInMm=1000] millimetres per world unit (three.js: metres)
  * @param {object|null} [options.transmittance=null] light through thin parts:
- *   `{ lightDepth: LightDepthTarget, lookup: ProfileLookup, translucency?, shrinkMm? }`
+ *   `{ lightDepth: LightDepthTarget, lookup: ProfileLookup, translucency?, shrinkMm? }` (lightDepth:
+ *   a list of up to 4 for several lights, their light added up)
  * @param {object} [owner] the pipeline these settings are for (SubsurfaceScattering passes itself);
  *   omitted: settings of their own, used wherever a pipeline without settings of its own draws
  * @returns {SubsurfaceBinding}
@@ -202,6 +243,7 @@ export function makeSubsurface(material, options = {}, owner = STANDALONE) {
   if (!material || material.isMeshStandardMaterial !== true) {
     throw new TypeError(`makeSubsurface: material must be a THREE.MeshStandardMaterial or MeshPhysicalMaterial, got ${describe(material)}`);
   }
+  refuseTransmission(material, 'makeSubsurface');
   // The split draw depth-tests subsurface against subsurface as three's opaque pass does.
   if (material.depthFunc !== LessEqualDepth) {
     throw new RangeError('makeSubsurface: material.depthFunc must be THREE.LessEqualDepth (the default) for the split draw');
@@ -240,9 +282,10 @@ export function makeSubsurface(material, options = {}, owner = STANDALONE) {
       checkOption(MATERIAL_SCHEMA, 'widthMm', o.widthMm);
       checkOption(MATERIAL_SCHEMA, 'widthScale', o.widthScale);
       checkOption(PIPELINE_SCHEMA, 'worldUnitInMm', o.worldUnitInMm);
-      this.transmittance = o.transmittance ? transmittanceSettings({ ...o.transmittance, worldUnitInMm: o.worldUnitInMm, widthMm: o.widthMm }, LightDepthTarget) : null;
+      this.transmittance = o.transmittance ? lightDepthsOf(o.transmittance.lightDepth)
+        .map((lightDepth) => transmittanceSettings({ ...o.transmittance, lightDepth, worldUnitInMm: o.worldUnitInMm, widthMm: o.widthMm }, LightDepthTarget)) : null;
       this.options = o;
-      if (latest(state.bindings) === this) applyBinding(state.uniforms, this); // the uniforms show the latest settings
+      if (latest(state.bindings) === this) applyBinding(state.uniforms, state.lightSlots, this); // the uniforms show the latest settings
     },
     /** Unbinds these settings; the material is restored once no binding is left. Idempotent. */
     dispose() {

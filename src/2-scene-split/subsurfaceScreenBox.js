@@ -4,13 +4,14 @@
 // it the diffuse attachment is 0, so a blur pass writes 0 there anyway, and the compose reads the
 // scattered light on subsurface pixels only. The head at 1280×720 covers about a third of the frame.
 //
-// Where the bounds cannot be trusted the box is the whole frame: a mesh drawn without frustum
-// culling (three does not trust its bounds either), a skinned mesh (its box is computed once, in
-// whatever pose it had then; recomputing it costs a pass over its vertices per frame), a
-// displacement map (it moves vertices beyond the geometry's box), an array camera (several
-// views), a corner on or behind the camera's plane. Morph targets are inside the geometry's box
-// (three's computeBoundingBox takes them in).
+// A skinned mesh is bounded in its pose from its bones (src/support/meshBounds.js). Where the
+// bounds cannot be trusted the box is the whole frame: a mesh drawn without frustum culling (three
+// does not trust its bounds either), skin weights that do not sum to one, a displacement map (it
+// moves vertices beyond the geometry's box), an array camera (several views), a corner on or
+// behind the camera's plane. Morph targets are inside the geometry's box (three's
+// computeBoundingBox takes them in).
 import { Box2, Vector2, Vector3, Vector4 } from 'three';
+import { localBoundsOf } from '../support/meshBounds.js';
 
 /** Pixels added on every side: rasterisation covers a pixel whose centre is inside, a box edge may round across it. */
 const MARGIN_PX = 1;
@@ -19,19 +20,7 @@ const _clip = new Vector4();
 const _bounds = new Box2();
 const _ndc = new Vector2();
 
-/** The bounding box three keeps for `object` (its own for skinned and instanced meshes, else its geometry's), or null. */
-function boundsOf(object) {
-  if (object.boundingBox !== undefined) { // InstancedMesh, BatchedMesh (SkinnedMesh: not trusted)
-    if (object.boundingBox === null) object.computeBoundingBox();
-    return object.boundingBox;
-  }
-  const { geometry } = object;
-  if (!geometry?.isBufferGeometry) return null;
-  if (geometry.boundingBox === null) geometry.computeBoundingBox();
-  return geometry.boundingBox;
-}
-
-const trusted = (object) => object.frustumCulled !== false && object.isSkinnedMesh !== true
+const trusted = (object) => object.frustumCulled !== false
   && !(Array.isArray(object.material) ? object.material : [object.material]).some((m) => m?.displacementMap);
 
 /**
@@ -64,7 +53,7 @@ export function subsurfaceScreenBox(meshes, camera, width, height) {
   _bounds.makeEmpty();
   for (const object of meshes) {
     if (!trusted(object)) return null;
-    const box = boundsOf(object);
+    const box = localBoundsOf(object);
     if (!box) return null;
     if (box.isEmpty()) continue;
     if (!addProjected(_bounds, box, object, camera)) return null;

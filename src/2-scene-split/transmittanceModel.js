@@ -26,7 +26,10 @@ export const TRANSMITTED_LIGHT_DEFINES = Object.freeze(Object.fromEntries(
 ));
 
 /** The kinds of light transmittance is shaded with (a uniform: its index). */
-export const LIGHT_TYPES = Object.freeze(['directional', 'spot']);
+export const LIGHT_TYPES = Object.freeze(['directional', 'spot', 'point']);
+
+/** A light's LIGHT_TYPES entry. */
+const lightType = (light) => (light.isSpotLight ? 'spot' : light.isPointLight ? 'point' : 'directional');
 
 /**
  * The uniform objects `transmittanceChunk` reads, with neutral values. A hooked material owns one
@@ -42,6 +45,7 @@ export function transmittanceUniformSlots() {
     sssProfileLookup: { value: null },
     sssTransmittanceRangeMm: { value: 1 },
     sssThicknessToProfileMm: { value: 1 },
+    sssLightCube: { value: false }, // the map is a point light's six faces (the WebGL material reads them)
   };
 }
 
@@ -80,7 +84,8 @@ export function writeTransmittanceUniforms(uniforms, settings, camera) {
   uniforms.sssThicknessToProfileMm.value = (worldUnitInMm * (1 - translucency)) / widthMm;
   uniforms.sssTransmittanceRangeMm.value = lookup.transmittanceRangeMm;
   if (!camera) return;
-  uniforms.sssViewToLightView.value.multiplyMatrices(lightDepth.camera.matrixWorldInverse, camera.matrixWorld);
+  uniforms.sssViewToLightView.value.multiplyMatrices(lightDepth.viewMatrix, camera.matrixWorld);
+  uniforms.sssLightCube.value = lightDepth.isCube;
   uniforms.sssLightProjection.value.copy(lightDepth.camera.projectionMatrix);
 }
 
@@ -117,7 +122,7 @@ export function isShining(light, scene, camera) {
 export function lightFromBehind(light, camera, nearestDepth) {
   const view = camera.matrixWorldInverse;
   _position.setFromMatrixPosition(light.matrixWorld);
-  if (light.isSpotLight) return -_position.applyMatrix4(view).z > nearestDepth;
+  if (!light.isDirectionalLight) return -_position.applyMatrix4(view).z > nearestDepth;
   _direction.setFromMatrixPosition(light.target.matrixWorld);
   return _direction.subVectors(_position, _direction).transformDirection(view).z < 0;
 }
@@ -134,7 +139,7 @@ export function lightFromBehind(light, camera, nearestDepth) {
  */
 export function lightReachesFromBehind(light, scene, camera, transmits) {
   light.updateMatrixWorld();
-  light.target.updateMatrixWorld();
+  light.target?.updateMatrixWorld();
   let reaches = false;
   scene.traverseVisible((object) => {
     if (reaches || !object.isMesh) return;
@@ -171,13 +176,19 @@ export function updateLightUniforms(uniforms, light, scene, camera) {
   uniforms.sssLightColor.value.set(light.color.r, light.color.g, light.color.b)
     .multiplyScalar(isShining(light, scene, camera) ? light.intensity : 0);
   _position.setFromMatrixPosition(light.matrixWorld);
-  _direction.setFromMatrixPosition(light.target.matrixWorld);
-  _direction.subVectors(_position, _direction).transformDirection(view);
+  if (light.target) {
+    _direction.setFromMatrixPosition(light.target.matrixWorld);
+    _direction.subVectors(_position, _direction).transformDirection(view);
+  } else {
+    _direction.set(0, 0, 0); // a point light: none
+  }
   uniforms.sssLightDirectionView.value.copy(_direction);
   uniforms.sssLightPositionView.value.copy(_position.applyMatrix4(view));
-  if (light.isSpotLight) {
+  if (!light.isDirectionalLight) {
     uniforms.sssLightCutoffDistance.value = light.distance;
     uniforms.sssLightDecay.value = light.decay;
+  }
+  if (light.isSpotLight) {
     uniforms.sssSpotConeCos.value = Math.cos(light.angle);
     uniforms.sssSpotPenumbraCos.value = Math.cos(light.angle * (1 - light.penumbra));
   }
@@ -196,7 +207,7 @@ export function updateLightUniforms(uniforms, light, scene, camera) {
 export function writeTransmittedLight(uniforms, settings, scene, camera) {
   const { light, valid } = settings.lightDepth;
   uniforms.sssTransmits.value = valid && isShining(light, scene, camera);
-  uniforms.sssLightType.value = LIGHT_TYPES.indexOf(light.isSpotLight ? 'spot' : 'directional');
+  uniforms.sssLightType.value = LIGHT_TYPES.indexOf(lightType(light));
   updateLightUniforms(uniforms, light, scene, camera);
   writeTransmittanceUniforms(uniforms, settings, camera);
 }

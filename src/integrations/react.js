@@ -23,7 +23,8 @@ import { checkBoolean, checkInteger, checkOptions } from '../support/parameterCh
 
 /**
  * @typedef {Omit<import('../options.js').SubsurfaceScatteringOptions, 'scene'|'camera'|'light'> & {
- *   light?: import('three').SpotLight|import('three').DirectionalLight|{ current: import('three').SpotLight|import('three').DirectionalLight|null }|null,
+ *   light?: import('../options.js').TransmittingLight|{ current: import('../options.js').TransmittingLight|null }
+ *     |Array<import('../options.js').TransmittingLight|{ current: import('../options.js').TransmittingLight|null }>|'castShadow'|null,
  *   samples?: number|'auto',
  *   antialias?: number,
  *   enabled?: boolean,
@@ -79,9 +80,11 @@ function rebuildKey(options) {
   return JSON.stringify(options, (key, value) => (key === 'profile' && typeof value === 'object' ? undefined : value));
 }
 
+/** A light or a ref to one, a list of them, or 'castShadow', as the pipeline takes it. */
 function resolveLight(light) {
   if (!light) return null;
-  return light.isLight ? light : light.current ?? null;
+  if (Array.isArray(light)) return light.map(resolveLight); // an unset ref in it is refused by the pipeline, naming it
+  return light.isLight || typeof light === 'string' ? light : light.current ?? null;
 }
 
 /**

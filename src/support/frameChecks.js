@@ -131,13 +131,18 @@ export class FrameChecks {
    * @param {import('../1-light-depth/LightDepthTarget.js').LightDepthTarget} lightDepth
    * @param {import('three').Scene} scene
    * @param {boolean} transmittance
+   * @param {(material: import('three').Material) => boolean} transmits the materials whose
+   *   thickness the map must hold (its near and far are fitted to them: LightDepthView.fit)
    * @returns {boolean} whether transmittance can be drawn from it this frame
    */
-  light(lightDepth, scene, transmittance) {
+  light(lightDepth, scene, transmittance, transmits) {
     const { light } = lightDepth;
+    // Each light's problems apart (a pipeline may have four), named where the user named it.
+    const the = light.name ? `the light "${light.name}"` : 'the light';
+    const problem = (kind, message) => this.problem(`${kind}:${light.uuid}`, message);
     const { r, g, b } = light.color;
     if (!(Number.isFinite(r) && Number.isFinite(g) && Number.isFinite(b) && Number.isFinite(light.intensity))) {
-      this.problem('lightValues', `the light's color (${format(r)}, ${format(g)}, ${format(b)}) or intensity (${format(light.intensity)}) is not finite: ` +
+      problem('lightValues', `${the}'s color (${format(r)}, ${format(g)}, ${format(b)}) or intensity (${format(light.intensity)}) is not finite: ` +
         'three lights the scene with NaN from it, drawn black here, and there is no transmittance until both are finite');
       return false;
     }
@@ -146,15 +151,18 @@ export class FrameChecks {
     let root = light;
     while (root.parent) root = root.parent;
     if (root !== scene) {
-      this.problem('lightRemoved', 'the light is not in the scene (removed, or never added): there is no transmittance until it is added (with its target), ' +
+      problem('lightRemoved', `${the} is not in the scene (removed, or never added): there is no transmittance until it is added (with its target), ` +
         'or set transmittance to false');
       return false;
     }
+    const unfit = lightDepth.fit(scene, transmits);
+    if (unfit) problem('lightInside', unfit);
     const frustum = lightDepth.frustumProblem();
     if (frustum) {
-      this.problem('lightFrustum', `the light's depth map has no valid frustum (${frustum}): there is no transmittance until it has one`);
+      problem('lightFrustum', `${the}'s depth map has no valid frustum (${frustum}): there is no transmittance until it has one`);
       return false;
     }
     return true;
   }
+
 }

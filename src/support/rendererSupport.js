@@ -31,3 +31,17 @@ export function describe(value) {
   }
   return describeValue(value);
 }
+
+/**
+ * Refuses a material with `transmission` (glTF's KHR_materials_transmission) for subsurface
+ * scattering, naming it as the user named it: three draws such a material over a picture of the
+ * opaque scene taken in the same draw, which the scene split leaves without the rest of the scene
+ * (the box behind it vanished).
+ * @param {import('three').Material} material
+ * @param {string} who the function refusing it
+ */
+export function refuseTransmission(material, who) {
+  if (!(material.transmission > 0)) return;
+  throw new TypeError(`${who}: ${describe(material)} has transmission ${material.transmission}, which subsurface scattering cannot draw ` +
+    '(what is behind it would vanish): set its transmission to 0 to make it scatter, or leave it as three draws it');
+}

@@ -27,7 +27,9 @@ import { isPerspective } from '../support/screenScale.js';
 import { describe } from '../support/rendererSupport.js';
 import { LightStageNode } from './1-light-depth/LightStageNode.js';
 import { subsurfaceMeshesOf } from './2-scene-split/subsurfaceNodeMaterial.js';
-import { NODE_SCHEMA, checkNeedsLight, checkNodeOptions, propertiesOf } from '../options.js';
+import {
+  CAST_SHADOW, NODE_SCHEMA, checkNeedsLight, checkNodeOptions, lightsOf, propertiesOf,
+} from '../options.js';
 import { withSettings } from '../support/settings.js';
 import { WEBGPU_THREE, checkThreeRevision } from '../support/threeVersion.js';
 import { ATTACHMENT_NAMES } from './2-scene-split/attachments.js';
@@ -39,6 +41,15 @@ import { DEBUG_VIEWS } from '../4-compose/debugViews.js';
 
 /** The methods the node has: the WebGL pipeline's default (the fixed-tap ones are the WebGL pipeline's only). */
 export const NODE_METHODS = Object.freeze(['footprint']);
+
+/** The node's one light (or none): a list of more is the WebGL pipeline's, refused naming it. */
+function nodeLight(light) {
+  if (light === CAST_SHADOW) throw new RangeError(`light: the WebGPU node takes one light, got '${CAST_SHADOW}' (the WebGL pipeline's)`);
+  const lights = lightsOf(light);
+  if (lights.length > 1) throw new RangeError(`light: the WebGPU node takes one light, got a list of ${lights.length} (several lights are the WebGL pipeline's)`);
+  if (lights[0]?.isPointLight) throw new TypeError('light: the WebGPU node takes a SpotLight or DirectionalLight, got a PointLight (the WebGL pipeline takes point lights)');
+  return lights[0] ?? null;
+}
 
 /** A method of the schema the node lacks is refused, naming the pipeline that has it. */
 function checkNodeMethod(method) {
@@ -80,6 +91,7 @@ export class SubsurfaceScatteringNode extends NodeWithSettings {
     if (!scenePass || scenePass.isPassNode !== true) throw new TypeError(`subsurfaceScattering: scenePass must be a PassNode (pass(scene, camera)), got ${describe(scenePass)}`);
     const o = checkNodeOptions(options); // every option checked here, once, against the schema
     checkNodeMethod(o.method);
+    nodeLight(o.light);
     /** @internal The settings' values (read and assigned through their properties). */
     this._settings = Object.fromEntries(propertiesOf(NODE_SCHEMA).map(({ name }) => [name, o[name]]));
     if (Object.hasOwn(options ?? {}, 'transmittance')) checkNeedsLight('transmittance', o.transmittance, o.light);
@@ -93,8 +105,8 @@ export class SubsurfaceScatteringNode extends NodeWithSettings {
       resolution: uniform(new Vector2(1, 1)), depthFalloff: uniform(1), perspective: uniform(1), mmToWorld: uniform(1e-3),
       marginalRangeMm: uniform(1), debugView: debugViewUniform(), debugDepthRange: uniform(1), debugThicknessRangeMm: uniform(1), scatteredShare: uniform(1),
     };
-    /** Stage 1 and the materials' transmittance uniforms, before the scene pass (null without a light). */
-    this._lightStage = o.light === null ? null : new LightStageNode(this, o.light, o.lightDepthSize);
+    /** Stage 1 and the materials' transmittance uniforms, before the scene pass (built with or without a light: `light` is assignable). */
+    this._lightStage = new LightStageNode(this, nodeLight(o.light), o.lightDepthSize);
     for (const name of ['worldUnitInMm', 'samples', 'strength', 'debugView', 'debugDepthRange', 'debugThicknessRangeMm']) this._applySetting(name, o[name]);
     /** What the last frame ran: { samples, kernelPixels, blur, passes, groups, groupings } (see src/3-blur/blurPlan.js). */
     this.plan = { samples: 0, tapBlend: null, kernelPixels: 0, blur: false, fade: 0, passes: 'separable', groups: 1, groupings: null };
@@ -119,16 +131,18 @@ export class SubsurfaceScatteringNode extends NodeWithSettings {
     this._groupEnergies = Array.from({ length: MAX_KERNEL_GROUPS }, () => uniform(new Vector3()));
     this._profileNode = texture(this.profileLookup.texture);
     this._footprintNode = texture(this.footprintTable.update(this.samples === 'auto' ? 'auto' : this.samples));
-    this.updateBeforeType = NodeUpdateType.FRAME;
+    // Planned per render, not per frame: a setting changed between two renders of one animation
+    // frame (scattering, samples) is this render's (the scene pass still draws once a frame).
+    this.updateBeforeType = NodeUpdateType.RENDER;
     this.isSubsurfaceScatteringNode = true;
   }
 
   /**
    * Acts on a setting just assigned (already checked and kept; a throw here puts the old value
    * back). The node reads the rest (kernelGroups, followSurface, foreshortening, scattering) each frame.
-   * @private @param {string} name @param {*} value
+   * @private @param {string} name @param {*} value @param {*} [previous]
    */
-  _applySetting(name, value) {
+  _applySetting(name, value, previous) {
     const u = this._uniforms;
     switch (name) {
       case 'worldUnitInMm': case 'depthThresholdMm':
@@ -150,6 +164,12 @@ export class SubsurfaceScatteringNode extends NodeWithSettings {
       case 'transmittance':
         checkNeedsLight(name, value, this.light);
         return;
+      case 'light': // as the WebGL pipeline: a light after none turns transmittance on, null off
+        if (value === previous) return;
+        if (value === null) checkNeedsLight('debugView', this.debugView, null);
+        this._lightStage.setLight(nodeLight(value));
+        if (value === null || previous === null) this._settings.transmittance = value !== null;
+        return;
       case 'debugView':
         checkNeedsLight(name, value, this.light);
         u.debugView.value = DEBUG_VIEWS.indexOf(value);
@@ -158,7 +178,7 @@ export class SubsurfaceScatteringNode extends NodeWithSettings {
         u[name].value = value;
         return;
       case 'lightDepthSize':
-        this.lightDepth?.setSize(value);
+        this._lightStage?.lightDepth?.setSize(value); // kept while the light is null, for the next one
         return;
       default:
     }
@@ -175,10 +195,10 @@ export class SubsurfaceScatteringNode extends NodeWithSettings {
   set profile(profile) { super.profile = profile; }
 
   /** What the last frame found wrong with the light, one message each (empty when all is well). @type {readonly string[]} */
-  get problems() { return this._lightStage?.checks.current ?? []; }
+  get problems() { return this._lightStage.checks.current; }
 
   /** Stage 1: the light depth map for transmittance, or null without a light. @type {import('./1-light-depth/LightDepthNodeTarget.js').LightDepthNodeTarget|null} */
-  get lightDepth() { return this._lightStage?.lightDepth ?? null; }
+  get lightDepth() { return this.light === null ? null : this._lightStage.lightDepth; }
 
   /** @returns {import('three/webgpu').TextureNode} the scattered diffuse light, premultiplied by its coverage */
   getTextureNode() {
@@ -266,7 +286,7 @@ export class SubsurfaceScatteringNode extends NodeWithSettings {
   }
 
   /**
-   * Stage 3 before the frame (three calls it once a frame: updateBeforeType FRAME).
+   * Stage 3 before the frame (three calls it once a render: updateBeforeType RENDER).
    * @param {import('three/webgpu').NodeFrame} frame
    * @returns {undefined}
    */
@@ -325,7 +345,7 @@ export class SubsurfaceScatteringNode extends NodeWithSettings {
   setup(builder) {
     // three runs a node's inputs' updateBefore first (in the order they were built), so the
     // scene pass would draw before this node's updateBefore: the light stage is built ahead of it.
-    this._lightStage?.build(builder);
+    this._lightStage.build(builder);
     // WebGPU multisamples no 32-bit float format (RGBA32Float): an MSAA scene pass keeps the
     // surface in half float there (depth steps of 1/2048 of the distance; WebGL 2 keeps 32 bits).
     if (builder.renderer.backend.isWebGPUBackend && this.scenePass.renderTarget.samples > 0) {
@@ -348,7 +368,7 @@ export class SubsurfaceScatteringNode extends NodeWithSettings {
    * subsurface materials it drew lose their transmittance (they are rebuilt without it).
    */
   dispose() {
-    this._lightStage?.dispose();
+    this._lightStage.dispose();
     this._horizontalTarget.dispose();
     this._scatteredTarget.dispose();
     this._freeGroupTarget();

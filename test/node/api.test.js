@@ -1,7 +1,7 @@
 // The public API in plain Node: every bad argument gets a TypeError or RangeError that names the
 // parameter and its accepted range; nothing renders, so no GPU is involved.
 import { describe, it, expect } from 'vitest';
-import { Scene, PerspectiveCamera, MeshStandardMaterial, MeshBasicMaterial, SpotLight, PointLight } from 'three';
+import { Scene, PerspectiveCamera, MeshStandardMaterial, MeshBasicMaterial, SpotLight, HemisphereLight } from 'three';
 import {
   SubsurfaceScattering, makeSubsurface, computeKernel, LightDepthTarget, SubsurfaceBlurPass, ProfileLookup,
 } from '../harness/sss.js';
@@ -13,7 +13,7 @@ describe('bad input is refused with a message naming the parameter and its range
   const cases = [
     ['no scene', () => new SubsurfaceScattering({ camera }), TypeError, /scene must be a THREE\.Scene/],
     ['no camera', () => new SubsurfaceScattering({ scene }), TypeError, /camera must be a THREE\.Camera/],
-    ['a point light', () => new SubsurfaceScattering({ scene, camera, light: new PointLight() }), TypeError, /light must be a THREE\.SpotLight, THREE\.DirectionalLight or null/],
+    ['a hemisphere light', () => new SubsurfaceScattering({ scene, camera, light: new HemisphereLight() }), TypeError, /light must be a THREE\.SpotLight, THREE\.DirectionalLight, THREE\.PointLight, a list of them, 'castShadow' or null/],
     ['NaN scale', () => new SubsurfaceScattering({ scene, camera, worldUnitInMm: NaN }), TypeError, /worldUnitInMm must be a finite number, got NaN/],
     ['negative scale', () => new SubsurfaceScattering({ scene, camera, worldUnitInMm: -1 }), RangeError, /worldUnitInMm must be in \[0\.000001, 1000000\] mm, got -1/],
     ['even samples', () => new SubsurfaceScattering({ scene, camera, samples: 16 }), RangeError, /samples must be an odd integer in 3\.\.63, got 16/],
@@ -28,7 +28,7 @@ describe('bad input is refused with a message naming the parameter and its range
     ['negative width', () => makeSubsurface(new MeshStandardMaterial(), { widthMm: -1 }), RangeError, /widthMm must be in \(0, 1000\] mm, got -1/],
     ['huge width', () => makeSubsurface(new MeshStandardMaterial(), { widthMm: 5000 }), RangeError, /widthMm must be in \(0, 1000\] mm/],
     ['strength above 1', () => makeSubsurface(new MeshStandardMaterial(), { strength: 2 }), RangeError, /strength must be in \[0, 1\]/],
-    ['no light for the depth target', () => new LightDepthTarget(null), TypeError, /light must be a THREE\.SpotLight or THREE\.DirectionalLight/],
+    ['no light for the depth target', () => new LightDepthTarget(null), TypeError, /light must be a THREE\.SpotLight, THREE\.DirectionalLight or THREE\.PointLight/],
     ['light depth size', () => new LightDepthTarget(new SpotLight(), { size: 10.5 }), RangeError, /size must be an integer in 16\.\.8192/],
     ['translucency 1', () => new SubsurfaceScattering({ scene, camera, light: new SpotLight() }).makeSubsurface(new MeshStandardMaterial(), { translucency: 1 }), RangeError, /translucency must be in \[0, 1\)/],
     ['footprint blur without a table', () => new SubsurfaceBlurPass({ direction: 'horizontal', kernel: computeKernel({ samples: 9, profile: 'skin' }), camera, surfaceTexture: new ProfileLookup().texture, mode: 'footprint' }), TypeError, /needs a ProfileLookup/],

@@ -429,8 +429,109 @@ function dollyClose() {
   dollyRig = null;
 }
 
+/**
+ * The node's `light` assigned at any time (issue 36): the lab's back-lit slab with its directional
+ * light and a spot light beside it; the diffuse attachment of a node made with each light, then of
+ * one node made without a light after each assignment (none, the directional, the spot, none),
+ * with `light` and `transmittance` as they read.
+ */
+async function lightAssigned({ backend = 'webgpu', width = 96, height = 54 }) {
+  const renderer = await sharedRenderer(backend, width, height);
+  const built = window.lab.buildScene('backlit', { width, height, thicknessMm: 1 });
+  const spot = new THREE.SpotLight(0xffffff, Math.PI * 113, 0, Math.PI / 12, 0.5, 2);
+  spot.position.set(3, 2, -10);
+  built.scene.add(spot, spot.target);
+  const sun = built.light;
+  const skin = NODE.subsurfaceMaterial(built.subsurface[0], { widthMm: 1, shrinkMm: 0.6 });
+  built.scene.traverse((object) => { if (object.material === built.subsurface[0]) object.material = skin; });
+  const frames = async (light, steps) => {
+    const { scenePass, node, pipeline } = subsurfacePipeline(renderer, built.scene, built.camera, { type: THREE.FloatType, sss: { worldUnitInMm: 10, light } });
+    const out = {};
+    for (const [label, step] of steps(node)) {
+      await new Promise((resolve) => { requestAnimationFrame(() => resolve()); }); // a frame each, as an app renders: the scene pass draws once a frame
+      step();
+      pipeline.render();
+      out[label] = { diffuse: await readFloats(renderer, scenePass.renderTarget, 'diffuse'), light: node.light === sun ? 'sun' : node.light === spot ? 'spot' : node.light, transmittance: node.transmittance };
+    }
+    node.dispose();
+    pipeline.dispose();
+    scenePass.dispose();
+    return out;
+  };
+  const made = { sun: (await frames(sun, () => [['made', () => {}]])).made, spot: (await frames(spot, () => [['made', () => {}]])).made };
+  const assigned = await frames(null, (node) => [
+    ['none', () => {}], ['sun', () => { node.light = sun; }], ['spot', () => { node.light = spot; }], ['null', () => { node.light = null; }], ['sun again', () => { node.light = sun; }],
+  ]);
+  skin.dispose();
+  built.subsurface[0].dispose();
+  return { made, assigned };
+}
+
+/**
+ * The lab's back-lit slab through the node with its light's shadow camera near beyond the slab
+ * (12 units; the light is 10 behind): the diffuse attachment (issue 36: the map's near and far are
+ * fitted to the meshes, not taken from the shadow camera).
+ */
+async function nearLight({ backend = 'webgpu', width = 96, height = 54 }) {
+  const renderer = await sharedRenderer(backend, width, height);
+  const built = window.lab.buildScene('backlit', { width, height, thicknessMm: 1 });
+  built.light.shadow.camera.near = 12;
+  built.light.shadow.camera.far = 30;
+  const skin = NODE.subsurfaceMaterial(built.subsurface[0], { widthMm: 1, shrinkMm: 0.6 });
+  built.scene.traverse((object) => { if (object.material === built.subsurface[0]) object.material = skin; });
+  const { scenePass, node, pipeline } = subsurfacePipeline(renderer, built.scene, built.camera, { type: THREE.FloatType, sss: { worldUnitInMm: 10, light: built.light } });
+  pipeline.render();
+  const diffuse = await readFloats(renderer, scenePass.renderTarget, 'diffuse');
+  const problems = [...node.problems];
+  node.dispose();
+  pipeline.dispose();
+  scenePass.dispose();
+  skin.dispose();
+  built.subsurface[0].dispose();
+  return { diffuse, problems };
+}
+
+/**
+ * A setting changed between two renders of one animation frame (issue 36): the lab's noisy slab
+ * through the node, its output (linear float) blurred; then, in one task, scattering off, a render,
+ * scattering on, a render; then, a frame later, scattering off.
+ */
+async function sameFrame({ backend = 'webgpu', width = 96, height = 54 }) {
+  const renderer = await sharedRenderer(backend, width, height);
+  const built = window.lab.buildScene('slab', { width, height, pattern: 'noise' });
+  const skin = NODE.subsurfaceMaterial(built.subsurface[0], { widthMm: 1 });
+  built.scene.traverse((object) => { if (object.material === built.subsurface[0]) object.material = skin; });
+  const { scenePass, node, pipeline } = subsurfacePipeline(renderer, built.scene, built.camera, { type: THREE.FloatType, sss: { worldUnitInMm: 10 } });
+  const target = new THREE.RenderTarget(width, height, { type: THREE.FloatType });
+  const render = () => {
+    renderer.setRenderTarget(target);
+    pipeline.render();
+    renderer.setRenderTarget(null);
+  };
+  const nextFrame = () => new Promise((resolve) => { requestAnimationFrame(() => resolve()); });
+  render();
+  const blurred = await readFloats(renderer, target);
+  await nextFrame();
+  node.scattering = false;
+  render();
+  node.scattering = true;
+  render(); // the same animation frame
+  const onAgain = await readFloats(renderer, target);
+  await nextFrame();
+  node.scattering = false;
+  render();
+  const unblurred = await readFloats(renderer, target);
+  node.dispose();
+  pipeline.dispose();
+  scenePass.dispose();
+  target.dispose();
+  skin.dispose();
+  built.subsurface[0].dispose();
+  return { blurred, onAgain, unblurred };
+}
+
 window.wgpu = {
   THREE, NODE, pass, createRenderer, readFloats, subsurfacePipeline, flat, disposeFlatRig, head, disposal, plainDraw, debugViews, labScene, labScenePlain, lightDepthCards,
-  dollyOpen, dollyFrames, dollyClose,
+  dollyOpen, dollyFrames, dollyClose, lightAssigned, sameFrame, nearLight,
 };
 window.testReady = true;

@@ -20,8 +20,8 @@ new SubsurfaceScattering({ scene, camera, profile: 'skni' });
 new SubsurfaceScattering({ scene, camera, followSurface: 'snap' });
 // @ts-expect-error samples is a number or 'auto'
 new SubsurfaceScattering({ scene, camera, samples: '17' });
-// @ts-expect-error a point light gives no transmittance
-new SubsurfaceScattering({ scene, camera, light: new THREE.PointLight() });
+// @ts-expect-error a hemisphere light gives no transmittance
+new SubsurfaceScattering({ scene, camera, light: new THREE.HemisphereLight() });
 const sss = new SubsurfaceScattering({ scene, camera });
 // @ts-expect-error an unknown debug view
 sss.debugView = 'masks';

@@ -16,16 +16,51 @@ uniform bool sssDiffuseCarriesDepth; // the diffuse attachment carries the depth
 
 
 // Transmittance (shaders/2-scene-split/material/transmittedLight.glsl), set per draw from the
-// drawing pipeline's settings.
-uniform bool sssTransmits;           // this draw's pipeline has a shining light and the material transmits
-uniform int sssLightType;            // SSS_LIGHT_TYPE_DIRECTIONAL or SSS_LIGHT_TYPE_SPOT
-uniform vec3 sssLightColor;          // colour * intensity (0 when the light does not shine in this scene)
-uniform vec3 sssLightPositionView;   // spot position, view space
-uniform vec3 sssLightDirectionView;  // unit vector towards the light (directional and spot axis)
-uniform float sssLightCutoffDistance;
-uniform float sssLightDecay;
-uniform float sssSpotConeCos;
-uniform float sssSpotPenumbraCos;
+// drawing pipeline's settings: per light (up to SSS_MAX_LIGHTS, each with its own map), what
+// src/2-scene-split/transmittanceModel.js's writer writes for one.
+uniform bool sssTransmits;                              // some light of this draw's pipeline transmits through the material
+uniform bool sssLightTransmits[ SSS_MAX_LIGHTS ];       // this one has a map as last rendered and shines
+uniform int sssLightTypes[ SSS_MAX_LIGHTS ];            // SSS_LIGHT_TYPE_DIRECTIONAL or SSS_LIGHT_TYPE_SPOT
+uniform vec3 sssLightColors[ SSS_MAX_LIGHTS ];          // colour * intensity
+uniform vec3 sssLightPositionsView[ SSS_MAX_LIGHTS ];   // spot position, view space
+uniform vec3 sssLightDirectionsView[ SSS_MAX_LIGHTS ];  // unit vector towards the light (directional and spot axis)
+uniform float sssLightCutoffDistances[ SSS_MAX_LIGHTS ];
+uniform float sssLightDecays[ SSS_MAX_LIGHTS ];
+uniform float sssSpotConeCosines[ SSS_MAX_LIGHTS ];
+uniform float sssSpotPenumbraCosines[ SSS_MAX_LIGHTS ];
+uniform sampler2D sssLightDepthMaps[ SSS_MAX_LIGHTS ];
+uniform mat4 sssViewToLightViews[ SSS_MAX_LIGHTS ];
+uniform mat4 sssLightProjections[ SSS_MAX_LIGHTS ];
+uniform bool sssLightCubes[ SSS_MAX_LIGHTS ];           // the map is a point light's six faces (else one view: sssLightProjections)
 
 #include "common/finite.glsl"
 #include "2-scene-split/transmittance.glsl"
+
+// Light `i`'s light through the point at `position` (view space), before the albedo: T and the
+// entry cosine from its map (transmittance.glsl), its colour and attenuation (three's own
+// functions, consistent with its front-side light; the shadow does not apply: the light went
+// through), and wrap lighting on the back side where the light leaves: saturate(0.3 + dot(-N, L))
+// (REFERENCE §5), for light that comes from behind the point as the camera sees it (view space:
+// +z to the camera; the constants are transmittanceModel.js's TRANSMITTED_LIGHT, as defines).
+// Light from the camera's side reaches what the camera sees through its lit, visible
+// neighbourhood, which the blur already spreads: counted again it made a bright band along a
+// front light's terminator. The map is read only where some light comes through.
+vec3 sssTransmittedFrom( const in int i, sampler2D lightDepthMap, const in vec3 position, const in vec3 normal ) {
+	if ( ! sssLightTransmits[ i ] ) return vec3( 0.0 );
+	vec3 toLight = sssLightDirectionsView[ i ];
+	float attenuation = 1.0;
+	if ( sssLightTypes[ i ] != SSS_LIGHT_TYPE_DIRECTIONAL ) {
+		vec3 lightVector = sssLightPositionsView[ i ] - position;
+		float lightDistance = length( lightVector );
+		toLight = lightVector / lightDistance;
+		attenuation = getDistanceAttenuation( lightDistance, sssLightCutoffDistances[ i ], sssLightDecays[ i ] );
+		if ( sssLightTypes[ i ] == SSS_LIGHT_TYPE_SPOT ) attenuation *= getSpotAttenuation( sssSpotConeCosines[ i ], sssSpotPenumbraCosines[ i ], dot( toLight, sssLightDirectionsView[ i ] ) );
+	}
+	float wrap = saturate( SSS_WRAP_OFFSET + dot( - normal, toLight ) ) * smoothstep( 0.0, SSS_FROM_BEHIND_RANGE, - toLight.z );
+	float weight = attenuation * wrap;
+	if ( weight <= 0.0 ) return vec3( 0.0 );
+	vec3 through = sssLightCubes[ i ]
+		? sssPointTransmittanceFrom( lightDepthMap, sssViewToLightViews[ i ], position, normal )
+		: sssTransmittanceFrom( lightDepthMap, sssViewToLightViews[ i ], sssLightProjections[ i ], position, normal );
+	return sssLightColors[ i ] * weight * through;
+}

@@ -49,6 +49,13 @@ export class LightDepthNodeTarget extends LightDepthView {
     this.setSize(this.size);
   }
 
+  /** Another kind of light, another camera: the depth materials' output follows it. */
+  onCameraChange() {
+    this.material.fragmentNode = lightDepthOf(this.camera);
+    this.material.needsUpdate = true;
+    for (const material of [...this._shaped.keys()]) this._forget(material); // made again with the new output
+  }
+
   /**
    * Renders `scene` from the light; the renderer's state and the scene's background, environment
    * and override are put back after (also on an exception).

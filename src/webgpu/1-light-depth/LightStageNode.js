@@ -25,13 +25,14 @@ export class LightStageNode extends Node {
   /**
    * @param {import('../SubsurfaceScatteringNode.js').SubsurfaceScatteringNode} owner whose scene
    *   pass, profile, scale, debug view and `transmittance` this stage reads each frame
-   * @param {import('three').SpotLight|import('three').DirectionalLight} light
+   * @param {import('three').SpotLight|import('three').DirectionalLight|null} light
    * @param {number} size the light depth map's, pixels
    */
   constructor(owner, light, size) {
     super('void');
     this.owner = owner;
-    this.lightDepth = new LightDepthNodeTarget(light, { size });
+    /** The map, made with the first light (kept from then on: the materials read its texture). @type {LightDepthNodeTarget|null} */
+    this.lightDepth = light === null ? null : new LightDepthNodeTarget(light, { size });
     /** The light's checks (FrameChecks: finite, in the scene, a frustum), warned about once each. */
     this.checks = new FrameChecks('SubsurfaceScatteringNode');
     /** The subsurface materials handed transmittance uniforms (taken back on dispose). */
@@ -45,6 +46,11 @@ export class LightStageNode extends Node {
    * @returns {undefined}
    */
   updateBefore({ renderer }) {
+    if (this.owner.light === null) { // none (any more): the materials handed uniforms send nothing
+      this.checks.begin().end();
+      for (const material of this._materials) if (material.transmittanceNodes) material.transmittanceNodes.sssTransmits.value = false;
+      return;
+    }
     const { scene, camera } = this.owner.scenePass;
     // The matrices as the scene pass's render will see them (three updates them the same way).
     if (scene.matrixWorldAutoUpdate === true) scene.updateMatrixWorld();
@@ -53,11 +59,22 @@ export class LightStageNode extends Node {
     this._writeUniforms(subsurfaceMeshesOf(scene).materials, scene, camera);
   }
 
+  /**
+   * Follows `light` from the next frame (null: none; the map and the materials' uniforms stay,
+   * sending nothing). Built once with the node, this stage needs no rebuild of the node's graph.
+   * @param {import('three').SpotLight|import('three').DirectionalLight|null} light
+   */
+  setLight(light) {
+    if (light === null) this.lightDepth?.invalidate();
+    else if (this.lightDepth) this.lightDepth.setLight(light);
+    else this.lightDepth = new LightDepthNodeTarget(light, { size: this.owner.lightDepthSize });
+  }
+
   /** The map, or marked out of date (nothing is transmitted from it) when it would go unread or the light does not work. */
   _renderLightDepth(renderer, scene, camera) {
     const { lightDepth, owner } = this;
     const checks = this.checks.begin();
-    const works = checks.light(lightDepth, scene, owner.transmittance);
+    const works = checks.light(lightDepth, scene, owner.transmittance, transmits);
     checks.end();
     const read = materialOutputOf(owner.debugView) === 'thickness' || lightReachesFromBehind(lightDepth.light, scene, camera, transmits);
     if (works && isShining(lightDepth.light, scene, camera) && read) lightDepth.render(renderer, scene);
@@ -87,7 +104,7 @@ export class LightStageNode extends Node {
       material.needsUpdate = true;
     }
     this._materials.clear();
-    this.lightDepth.dispose();
+    this.lightDepth?.dispose();
     super.dispose();
   }
 }

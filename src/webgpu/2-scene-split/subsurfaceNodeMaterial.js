@@ -13,7 +13,7 @@ import {
   positionView, positionViewDirection, rangeFogFactor, reference, renderGroup, select, uniform, vec3, vec4,
 } from 'three/tsl';
 import { checkOptions } from '../../support/parameterChecks.js';
-import { describe } from '../../support/rendererSupport.js';
+import { describe, refuseTransmission } from '../../support/rendererSupport.js';
 import { MATERIAL_DEFAULTS, MATERIAL_SCHEMA, checkOption } from '../../options.js';
 import { MATERIAL_OUTPUTS } from '../../4-compose/debugViews.js';
 import { ATTACHMENT_NAMES } from './attachments.js';
@@ -213,6 +213,7 @@ export function subsurfaceMaterial(material, options) {
   if (!material || !(material.isMeshStandardMaterial || material.isMeshStandardNodeMaterial)) {
     throw new TypeError(`subsurfaceMaterial: material must be a THREE.MeshStandardMaterial or MeshPhysicalMaterial (or its node version), got ${describe(material)}`);
   }
+  refuseTransmission(material, 'subsurfaceMaterial');
   const settings = Object.fromEntries(MATERIAL_OPTIONS.map((name) => [name, checkOption(MATERIAL_SCHEMA, name, given[name] === undefined ? MATERIAL_DEFAULTS[name] : given[name])]));
   const physical = material.isMeshPhysicalMaterial || material.isMeshPhysicalNodeMaterial;
   const result = physical ? new SubsurfacePhysicalNodeMaterial() : new SubsurfaceStandardNodeMaterial();

@@ -17,7 +17,7 @@ function frameOf(sss, materials) {
     count: [...counts][0],
     channels: sss._scenePass.surfaceTexture.format === THREE.RGBAFormat ? 4 : 2,
     slots: materials.map((m) => sss.materials.get(m).hook.profileSlot),
-    transmits: materials.map((m) => sss.materials.get(m).hook.transmittance.lookup.profile.name),
+    transmits: materials.map((m) => sss.materials.get(m).hook.transmittance[0].lookup.profile.name),
   };
 }
 

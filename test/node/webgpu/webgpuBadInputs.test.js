@@ -18,7 +18,7 @@ const NODE_LINES = [
   /^foreshortening: /, /^sss\.worldUnitInMm = /, /^samples = /, /^method = /, /^profile = /, /^strength = /, /^followSurface = /,
   /^depthThresholdMm = /, /^foreshortening = /, /^debugView = /, /^debugDepthRange = /, /^widthMm: /,
   /^light: /, /^lightDepthSize: /, /^transmittance = /, /^transmittance: /, /^translucency: /, /^shrinkMm: /, /^debugThicknessRangeMm = /,
-  /^debugView: /, /^sss\.scattering = /, /^sss\.transmittance = /, /^sss\.light = /, /^kernelGroups: (\d+|'\w+')$/,
+  /^debugView: /, /^sss\.scattering = /, /^sss\.transmittance = /, /^sss\.light = /, /^kernelGroups: (\d+|'\w+')$/, /with transmission\)$/,
 ];
 const NODE_OPTIONS = Object.keys(NODE.NODE_DEFAULTS);
 
@@ -82,6 +82,10 @@ const NODE_CASES = [
   ["a WebGL pipeline's option", (t) => t.NODE.subsurfaceScattering(pass(t.scene, t.camera), { multisampling: 4 }), 'TypeError', /unknown option "multisampling"/],
   ["method: 'marginal' (WebGL only)", (t) => t.make({ method: 'marginal' }), 'RangeError', /method 'marginal' is not available on the WebGPU node \(only 'footprint'/],
   ["method = 'reference'", (t) => { t.sss.method = 'reference'; }, 'RangeError', /^method 'reference' is not available on the WebGPU node/],
+  ['light: a PointLight (the WebGL pipeline only)', (t) => t.make({ light: new t.THREE.PointLight() }), 'TypeError', /^light: the WebGPU node takes a SpotLight or DirectionalLight, got a PointLight/],
+  ['light = two lights (the WebGL pipeline only)', (t) => { t.sss.light = [t.light, new t.THREE.SpotLight()]; }, 'RangeError', /^light: the WebGPU node takes one light, got a list of 2/],
+  ["light: 'castShadow' (the WebGL pipeline only)", (t) => t.make({ light: 'castShadow' }), 'RangeError', /^light: the WebGPU node takes one light, got 'castShadow'/],
+  ['light = [one light]: taken', (t) => { t.sss.light = [t.light]; }, 'ok'],
   ["debugView = 'thickness' with a light: taken", (t) => { t.make({ light: t.light }).debugView = 'thickness'; }, 'ok'],
   ['subsurfaceMaterial(null)', (t) => t.NODE.subsurfaceMaterial(null), 'TypeError', /subsurfaceMaterial: material must be a THREE\.MeshStandardMaterial or MeshPhysicalMaterial \(or its node version\), got null/],
   ['subsurfaceMaterial(a MeshBasicMaterial)', (t) => t.NODE.subsurfaceMaterial(new t.THREE.MeshBasicMaterial()), 'TypeError', /material must be .*got a MeshBasicMaterial/],
