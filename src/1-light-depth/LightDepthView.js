@@ -79,10 +79,7 @@ export const POINT_AIM_DEG = 120;
 const _box = new Box3();
 const _worldBox = new Box3();
 const _sphere = new Sphere();
-const _faceForward = new Vector3();
-const _faceUp = new Vector3();
-const _faceX = new Vector3();
-const _faceY = new Vector3();
+const [_faceForward, _faceUp, _faceX, _faceY] = [new Vector3(), new Vector3(), new Vector3(), new Vector3()];
 
 /** Face `k`'s camera basis (x, y, and z = −forward), as the shader builds it. @param {Matrix4} into */
 function pointFaceBasis(k, into) {

@@ -3,14 +3,11 @@
 // subsurface mesh (a floor and an ordinary box, both receiving) is plain three's (a RenderPass frame), for dynamic shadow maps and for static ones
 // (shadowMap.autoUpdate false, needsUpdate true: drawn once, then kept), for each shadow type.
 import { describe, it, expect, beforeAll, afterAll } from 'vitest';
-import { openPage } from '../../harness/page.js';
+import { openPage, closeCheckedPage } from '../../harness/page.js';
 
 let page;
 beforeAll(async () => { page = await openPage('/test/pages/lab.html'); });
-afterAll(async () => {
-  expect(page.problems).toEqual([]);
-  await page.close();
-});
+afterAll(() => closeCheckedPage(page));
 
 /**
  * In the page: a sphere (subsurface in the pipeline's frames) on a floor, lit from behind and above

@@ -4,14 +4,11 @@
 // splits it), which the README says; a transparent pane shows it scattered. A transmissive
 // material made subsurface is refused (test/reliability/badInputs.js).
 import { describe, it, expect, beforeAll, afterAll } from 'vitest';
-import { evaluateFloats, openPage } from '../../harness/page.js';
+import { evaluateFloats, openPage, closeCheckedPage } from '../../harness/page.js';
 
 let page;
 beforeAll(async () => { page = await openPage('/test/pages/lab.html'); });
-afterAll(async () => {
-  expect(page.problems).toEqual([]);
-  await page.close();
-});
+afterAll(() => closeCheckedPage(page));
 
 /** A textured subsurface sphere behind a pane of `kind` glass: the pipeline's frame and a RenderPass's, float. */
 function paneFrames(kind) {
