@@ -41,7 +41,7 @@ describe('the built package', () => {
     expect(out.added).toEqual([]);
     // The unstable entry: the blur's plan runs in plain Node too (63 taps: the footprints' budget).
     expect(out.internals).toContain('planBlur');
-    expect(out.planned).toEqual({ samples: 63, kernelPixels: 6, blur: true, passes: 'separable', groups: 1, groupings: null }); // a plan without profiles blurs with one kernel
+    expect(out.planned).toEqual({ samples: 63, kernelPixels: 6, blur: true, fade: 1, tapBlend: null, passes: 'separable', groups: 1, groupings: null }); // a plan without profiles blurs with one kernel, fully (6 px of reach: past the fade)
     for (const name of ['profiles', 'transmittance', 'getProfile', 'SubsurfaceScattering']) expect(out.exports).toContain(name);
     for (const name of ['computeKernel', 'LightDepthTarget', 'transmittanceChunk', 'makeSubsurface', 'SubsurfaceBlurPass']) expect(out.stages).toContain(name);
     expect(out.chunk).toBe(true);
