@@ -42,8 +42,8 @@ import { MAX_LIGHTS } from '../options.js';
 /** What the diffuse attachment receives (src/4-compose/debugViews.js). */
 export { MATERIAL_OUTPUTS };
 
-/** What makeSubsurface(material, { ... }) accepts (`strength`: widthScale's old name). */
-const STANDALONE_OPTIONS = Object.freeze(['widthMm', 'widthScale', 'strength', 'worldUnitInMm', 'transmittance']);
+/** What makeSubsurface(material, { ... }) accepts. */
+const STANDALONE_OPTIONS = Object.freeze(['widthMm', 'widthScale', 'worldUnitInMm', 'transmittance']);
 
 /** The key of bindings made by makeSubsurface called on its own, outside a pipeline. */
 const STANDALONE = Object.freeze({ name: 'makeSubsurface' });
@@ -127,7 +127,7 @@ function patch(material) {
   material.onBeforeCompile = function (shader, renderer) {
     previous.onBeforeCompile.call(this, shader, renderer);
     Object.assign(shader.uniforms, uniforms);
-    shader.defines = { ...shader.defines, ...defines };
+    shader.defines = { ...shader.defines, ...defines, SSS_LIGHT_SLOTS: state.lightSlotsCompiled };
     let fs = shader.fragmentShader;
     fs = inject(fs, 'void main() {', `${declarations}\nvoid main() {`);
     fs = inject(fs, '#include <lights_fragment_end>', `#include <lights_fragment_end>\n${transmittedLightGlsl}`);
@@ -141,7 +141,7 @@ function patch(material) {
   };
 
   material.customProgramCacheKey = function () {
-    return `${previous.customProgramCacheKey.call(this)}|subsurface`;
+    return `${previous.customProgramCacheKey.call(this)}|subsurface${state.lightSlotsCompiled}`;
   };
 
   // Per draw: what to write (the phase) and whose settings (the pipeline drawing, else the latest
@@ -162,6 +162,15 @@ function patch(material) {
     uniforms,
     lightSlots,
     bindings,
+    /** The lights the program reads (1..MAX_LIGHTS): the most any binding has; one reads one map. */
+    lightSlotsCompiled: 1,
+    /** Recompiles (once) when the most lights a binding has changes. */
+    fitLightSlots() {
+      const most = Math.max(1, ...[...bindings.values()].map((b) => b.transmittance?.length ?? 0));
+      if (most === this.lightSlotsCompiled) return;
+      this.lightSlotsCompiled = most;
+      material.needsUpdate = true;
+    },
     restore() {
       material.onBeforeCompile = previous.onBeforeCompile;
       material.customProgramCacheKey = previous.customProgramCacheKey;
@@ -199,12 +208,6 @@ function lightDepthsOf(lightDepth) {
   return lightDepth;
 }
 
-/** The material options with the old name `strength` read as `widthScale` (the pipeline's `strength` is Jimenez's RGB mix). */
-function withWidthScale(options) {
-  if (options.strength === undefined) return options;
-  const { strength, ...rest } = options;
-  return { widthScale: MATERIAL_SCHEMA.widthScale.check(strength, 'strength'), ...rest };
-}
 
 /**
  * One pipeline's settings on a subsurface material (what makeSubsurface returns).
@@ -228,8 +231,7 @@ function withWidthScale(options) {
  * @param {object} [options]
  * @param {number} [options.widthMm=1] scattering width: millimetres of material per profile
  *   millimetre (1 = the profile's physical size; 0 < widthMm ≤ 1000)
- * @param {number} [options.widthScale=1] 0..1, scales the width (0 = no scattering, the light kept);
- *   `strength` is its old name, still accepted
+ * @param {number} [options.widthScale=1] 0..1, scales the width (0 = no scattering, the light kept)
  * @param {number} [options.worldUnitInMm=1000] millimetres per world unit (three.js: metres)
  * @param {object|null} [options.transmittance=null] light through thin parts:
  *   `{ lightDepth: LightDepthTarget, lookup: ProfileLookup, translucency?, shrinkMm? }` (lightDepth:
@@ -278,13 +280,14 @@ export function makeSubsurface(material, options = {}, owner = STANDALONE) {
     },
     update(next = {}) {
       checkOptions('makeSubsurface options', next, STANDALONE_OPTIONS);
-      const o = { ...this.options, ...withWidthScale(next) };
+      const o = { ...this.options, ...next };
       checkOption(MATERIAL_SCHEMA, 'widthMm', o.widthMm);
       checkOption(MATERIAL_SCHEMA, 'widthScale', o.widthScale);
       checkOption(PIPELINE_SCHEMA, 'worldUnitInMm', o.worldUnitInMm);
       this.transmittance = o.transmittance ? lightDepthsOf(o.transmittance.lightDepth)
         .map((lightDepth) => transmittanceSettings({ ...o.transmittance, lightDepth, worldUnitInMm: o.worldUnitInMm, widthMm: o.widthMm }, LightDepthTarget)) : null;
       this.options = o;
+      state.fitLightSlots();
       if (latest(state.bindings) === this) applyBinding(state.uniforms, state.lightSlots, this); // the uniforms show the latest settings
     },
     /** Unbinds these settings; the material is restored once no binding is left. Idempotent. */
@@ -292,6 +295,7 @@ export function makeSubsurface(material, options = {}, owner = STANDALONE) {
       if (state.bindings.get(owner) !== this) return;
       state.bindings.delete(owner);
       if (state.bindings.size === 0) state.restore();
+      else state.fitLightSlots();
     },
   };
   state.bindings.set(owner, binding);

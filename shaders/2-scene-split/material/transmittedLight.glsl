@@ -5,11 +5,18 @@
 	float sssThicknessMm = 0.0;
 	if ( sssTransmits ) {
 		vec3 sssPosition = - vViewPosition;
-		// One call per light (a sampler array is indexed by constants only); SSS_MAX_LIGHTS is 4.
-		sssTransmitted = sssTransmittedFrom( 0, sssLightDepthMaps[ 0 ], sssPosition, nonPerturbedNormal )
-			+ sssTransmittedFrom( 1, sssLightDepthMaps[ 1 ], sssPosition, nonPerturbedNormal )
-			+ sssTransmittedFrom( 2, sssLightDepthMaps[ 2 ], sssPosition, nonPerturbedNormal )
-			+ sssTransmittedFrom( 3, sssLightDepthMaps[ 3 ], sssPosition, nonPerturbedNormal );
+		// One call per light the material's pipelines use (SSS_LIGHT_SLOTS, 1..SSS_MAX_LIGHTS: the
+		// program grows with them, so one light compiles one; a sampler array takes constant indices).
+		sssTransmitted = sssTransmittedFrom( 0, sssLightDepthMaps[ 0 ], sssPosition, nonPerturbedNormal );
+#if SSS_LIGHT_SLOTS > 1
+		sssTransmitted += sssTransmittedFrom( 1, sssLightDepthMaps[ 1 ], sssPosition, nonPerturbedNormal );
+#endif
+#if SSS_LIGHT_SLOTS > 2
+		sssTransmitted += sssTransmittedFrom( 2, sssLightDepthMaps[ 2 ], sssPosition, nonPerturbedNormal );
+#endif
+#if SSS_LIGHT_SLOTS > 3
+		sssTransmitted += sssTransmittedFrom( 3, sssLightDepthMaps[ 3 ], sssPosition, nonPerturbedNormal );
+#endif
 		sssTransmitted *= BRDF_Lambert( material.diffuseColor );
 		// A degenerate light set-up must not turn the whole material NaN (outside the pipeline too).
 		if ( ! sssFinite( sssTransmitted ) ) sssTransmitted = vec3( 0.0 );
