@@ -326,9 +326,35 @@ function webgpuSection(webgpu) {
       ...isotropic.map(([name, t, r]) => `| ${name} | ${t.toFixed(0)} | ×${r.toFixed(2)} |`)])].join('\n');
 }
 
+/** The heading bench/lights.js finds its section by in docs/BENCH.md. */
+export const LIGHTS_HEADING = '## Transmitting lights and three\'s shadow maps';
+
+/**
+ * The frame with 0, 1 and 3 transmitting lights beside three's shadow maps of the same lights
+ * (bench/lights.js's results), each row over the frame with no transmitting light, same rounds.
+ * @param {object|null} lights bench/results/lights.json
+ */
+export function lightsSection(lights) {
+  if (!lights?.medianMs) return '';
+  const m = lights.medianMs;
+  const row = (name, label) => `| ${label} | ${lights.lightMaps[name]} | ${m[name].toFixed(0)} | ×${(m[name] / m.ours0).toFixed(2)} |`;
+  const perLight = (a, b, n) => ((m[a] - m[b]) / n).toFixed(0);
+  return [`${LIGHTS_HEADING} (\`${lights.command}\`, ${lights.date.slice(0, 10)})`, '',
+    `The head at ${lights.width}×${lights.height}, lit from behind by three lights (the key spot, the demo's point light behind the ear, a directional rim light; maps and shadow maps 1024²), each frame closed by a read-back, in ${lights.rounds} interleaved rounds of ${lights.frames} frames (bench/lightsPage.js), on SwiftShader: CPU times, to compare as ratios within the run only. Three's shadow maps (\`castShadow\`, the point light's six faces) are the pass that reading the thickness from them would have shared.`, '',
+    '| frame | our light maps per frame | median ms | over no transmitting light |', '|---|---|---|---|',
+    row('ours0', 'no transmitting light, three\'s shadows off'),
+    row('ours1', '1 transmitting light (the spot), our map'),
+    row('ours3', '3 transmitting lights, our maps'),
+    row('three1', 'no transmittance, three\'s shadow map of the spot'),
+    row('three3', 'no transmittance, three\'s shadow maps of the 3 lights'),
+    row('both1', 'the spot: three\'s shadow map and our map'),
+    row('both3', 'the 3 lights: three\'s shadow maps and our maps'), '',
+    `Per light, over these three: our map adds ${perLight('ours3', 'ours0', 3)} ms, three's shadow maps ${perLight('three3', 'ours0', 3)} ms; with three's shadows on, our maps add ×${(m.both3 / m.three3).toFixed(2)} to the frame (3 lights), ×${(m.both1 / m.three1).toFixed(2)} (the spot).`].join('\n');
+}
+
 /**
  * @param {object} json bench/results/<name>.json
- * @param {{ transfer?: object, surfaceTruth?: object, webgpu?: object }} [beyond] the other runs' results (see beyondDenseSection, webgpuSection)
+ * @param {{ transfer?: object, surfaceTruth?: object, webgpu?: object, lights?: object }} [beyond] the other runs' results (see beyondDenseSection, webgpuSection, lightsSection)
  */
 export function benchMarkdown(json, beyond = {}) {
   const { results } = json;
@@ -387,6 +413,8 @@ ${beyondDenseSection(beyond)}
 ${peersSection(json)}
 
 ${webgpuSection(beyond.webgpu)}
+
+${lightsSection(beyond.lights)}
 
 ${issueTableSection(json)}
 

@@ -62,6 +62,11 @@ export function createAppliers(demo) {
       light.intensity = state.lightIntensity;
       light.color.set(state.lightColor);
     },
+    // The ear's point light joins the key light in the pipeline's list (each gets its own thickness map).
+    pointLight: () => {
+      rig.pointLight.visible = state.pointLight;
+      sss.light = state.pointLight ? [light, rig.pointLight] : light;
+    },
     split: () => {
       sss.split = state.split;
       showDivider();

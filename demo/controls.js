@@ -5,14 +5,14 @@
 // lil-gui's own would be an inline <style>, which the demo's Content-Security-Policy refuses.
 import GUI from 'three/addons/libs/lil-gui.module.min.js';
 import { STATE_SCHEMA } from './state.js';
-import { FIGURES } from './figures.js';
+import { FIGURES, PRESETS } from './figures.js';
 
 const LABELS = {
   sss: 'scattering', width: 'width (mm)', depthThreshold: 'threshold (mm)', shrink: 'inward shrink (mm)',
   lightDepthSize: 'depth map size', lightAzimuth: 'azimuth (°)', lightElevation: 'elevation (°)',
   lightIntensity: 'intensity', lightColor: 'colour', followSurface: 'follow surface', split: 'divider (left: off)',
   resolutionScale: 'resolution scale', marble: 'marble piece (its own profile)',
-  groups: 'isotropy groups (1: one kernel)',
+  groups: 'isotropy groups (1: one kernel)', pointLight: 'ear point light',
 };
 
 /** Short names of the figures, for the preset rows. */
@@ -25,12 +25,13 @@ const TOGGLE_NAMES = { transmittance: 'transmittance', sss: 'scattering', follow
  * @param {object} hooks
  * @param {(key: string) => void} hooks.onChange
  * @param {(id: number, side: 'before'|'after') => void} hooks.onFigure
+ * @param {(name: string) => void} hooks.onPreset shows one of figures.js's PRESETS
  * @param {() => void} hooks.onReset back to the first view
  * @param {HTMLElement} hooks.container where the panel goes
  * @param {'webgl'|'webgpu'} [hooks.renderer='webgl'] the page's renderer
  * @param {(kind: 'webgl'|'webgpu') => void} [hooks.onRenderer] switches to the other one
  */
-export function createControls(state, { onChange, onFigure, onReset, container, renderer = 'webgl', onRenderer = () => {} }) {
+export function createControls(state, { onChange, onFigure, onPreset, onReset, container, renderer = 'webgl', onRenderer = () => {} }) {
   const gui = new GUI({ title: 'Settings', container, injectStyles: false });
   const add = (folder, key, ...args) => {
     const schema = STATE_SCHEMA[key];
@@ -97,6 +98,8 @@ export function createControls(state, { onChange, onFigure, onReset, container, 
   add(light, 'lightAzimuth', 1);
   add(light, 'lightElevation', 1);
   add(light, 'lightIntensity', 0.1);
+  // A second light: the preset frames the ear; the switch itself is under More › Transmittance.
+  light.add({ earLight: () => onPreset('earLight') }, 'earLight').name('▶ preset: ear light').domElement.title = PRESETS.earLight.caption;
 
   const skin = gui.addFolder('Skin');
   add(skin, 'width', 0.05);
@@ -119,6 +122,7 @@ export function createControls(state, { onChange, onFigure, onReset, container, 
   const transmittance = more.addFolder('Transmittance');
   add(transmittance, 'lightDepthSize');
   add(transmittance, 'shrink', 0.05);
+  add(transmittance, 'pointLight');
   const specular = more.addFolder('Specular');
   add(specular, 'specular', 0.01);
   add(specular, 'roughness', 0.01);

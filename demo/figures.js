@@ -1,5 +1,6 @@
 // The paper's five figures (Tetzlaff 2013, after Jimenez) as presets: camera, light and settings,
-// and the one setting that differs between the "before" and "after" images.
+// and the one setting that differs between the "before" and "after" images. Then the demo's own
+// presets (`#preset=<name>`), one view each.
 import { DEFAULT_CAMERA } from './headScene.js';
 
 // Coordinates are the scan's (Y up, facing +Z, ~5 cm per unit): nose tip (−0.09, 1.10, 2.59),
@@ -73,4 +74,22 @@ export function figureState(id, side = 'after') {
   const figure = FIGURES.find((f) => f.id === id);
   if (!figure) throw new RangeError(`figure must be an integer in 1..5, got ${id}`);
   return { ...FIGURE_BASE, ...figure.settings, camera: [...figure.camera], figure: id, [figure.toggle]: figure[side] };
+}
+
+/** The demo's presets beyond the paper, by name (state.js's PRESET_NAMES): title, caption, camera, settings. */
+export const PRESETS = {
+  earLight: {
+    title: 'Two lights: the key light and a point light behind the ear',
+    caption: 'The pipeline takes a list of lights, each with its own thickness map: the point light behind the ear makes it glow while the key light keeps lighting the face.',
+    // Figure 2's view of the right ear, lit as figure 5; translucency as figure 2's (its calibration).
+    camera: [6.5, 1.7, 4.5, 1.7, 1.3, -0.2],
+    settings: { lightAzimuth: 30, lightElevation: 25, lightIntensity: 2.6, translucency: 0.945, pointLight: true },
+  },
+};
+
+/** The state values a preset sets. */
+export function presetState(name) {
+  const preset = PRESETS[name];
+  if (!preset) throw new RangeError(`preset must be one of ${Object.keys(PRESETS).join(', ')}, got ${name}`);
+  return { ...FIGURE_BASE, ...preset.settings, camera: [...preset.camera], preset: name };
 }

@@ -1,7 +1,7 @@
 // The demo's scene: the head, a shadow-casting spot light, soft ambient light, a camera framing the
-// face. Shared by the page, the figure renderer and the bench so they all show the same thing.
+// face, and a point light behind the right ear (hidden: the demo's `pointLight` shows it). Shared by the page, the figure renderer and the bench so they all show the same thing.
 import {
-  Color, HemisphereLight, IcosahedronGeometry, Mesh, MeshStandardMaterial, PerspectiveCamera, Scene, SpotLight, Vector3,
+  Color, HemisphereLight, IcosahedronGeometry, Mesh, MeshStandardMaterial, PerspectiveCamera, PointLight, Scene, SpotLight, Vector3,
 } from 'three';
 
 /** The scan is about 5 cm per world unit (REFERENCE §9): 8.55 units ≈ 43 cm across the shoulders. */
@@ -43,9 +43,29 @@ export function createHeadScene(headMesh) {
   camera.position.fromArray(DEFAULT_CAMERA, 0);
   camera.lookAt(DEFAULT_CAMERA[3], DEFAULT_CAMERA[4], DEFAULT_CAMERA[5]);
 
-  const rig = { scene, camera, light, head: headMesh, facePoint: FACE_CENTRE };
+  const pointLight = createEarLight();
+  scene.add(pointLight);
+
+  const rig = { scene, camera, light, pointLight, head: headMesh, facePoint: FACE_CENTRE };
   setLightDirection(rig, 30, 25);
   return rig;
+}
+
+/** The bowl of the right ear (its concha), on the surface seen from figure 2's camera. */
+export const RIGHT_EAR = new Vector3(1.65, 1.5, -0.13);
+
+/**
+ * A second light for transmittance: a point light 6 cm behind the right ear, so the ear glows
+ * while the key light stays. No shadow map of three's (the pipeline draws its own thickness map);
+ * decay 2 and a short range keep its light on the ear and the nape.
+ * @returns {PointLight} hidden until shown
+ */
+export function createEarLight() {
+  const light = new PointLight(0xffe2c4, 8, 6, 2);
+  light.name = 'ear light';
+  light.position.set(1.9, 1.6, -1.4);
+  light.visible = false;
+  return light;
 }
 
 /**

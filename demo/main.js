@@ -14,7 +14,7 @@ import { loadHead } from './headModel.js';
 import { createHeadScene, createMarblePiece, HEAD_WORLD_UNIT_IN_MM } from './headScene.js';
 import { SHOTS } from './framing.js';
 import { defaultState, parseHash, formatHash } from './state.js';
-import { figureState } from './figures.js';
+import { figureState, presetState } from './figures.js';
 import { createControls } from './controls.js';
 import { PassTimings } from './passTimings.js';
 import { TimingsHud } from './hud.js';
@@ -59,11 +59,12 @@ function code(text) {
   return element;
 }
 
-/** Reads the hash into a full state: defaults, then the figure preset, then explicit keys. */
+/** Reads the hash into a full state: defaults, then the figure or preset, then explicit keys. */
 function stateFromHash(hash) {
   const { values, problems } = parseHash(hash);
   const state = defaultState();
   if (values.figure) Object.assign(state, figureState(values.figure, 'after'));
+  if (values.preset) Object.assign(state, presetState(values.preset));
   Object.assign(state, values);
   return { state, problems };
 }
@@ -165,23 +166,25 @@ function createActions(demo) {
     const hash = formatHash(state);
     history.replaceState(null, '', hash ? `#${hash}` : location.pathname + location.search);
   };
+  // A figure or preset defines the whole view: everything else returns to its default (bar the resolution).
+  const showPreset = (values) => {
+    Object.assign(state, defaultState(), { resolutionScale: state.resolutionScale }, values);
+    applyAll();
+    demo.panel.refresh();
+    writeHash();
+  };
   const actions = {
     applyAll,
     writeHash,
     onChange(key) {
-      if (key !== 'figure' && key !== 'camera') state.figure = null;
+      if (!['figure', 'preset', 'camera'].includes(key)) Object.assign(state, { figure: null, preset: null });
       if (key === 'shot') state.camera = null; // a shot replaces an orbited camera
       demo.apply[groupOf(key)]?.();
       if (key === 'view' || KERNEL_KEYS.includes(key)) demo.apply.view();
       writeHash();
     },
-    // A figure defines the whole view: everything else returns to its default (bar the resolution).
-    onFigure(id, side) {
-      Object.assign(state, defaultState(), { resolutionScale: state.resolutionScale }, figureState(id, side));
-      applyAll();
-      demo.panel.refresh();
-      writeHash();
-    },
+    onFigure: (id, side) => showPreset(figureState(id, side)),
+    onPreset: (name) => showPreset(presetState(name)),
     // Back to the first view: every setting at its default.
     onReset() {
       Object.assign(state, defaultState());
@@ -229,7 +232,7 @@ function listen(demo, actions) {
   }
   controls.addEventListener('end', () => {
     state.camera = [...camera.position.toArray(), ...controls.target.toArray()].map((v) => Math.round(v * 1000) / 1000);
-    state.figure = null;
+    Object.assign(state, { figure: null, preset: null });
     actions.writeHash();
   });
   window.addEventListener('hashchange', actions.onHash);
@@ -285,7 +288,7 @@ async function start() {
   const webgpu = await webgpuModule();
   const renderer = webgpu ? await webgpu.createWebgpuRenderer(container) : createRenderer();
   const head = await loadHeadShowingProgress();
-  const parts = webgpu ? webgpu.createWebgpuPipeline(renderer, head) : createPipeline(renderer, head);
+  const parts = webgpu ? webgpu.createWebgpuPipeline(renderer, head, document.querySelector('#hud .hud-note')) : createPipeline(renderer, head);
   const demo = { ...withTimings(parts), ...stateFromHash(location.hash), kernelCanvas, shotButtons, rendererKind: webgpu ? 'webgpu' : 'webgl' };
   demo.resize = () => resize(demo);
   // The node shows one image: no divider on the WebGPU page.

@@ -32,7 +32,14 @@ export class PassTimings {
   constructor(renderer, sss) {
     // WebGPURenderer (?renderer=webgpu) has no stage timer here: the frame's CPU time only.
     this.stages = renderer.isWebGLRenderer ? new GpuStageTimer(renderer, { window: WINDOW }) : NO_STAGE_TIMER;
-    sss.stageTimer = this.stages;
+    // Each light's map is a stage of its own: counted, so the frame's light depth is their sum.
+    this.mapsNow = 0;
+    /** The light depth maps the last frame drew. */
+    this.maps = 0;
+    sss.stageTimer = {
+      begin: (stage) => { if (stage === 'lightDepth') this.mapsNow++; this.stages.begin(stage); },
+      end: (stage) => this.stages.end(stage),
+    };
     this.sss = sss;
     this.renderer = renderer.isWebGLRenderer ? rendererName(renderer.getContext()) : `WebGPURenderer, ${renderer.backend.isWebGPUBackend ? 'WebGPU' : 'WebGL 2'} backend`;
     this.software = isSoftwareRenderer(this.renderer);
@@ -61,6 +68,7 @@ export class PassTimings {
     keepLast(this.frameTimes, cpuMs, WINDOW);
     this.ran = new Set(this.stages.begun);
     this.stages.begun.clear();
+    [this.maps, this.mapsNow] = [this.mapsNow, 0];
     this.stages.poll();
   }
 
@@ -73,6 +81,7 @@ export class PassTimings {
     const skipped = this.lastFrame === null || this.stages === NO_STAGE_TIMER ? [] : STAGES.filter((s) => !this.ran.has(s)
       && (s in medians || (s === 'lightDepth' && this.sss.light !== null)));
     for (const s of skipped) delete medians[s];
+    if (medians.lightDepth !== undefined) medians.lightDepth *= Math.max(1, this.maps); // the median map, times the maps drawn
     return { ...medians, skipped, cpu: median(this.frameTimes), fps: 1000 / median(this.frameIntervals) };
   }
 }

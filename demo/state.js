@@ -4,6 +4,9 @@
 
 import { SHOT_NAMES } from './framing.js';
 
+/** The presets besides the paper's figures (demo/figures.js's PRESETS). */
+export const PRESET_NAMES = ['earLight'];
+
 const PROFILES = ['skin', 'skinBurley', 'marble', 'milk'];
 const VIEWS = ['final', 'diffuse', 'specular', 'depth', 'mask', 'thickness', 'transmittance', 'kernel'];
 
@@ -42,12 +45,15 @@ export const STATE_SCHEMA = {
   lightElevation: number(-80, 89, 50, '°'),
   lightIntensity: number(0, 20, 5),
   lightColor: { kind: 'colour', fallback: '#ffffff' },
+  // A second transmitting light: the point light behind the right ear (demo/headScene.js).
+  pointLight: bool(false),
   // View: the page opens split in two (left without scattering), on the close-up of the face.
   split: number(0, 1, 0.5),
   view: oneOf(VIEWS, 'final'),
   resolutionScale: number(0.25, 2, 1),
   shot: oneOf(SHOT_NAMES, 'face'),
   figure: { kind: 'figure', fallback: null },
+  preset: oneOf(PRESET_NAMES, null),
   // Set when the camera was moved (orbit) or by a figure; null: the shot, framed to the window.
   camera: { kind: 'camera', fallback: null },
 };

@@ -5,7 +5,7 @@ import { ATTACHMENTS } from '../src/2-scene-split/subsurfaceTarget.js';
 
 /**
  * @param {object} demo the page's parts (demo/main.js)
- * @param {{ onChange: (key: string) => void, onFigure: Function, onReset: Function, onHash: () => void }} actions
+ * @param {{ onChange: (key: string) => void, onFigure: Function, onPreset: Function, onReset: Function, onHash: () => void }} actions
  * @param {() => void} frame renders one frame
  */
 export function testApi(demo, actions, frame) {
@@ -35,6 +35,7 @@ export function testApi(demo, actions, frame) {
       actions.onHash();
     },
     figure: actions.onFigure,
+    preset: actions.onPreset,
     reset: actions.onReset,
     /** Shows or hides everything over the image (header, panel, divider, timings, attribution). */
     chrome(visible) { document.body.classList.toggle('no-chrome', !visible); },

@@ -1,6 +1,7 @@
 // The demo on WebGPURenderer (index.html?renderer=webgpu, demo/webgpuPipeline.js): in the WebGPU
 // browser (SwiftShader) it draws the head through the node, lit, and turning the scattering off
-// changes the face, and so do the isotropy groups; in the run's shared browser, which has no WebGPU adapter, it says so and shows
+// changes the face, and so do the isotropy groups; the ear light preset shows its key light only,
+// saying so; in the run's shared browser, which has no WebGPU adapter, it says so and shows
 // the WebGL page. 320 × 180, still (frames on demand), chrome hidden for the pixels.
 import { it, expect } from 'vitest';
 import { openPage, screenshotPixels } from '../../harness/page.js';
@@ -51,6 +52,17 @@ it('?renderer=webgpu draws the head through the node: lit, and the scattering ch
   expect(changed(on, groups)).toBeGreaterThan(0.02);
   await page.evaluate(() => window.demo.set('groups', 1));
   expect(changed(on, await image(page))).toBe(0);
+  // The ear light preset's list of two: the node keeps the key light, hides the point light and the HUD says so.
+  await page.evaluate(() => window.demo.show('preset=earLight'));
+  const earLight = await page.evaluate(() => ({
+    light: window.demo.sss.node.light.type, pointShown: window.demo.rig.pointLight.visible,
+  }));
+  expect(earLight).toMatchObject({ light: 'SpotLight', pointShown: false });
+  expect(await page.evaluate(() => {
+    const note = document.querySelector('#hud .hud-note');
+    return note.hidden ? null : note.textContent;
+  })).toMatch(/one light, the key light \(ear light: WebGL page only\)/);
+  expect(litFraction(await image(page))).toBeGreaterThan(0.05);
   expect(page.problems).toEqual([]);
   await page.close();
 });

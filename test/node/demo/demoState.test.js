@@ -1,8 +1,8 @@
 // The demo's URL state: every key parses back to what was written, invalid values are refused
 // with a message naming the key and the accepted values, and figures set their toggles.
 import { describe, it, expect } from 'vitest';
-import { STATE_SCHEMA, defaultState, parseHash, formatHash } from '../../../demo/state.js';
-import { FIGURES, figureState } from '../../../demo/figures.js';
+import { STATE_SCHEMA, PRESET_NAMES, defaultState, parseHash, formatHash } from '../../../demo/state.js';
+import { FIGURES, PRESETS, figureState, presetState } from '../../../demo/figures.js';
 
 describe('demo URL state', () => {
   it('round-trips a state through the hash', () => {
@@ -49,5 +49,17 @@ describe('demo URL state', () => {
       const { problems } = parseHash(`#${formatHash({ ...defaultState(), ...after })}`);
       expect(problems).toEqual([]);
     }
+  });
+
+  it('has a state for each preset name, valid for the hash and read back from it', () => {
+    expect(Object.keys(PRESETS)).toEqual(PRESET_NAMES);
+    for (const name of PRESET_NAMES) {
+      const state = { ...defaultState(), ...presetState(name) };
+      const { values, problems } = parseHash(`#${formatHash(state)}`);
+      expect(problems).toEqual([]);
+      expect({ ...defaultState(), ...values }).toEqual(state);
+    }
+    expect(presetState('earLight')).toMatchObject({ pointLight: true, preset: 'earLight' });
+    expect(parseHash('#preset=nose').problems).toEqual(['Ignored preset=nose: it must be one of earLight.']);
   });
 });
