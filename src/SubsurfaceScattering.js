@@ -72,6 +72,8 @@ export class SubsurfaceScattering extends PassWithSettings {
     if (Object.hasOwn(options, 'transmittance')) checkNeedsLight('transmittance', o.transmittance, o.light);
     checkNeedsLight('debugView', o.debugView, o.light);
     this._settings.transmittance = o.transmittance && o.light !== null; // the default: on where there is a light
+    /** @internal Whether transmittance is asked for: kept across lights, so a light arriving does not undo an `off`. */
+    this._transmittanceWanted = o.transmittance;
 
     this.needsSwap = false; // like RenderPass: it draws into the read buffer
     /** As RenderPass: first in renderer.setEffects([...]) (three r182+), the renderer leaves the scene's draw to it. */
@@ -169,6 +171,7 @@ export class SubsurfaceScattering extends PassWithSettings {
         return;
       case 'transmittance':
         checkNeedsLight(name, value, this.light);
+        this._transmittanceWanted = value;
         this._subsurfaceMaterials.rebindAll();
         return;
       case 'debugView': case 'debugDepthRange': case 'debugThicknessRangeMm':
@@ -191,15 +194,15 @@ export class SubsurfaceScattering extends PassWithSettings {
 
   /**
    * Other lights, or none: each map follows its light from the next frame (kept where there was
-   * one at its place, so its materials read it on); from none to a light transmittance turns on (as
-   * the constructor's default), to none off.
+   * one at its place, so its materials read it on); from none to a light transmittance turns on
+   * unless it was set off, to none off.
    * @private
    */
   _setLight(light, previous) {
     if (light === previous) return;
     if (light === null) checkNeedsLight('debugView', this.debugView, null); // a light's view stays: refused
     const switches = previous === null || light === null;
-    if (switches) this._settings.transmittance = light !== null;
+    if (switches) this._settings.transmittance = light !== null && this._transmittanceWanted;
     if (!this._useLights(lightsOf(light, this.scene)) && switches) this._subsurfaceMaterials.rebindAll();
   }
 

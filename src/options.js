@@ -209,7 +209,7 @@ export const PIPELINE_SCHEMA = Object.freeze({
   },
   light: {
     default: null, type: "import('./options.js').TransmittingLight|import('./options.js').TransmittingLight[]|'castShadow'|null",
-    doc: `the spot, directional or point light shining through thin parts; the pipeline also takes a list of up to ${MAX_LIGHTS} or 'castShadow' (the scene's shadow casters); null: none`,
+    doc: `the spot, directional or point light (the node: spot or directional) shining through thin parts; the pipeline also takes a list of up to ${MAX_LIGHTS} or 'castShadow' (the scene's casters); null: none`,
     check(light, name) {
       if (light === CAST_SHADOW) return light;
       if (!Array.isArray(light)) return checkOneLight(light, name);
@@ -287,7 +287,7 @@ export const PIPELINE_SCHEMA = Object.freeze({
     check: isBoolean,
   },
   transmittance: {
-    default: true, type: 'boolean', doc: "light through thin parts for every material (a uniform); needs `light`",
+    default: true, type: 'boolean', doc: 'light through thin parts for every material; false without a light',
     check: isBoolean,
   },
   debugView: {
@@ -386,7 +386,7 @@ export const LIGHT_VIEWS = Object.freeze(['thickness', 'transmittance']);
 export function checkNeedsLight(name, value, light) {
   const needs = name === 'transmittance' ? value === true : name === 'debugView' && LIGHT_VIEWS.includes(value);
   if (needs && !light) {
-    throw new TypeError(`${name} = ${JSON.stringify(value)} needs a light (a THREE.SpotLight or THREE.DirectionalLight as \`light\`); there is none`);
+    throw new TypeError(`${name} = ${JSON.stringify(value)} needs a light (\`light\`: a spot, directional or point light, or a list); there is none`);
   }
   return value;
 }
@@ -473,7 +473,7 @@ export function checkMaterialOptions(options = {}, previous = MATERIAL_DEFAULTS)
  * @typedef {object} SubsurfaceScatteringOptions
  * @property {import('three').Scene} scene the scene drawn, read every frame
  * @property {import('three').Camera} camera the camera drawn with, read every frame
- * @property {TransmittingLight|TransmittingLight[]|'castShadow'|null} [light=null] the spot, directional or point light shining through thin parts; the pipeline also takes a list of up to 4 or 'castShadow' (the scene's shadow casters); null: none
+ * @property {TransmittingLight|TransmittingLight[]|'castShadow'|null} [light=null] the spot, directional or point light (the node: spot or directional) shining through thin parts; the pipeline also takes a list of up to 4 or 'castShadow' (the scene's casters); null: none
  * @property {number} [worldUnitInMm=1000] millimetres per world unit (three.js: metres, 1000)
  * @property {ProfileName|object} [profile='skin'] a preset's name ('skin', 'skinBurley', 'marble', 'milk') or a profile object (burleyProfile, dipoleProfile, gaussianSumProfile)
  * @property {Method} [method='footprint'] how the blur weighs its taps: 'footprint' (each pixel's footprint, exactly), 'marginal' or 'reference' (fixed taps; Jimenez 2012's kernel); a switch to or from 'footprint' recompiles
@@ -488,7 +488,7 @@ export function checkMaterialOptions(options = {}, previous = MATERIAL_DEFAULTS)
  * @property {import('three').TextureDataType} [type=THREE.HalfFloatType] THREE.HalfFloatType or THREE.FloatType light targets; constructor only
  * @property {number|'auto'} [multisampling='auto'] MSAA samples of the scene split, 0..16; 'auto': the composer buffer's `samples` (the node: its scene pass's)
  * @property {boolean} [scattering=true] false: no blur, the unblurred diffuse light composed (transmittance stays)
- * @property {boolean} [transmittance=true] light through thin parts for every material (a uniform); needs `light`
+ * @property {boolean} [transmittance=true] light through thin parts for every material; false without a light
  * @property {import('./4-compose/debugViews.js').DebugView} [debugView='final'] the final image or one ingredient: 'final', 'diffuse', 'specular', 'depth', 'mask', and with `light` 'thickness', 'transmittance'
  * @property {number} [debugDepthRange=10] world units of view depth the 'depth' view maps from white (near) to black
  * @property {number} [debugThicknessRangeMm=10] profile mm of thickness the 'thickness' view maps from black to white
@@ -498,7 +498,7 @@ export function checkMaterialOptions(options = {}, previous = MATERIAL_DEFAULTS)
 /**
  * subsurfaceScattering(scenePass, { ... }) (the WebGPU node): the defaults are NODE_DEFAULTS.
  * @typedef {object} SubsurfaceScatteringNodeOptions
- * @property {TransmittingLight|TransmittingLight[]|'castShadow'|null} [light=null] the spot, directional or point light shining through thin parts; the pipeline also takes a list of up to 4 or 'castShadow' (the scene's shadow casters); null: none
+ * @property {TransmittingLight|TransmittingLight[]|'castShadow'|null} [light=null] the spot, directional or point light (the node: spot or directional) shining through thin parts; the pipeline also takes a list of up to 4 or 'castShadow' (the scene's casters); null: none
  * @property {number} [worldUnitInMm=1000] millimetres per world unit (three.js: metres, 1000)
  * @property {ProfileName|object} [profile='skin'] a preset's name ('skin', 'skinBurley', 'marble', 'milk') or a profile object (burleyProfile, dipoleProfile, gaussianSumProfile)
  * @property {Method} [method='footprint'] how the blur weighs its taps: 'footprint' (each pixel's footprint, exactly), 'marginal' or 'reference' (fixed taps; Jimenez 2012's kernel); a switch to or from 'footprint' recompiles
@@ -510,7 +510,7 @@ export function checkMaterialOptions(options = {}, previous = MATERIAL_DEFAULTS)
  * @property {boolean} [foreshortening=true] narrow the blur on surfaces seen at grazing angles
  * @property {number} [lightDepthSize=1024] the light depth map resolution, pixels (16..8192)
  * @property {boolean} [scattering=true] false: no blur, the unblurred diffuse light composed (transmittance stays)
- * @property {boolean} [transmittance=true] light through thin parts for every material (a uniform); needs `light`
+ * @property {boolean} [transmittance=true] light through thin parts for every material; false without a light
  * @property {import('./4-compose/debugViews.js').DebugView} [debugView='final'] the final image or one ingredient: 'final', 'diffuse', 'specular', 'depth', 'mask', and with `light` 'thickness', 'transmittance'
  * @property {number} [debugDepthRange=10] world units of view depth the 'depth' view maps from white (near) to black
  * @property {number} [debugThicknessRangeMm=10] profile mm of thickness the 'thickness' view maps from black to white
@@ -521,7 +521,7 @@ export function checkMaterialOptions(options = {}, previous = MATERIAL_DEFAULTS)
  * @typedef {object} PipelineSettings
  * @property {import('three').Scene} scene the scene drawn, read every frame
  * @property {import('three').Camera} camera the camera drawn with, read every frame
- * @property {TransmittingLight|TransmittingLight[]|'castShadow'|null} light the spot, directional or point light shining through thin parts; the pipeline also takes a list of up to 4 or 'castShadow' (the scene's shadow casters); null: none
+ * @property {TransmittingLight|TransmittingLight[]|'castShadow'|null} light the spot, directional or point light (the node: spot or directional) shining through thin parts; the pipeline also takes a list of up to 4 or 'castShadow' (the scene's casters); null: none
  * @property {number} worldUnitInMm millimetres per world unit (three.js: metres, 1000)
  * @property {Method} method how the blur weighs its taps: 'footprint' (each pixel's footprint, exactly), 'marginal' or 'reference' (fixed taps; Jimenez 2012's kernel); a switch to or from 'footprint' recompiles
  * @property {number|'auto'} samples taps per direction, odd, 3..63 (a budget for 'footprint'); 'auto': as few as the on-screen scale needs
@@ -534,7 +534,7 @@ export function checkMaterialOptions(options = {}, previous = MATERIAL_DEFAULTS)
  * @property {number} lightDepthSize the light depth map resolution, pixels (16..8192)
  * @property {number|'auto'} multisampling MSAA samples of the scene split, 0..16; 'auto': the composer buffer's `samples` (the node: its scene pass's)
  * @property {boolean} scattering false: no blur, the unblurred diffuse light composed (transmittance stays)
- * @property {boolean} transmittance light through thin parts for every material (a uniform); needs `light`
+ * @property {boolean} transmittance light through thin parts for every material; false without a light
  * @property {import('./4-compose/debugViews.js').DebugView} debugView the final image or one ingredient: 'final', 'diffuse', 'specular', 'depth', 'mask', and with `light` 'thickness', 'transmittance'
  * @property {number} debugDepthRange world units of view depth the 'depth' view maps from white (near) to black
  * @property {number} debugThicknessRangeMm profile mm of thickness the 'thickness' view maps from black to white
@@ -544,7 +544,7 @@ export function checkMaterialOptions(options = {}, previous = MATERIAL_DEFAULTS)
 /**
  * SubsurfaceScatteringNode's settings, as properties (assigning one checks it as the constructor does).
  * @typedef {object} NodeSettings
- * @property {TransmittingLight|TransmittingLight[]|'castShadow'|null} light the spot, directional or point light shining through thin parts; the pipeline also takes a list of up to 4 or 'castShadow' (the scene's shadow casters); null: none
+ * @property {TransmittingLight|TransmittingLight[]|'castShadow'|null} light the spot, directional or point light (the node: spot or directional) shining through thin parts; the pipeline also takes a list of up to 4 or 'castShadow' (the scene's casters); null: none
  * @property {number} worldUnitInMm millimetres per world unit (three.js: metres, 1000)
  * @property {Method} method how the blur weighs its taps: 'footprint' (each pixel's footprint, exactly), 'marginal' or 'reference' (fixed taps; Jimenez 2012's kernel); a switch to or from 'footprint' recompiles
  * @property {number|'auto'} samples taps per direction, odd, 3..63 (a budget for 'footprint'); 'auto': as few as the on-screen scale needs
@@ -555,7 +555,7 @@ export function checkMaterialOptions(options = {}, previous = MATERIAL_DEFAULTS)
  * @property {boolean} foreshortening narrow the blur on surfaces seen at grazing angles
  * @property {number} lightDepthSize the light depth map resolution, pixels (16..8192)
  * @property {boolean} scattering false: no blur, the unblurred diffuse light composed (transmittance stays)
- * @property {boolean} transmittance light through thin parts for every material (a uniform); needs `light`
+ * @property {boolean} transmittance light through thin parts for every material; false without a light
  * @property {import('./4-compose/debugViews.js').DebugView} debugView the final image or one ingredient: 'final', 'diffuse', 'specular', 'depth', 'mask', and with `light` 'thickness', 'transmittance'
  * @property {number} debugDepthRange world units of view depth the 'depth' view maps from white (near) to black
  * @property {number} debugThicknessRangeMm profile mm of thickness the 'thickness' view maps from black to white

@@ -361,8 +361,9 @@ export class BlurStage {
   setKernel(options = {}) {
     const next = { ...this._settings };
     for (const name of KERNEL_SETTINGS) {
-      if (options[name] === undefined) continue;
-      next[name] = checkOption(PIPELINE_SCHEMA, name, options[name]);
+      if (!Object.hasOwn(options, name)) continue;
+      // undefined: back to the method's own (strength, falloff have no default of their own)
+      next[name] = options[name] === undefined && PIPELINE_SCHEMA[name].default === undefined ? undefined : checkOption(PIPELINE_SCHEMA, name, options[name]);
     }
     this.checkProfileCount(next.method, this.profileLookups.length);
     this._checkGroupsMethod(next.method, this._kernelGroups);

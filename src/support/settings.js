@@ -24,7 +24,9 @@ export function withSettings(Base, schema, owner) {
         if (!assignable) {
           throw new TypeError(`${owner}.${name} is read-only: it is given to the constructor (make another ${owner} for another ${name})`);
         }
-        const checked = schema[name].check(value, name);
+        // A setting without a default takes undefined back (the method's own: strength, falloff).
+        const spec = schema[name];
+        const checked = value === undefined && spec.default === undefined && !spec.required ? undefined : spec.check(value, name);
         const previous = this._settings[name];
         this._settings[name] = checked;
         try {

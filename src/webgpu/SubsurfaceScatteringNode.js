@@ -97,6 +97,8 @@ export class SubsurfaceScatteringNode extends NodeWithSettings {
     if (Object.hasOwn(options ?? {}, 'transmittance')) checkNeedsLight('transmittance', o.transmittance, o.light);
     checkNeedsLight('debugView', o.debugView, o.light);
     this._settings.transmittance = o.transmittance && o.light !== null; // the default: on where there is a light
+    /** @internal Whether transmittance is asked for: kept across lights, so a light arriving does not undo an `off`. */
+    this._transmittanceWanted = o.transmittance;
     this.scenePass = scenePass;
     this.profileLookup = new ProfileLookup(o.profile);
     this.footprintTable = new FootprintTable(this.profileLookup);
@@ -163,12 +165,13 @@ export class SubsurfaceScatteringNode extends NodeWithSettings {
         return;
       case 'transmittance':
         checkNeedsLight(name, value, this.light);
+        this._transmittanceWanted = value;
         return;
-      case 'light': // as the WebGL pipeline: a light after none turns transmittance on, null off
+      case 'light': // as the WebGL pipeline: a light after none turns transmittance on (unless set off), null off
         if (value === previous) return;
         if (value === null) checkNeedsLight('debugView', this.debugView, null);
         this._lightStage.setLight(nodeLight(value));
-        if (value === null || previous === null) this._settings.transmittance = value !== null;
+        if (value === null || previous === null) this._settings.transmittance = value !== null && this._transmittanceWanted;
         return;
       case 'debugView':
         checkNeedsLight(name, value, this.light);

@@ -92,7 +92,7 @@ export const CALL_CASES = [
   ["debugView = 'thickness' without a light", (t) => { t.make({ light: null }).debugView = 'thickness'; }, 'TypeError', /^debugView = "thickness" needs a light/],
   ["debugView: 'transmittance' without a light", (t) => t.make({ light: null, debugView: 'transmittance' }), 'TypeError', /^debugView = "transmittance" needs a light/],
   ['transmittance: true without a light', (t) => t.make({ light: null, transmittance: true }), 'TypeError', /^transmittance = true needs a light/],
-  ['transmittance = true without a light', (t) => { t.make({ light: null }).transmittance = true; }, 'TypeError', /^transmittance = true needs a light \(a THREE\.SpotLight or THREE\.DirectionalLight as `light`\); there is none$/],
+  ['transmittance = true without a light', (t) => { t.make({ light: null }).transmittance = true; }, 'TypeError', /^transmittance = true needs a light \(`light`: a spot, directional or point light, or a list\); there is none$/],
   ['samples = 4', (t) => { t.sss.samples = 4; }, 'RangeError', /samples must be an odd integer in 3\.\.63, got 4/],
   ["method = 'gauss'", (t) => { t.sss.method = 'gauss'; }, 'RangeError', /method must be one of/],
   ['profile = a NaN profile', (t) => { t.sss.profile = t.nanProfile(); }, 'TypeError', /profile "nan": R\(0\.1 mm\) must be a finite number/],

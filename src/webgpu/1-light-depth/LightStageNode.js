@@ -48,7 +48,11 @@ export class LightStageNode extends Node {
   updateBefore({ renderer }) {
     if (this.owner.light === null) { // none (any more): the materials handed uniforms send nothing
       this.checks.begin().end();
-      for (const material of this._materials) if (material.transmittanceNodes) material.transmittanceNodes.sssTransmits.value = false;
+      for (const material of this._materials) {
+        if (!material.transmittanceNodes) continue;
+        material.transmittanceNodes.sssTransmits.value = false;
+        material.transmittanceNodes.sssDebugOutput.value = MATERIAL_OUTPUTS.indexOf('diffuse'); // a light's view cannot stay without one
+      }
       return;
     }
     const { scene, camera } = this.owner.scenePass;
