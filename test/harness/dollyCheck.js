@@ -37,8 +37,9 @@ const OF_LIGHT = 2 ** -20;
 /**
  * Dollies across every threshold of `sss` (pipeline options) with `dolly({ fovDeg, scales })`,
  * which renders a frame at each scale (px/mm) and returns dollyDepartures with `plans` and
- * `isStandIn`; asserts the bound at each and returns the rows measured. `groupsOfLight`: the
- * bound's rounding floor where one kernel meets the groups, a fraction of the unscattered light.
+ * `isStandIn`; asserts the set-up (the plan changes where Node found it, the dolly itself is
+ * smooth) and returns the rows measured, each with its bound, for the test to assert. `groupsOfLight`:
+ * the bound's rounding floor where one kernel meets the groups, a fraction of the unscattered light.
  */
 export async function checkDolly(sss, dolly, { groupsOfLight = 2 ** -12 } = {}) {
   const thresholds = planThresholds(blurSettings(sss), 0.05, 7);
@@ -64,9 +65,6 @@ export async function checkDolly(sss, dolly, { groupsOfLight = 2 ** -12 } = {}) 
     });
   }
   console.log(rows.map((w) => `${w.pixelsPerMm.toFixed(4)} px/mm ${w.change.slice(0, 60)}: excess ${(100 * w.excess / w.s).toFixed(3)} % of s (${(w.excess / w.unscattered).toExponential(2)} of the light; bound ${(w.bound / w.unscattered).toExponential(2)}), unscattered ${(100 * w.excessUnscattered / w.unscattered).toFixed(4)} %`).join('\n'));
-  for (const w of rows) {
-    expect(w.excess, `${w.pixelsPerMm} px/mm: ${w.change}`).toBeLessThanOrEqual(w.bound);
-    expect(w.excessUnscattered).toBeLessThanOrEqual(OF_S * w.unscattered); // the dolly itself is smooth
-  }
+  for (const w of rows) expect(w.excessUnscattered).toBeLessThanOrEqual(OF_S * w.unscattered); // the dolly itself is smooth
   return rows;
 }

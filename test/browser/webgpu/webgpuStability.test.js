@@ -3,7 +3,7 @@
 // blur fading in and, with kernelGroups 'auto', the groups fading in (their split: kernelGroups.js's
 // fadedGrouping, read through src/webgpu/3-blur/GroupFractionTexture.js). On the WebGPU backend
 // (the node's WebGL 2 backend shares the node's code).
-import { describe, it, beforeAll, afterAll } from 'vitest';
+import { describe, it, expect, beforeAll, afterAll } from 'vitest';
 import { closeCheckedPage, evaluateFloats } from '../../harness/page.js';
 import { openWebgpuPage } from '../../harness/webgpuBrowser.js';
 import { DOLLY, checkDolly } from '../../harness/dollyCheck.js';
@@ -23,9 +23,11 @@ afterAll(async () => {
 
 describe('the node on a slow dolly across the plan\'s thresholds', () => {
   it.each([['default', {}], ["kernelGroups 'auto'", { kernelGroups: 'auto' }]])('%s: no coherent jump of s where the plan changes', async (_, sss) => {
-    await checkDolly(sss, ({ fovDeg, scales }) => evaluateFloats(page, async (o) => {
+    const rows = await checkDolly(sss, ({ fovDeg, scales }) => evaluateFloats(page, async (o) => {
       const { isStandIn } = await window.wgpu.dollyOpen({ width: o.width, height: o.height, fovDeg: o.fovDeg, lightAzimuthDeg: o.lightAzimuthDeg, sss: o.sss });
       return { isStandIn, ...(await window.wgpu.dollyFrames(o.scales)) };
     }, { ...DOLLY, fovDeg, scales, sss }), { groupsOfLight: GROUPS_OF_LIGHT });
+    expect(rows.length).toBeGreaterThan(0);
+    for (const w of rows) expect(w.excess, `${w.pixelsPerMm} px/mm: ${w.change}`).toBeLessThanOrEqual(w.bound);
   });
 });
