@@ -2,13 +2,26 @@
 // shadow map it stores world units along the light's axis, so a thickness is a plain difference
 // of two depths; beside it the entry cosine |N·L| (shaders/1-light-depth/lightDepth.frag.glsl).
 import {
-  DoubleSide, FloatType, Matrix3, NearestFilter, RGFormat, ShaderMaterial, WebGLRenderTarget,
+  DoubleSide, FloatType, Frustum, Matrix3, Matrix4, NearestFilter, RGFormat, ShaderMaterial, WebGLRenderTarget,
 } from 'three';
 import vertexShader from '../../shaders/1-light-depth/lightDepth.vert.glsl?raw';
 import fragmentShader from '../../shaders/1-light-depth/lightDepth.frag.glsl?raw';
 import { assertFloatRenderTargets, describe } from '../support/rendererSupport.js';
 import { preservingRendererState } from '../support/rendererState.js';
 import { LightDepthView, boundsNoVolume } from './LightDepthView.js';
+import { holdingLevels, intersectsFrustum, isDrawable } from '../frameMeshes.js';
+
+const _frustum = new Frustum();
+/** The light frustum's slack for the material swap, a fraction of its depth range. */
+const FRUSTUM_SLACK = 1e-4;
+const _projScreen = new Matrix4();
+
+/** The drawable objects of `scene` visible with their ancestors (a LightDepthTarget used alone). */
+function visibleObjects(scene) {
+  const objects = [];
+  scene.traverseVisible((object) => { if (isDrawable(object)) objects.push(object); });
+  return objects;
+}
 
 /** Drawn in place of what the light pass leaves out: three culls a material with visible false. */
 const HIDDEN = new ShaderMaterial({ name: 'LightDepthHidden', visible: false });
@@ -47,6 +60,8 @@ export class LightDepthTarget extends LightDepthView {
       depthBuffer: true,
     });
     this.renderTarget.texture.name = 'LightDepthTarget.texture';
+    /** The objects the last render drew (refilled each render). @type {import('three').Object3D[]} */
+    this._drawn = [];
     this.setSize(this.size);
   }
 
@@ -103,15 +118,21 @@ export class LightDepthTarget extends LightDepthView {
 
   /**
    * Renders `scene` from the light; the meshes' materials and the renderer's state are put back.
+   * With the frame's lists (the pipeline's FrameMeshes, after fit) it draws what the camera's frame
+   * holds (the LODs at the camera's levels) on the light's layers, and swaps depth materials in only
+   * for what lies in the light's view; alone, every visible object on its camera's layers.
    * @param {import('three').WebGLRenderer} renderer
    * @param {import('three').Scene} scene
+   * @param {import('../frameMeshes.js').FrameMeshes|null} [frame]
    */
-  render(renderer, scene) {
+  render(renderer, scene, frame = null) {
     assertFloatRenderTargets(renderer, 'LightDepthTarget.render');
     if (!scene || scene.isObject3D !== true) {
       throw new TypeError(`LightDepthTarget.render: scene must be a THREE.Scene, got ${describe(scene)}`);
     }
     this.updateCamera();
+    const { camera } = this;
+    camera.layers.mask = this.layers.mask;
     /** @type {[import('three').Object3D, any][]} */
     const swapped = [];
     // A user's static shadows (autoUpdate false, needsUpdate true) are for the scene's own draw:
@@ -120,13 +141,15 @@ export class LightDepthTarget extends LightDepthView {
     preservingRendererState(renderer, scene, () => {
       try {
         // Per mesh, not scene.overrideMaterial, which would draw a leaf card's cut-away corners
-        // and a glass pane as solid (three's shadow maps do the same).
-        scene.traverseVisible((object) => {
+        // and a glass pane as solid (three's shadow maps do the same). What three culls from the
+        // light's view keeps its material: it is not drawn.
+        const drawn = this._drawnFrom(frame ? frame.solids : visibleObjects(scene));
+        for (const object of drawn) {
           const depthMaterial = this.depthMaterialOf(object);
-          if (depthMaterial === null) return;
+          if (depthMaterial === null) continue;
           swapped.push([object, object.material]);
           object.material = depthMaterial;
-        });
+        }
         scene.overrideMaterial = null;
         scene.background = null;
         renderer.shadowMap.autoUpdate = false;
@@ -135,13 +158,38 @@ export class LightDepthTarget extends LightDepthView {
         renderer.setClearColor(0x000000, 0); // 0 = no surface
         renderer.autoClear = false;
         renderer.clear(true, true, false);
-        if (this.isCube) this._renderFaces(renderer, scene);
-        else renderer.render(scene, this.camera);
+        holdingLevels(frame ? frame.lods : [], () => {
+          if (this.isCube) this._renderFaces(renderer, scene);
+          else renderer.render(scene, camera);
+        });
         this.valid = true;
       } finally {
         for (const [object, material] of swapped) object.material = material;
         renderer.shadowMap.needsUpdate = shadowsNeedUpdate;
       }
     });
+  }
+
+  /**
+   * Of `objects`, those three draws from the light: on its layers and, but for the six faces of a
+   * point light (each has its own frustum), in its view by three's own test.
+   * @private @param {Iterable<import('three').Object3D>} objects
+   */
+  _drawnFrom(objects) {
+    const drawn = this._drawn;
+    drawn.length = 0;
+    const { camera } = this;
+    if (!this.isCube) {
+      _frustum.setFromProjectionMatrix(_projScreen.multiplyMatrices(camera.projectionMatrix, camera.matrixWorldInverse));
+      // A hair wider than three's own (which may take the projection reversed): what lies on the
+      // edge gets its depth material, never draws its own colour into the map.
+      for (const plane of _frustum.planes) plane.constant += FRUSTUM_SLACK * (camera.far - camera.near);
+    }
+    for (const object of objects) {
+      if (!object.layers.test(camera.layers)) continue;
+      if (!this.isCube && object.frustumCulled !== false && !intersectsFrustum(object, _frustum)) continue;
+      drawn.push(object);
+    }
+    return drawn;
   }
 }
