@@ -2,19 +2,15 @@
 // shadow map it stores world units along the light's axis, so a thickness is a plain difference
 // of two depths; beside it the entry cosine |N·L| (shaders/1-light-depth/lightDepth.frag.glsl).
 import {
-  DoubleSide, FloatType, Frustum, Matrix3, Matrix4, NearestFilter, RGFormat, ShaderMaterial, WebGLRenderTarget,
+  DoubleSide, FloatType, Matrix3, NearestFilter, RGFormat, ShaderMaterial, WebGLRenderTarget,
 } from 'three';
 import vertexShader from '../../shaders/1-light-depth/lightDepth.vert.glsl?raw';
 import fragmentShader from '../../shaders/1-light-depth/lightDepth.frag.glsl?raw';
 import { assertFloatRenderTargets, describe } from '../support/rendererSupport.js';
 import { preservingRendererState } from '../support/rendererState.js';
 import { LightDepthView, boundsNoVolume } from './LightDepthView.js';
-import { holdingLevels, intersectsFrustum, isDrawable } from '../frameMeshes.js';
+import { holdingLevels, isDrawable } from '../frameMeshes.js';
 
-const _frustum = new Frustum();
-/** The light frustum's slack for the material swap, a fraction of its depth range. */
-const FRUSTUM_SLACK = 1e-4;
-const _projScreen = new Matrix4();
 
 /** The drawable objects of `scene` visible with their ancestors (a LightDepthTarget used alone). */
 function visibleObjects(scene) {
@@ -60,8 +56,6 @@ export class LightDepthTarget extends LightDepthView {
       depthBuffer: true,
     });
     this.renderTarget.texture.name = 'LightDepthTarget.texture';
-    /** The objects the last render drew (refilled each render). @type {import('three').Object3D[]} */
-    this._drawn = [];
     this.setSize(this.size);
   }
 
@@ -120,7 +114,7 @@ export class LightDepthTarget extends LightDepthView {
    * Renders `scene` from the light; the meshes' materials and the renderer's state are put back.
    * With the frame's lists (the pipeline's FrameMeshes, after fit) it draws what the camera's frame
    * holds (the LODs at the camera's levels) on the light's layers, and swaps depth materials in only
-   * for what lies in the light's view; alone, every visible object on its camera's layers.
+   * for what fit found in the light's view (`inView`); alone, for every visible object in its view.
    * @param {import('three').WebGLRenderer} renderer
    * @param {import('three').Scene} scene
    * @param {import('../frameMeshes.js').FrameMeshes|null} [frame]
@@ -143,7 +137,7 @@ export class LightDepthTarget extends LightDepthView {
         // Per mesh, not scene.overrideMaterial, which would draw a leaf card's cut-away corners
         // and a glass pane as solid (three's shadow maps do the same). What three culls from the
         // light's view keeps its material: it is not drawn.
-        const drawn = this._drawnFrom(frame ? frame.solids : visibleObjects(scene));
+        const drawn = frame ? this.inView : this._drawnFrom(visibleObjects(scene));
         for (const object of drawn) {
           const depthMaterial = this.depthMaterialOf(object);
           if (depthMaterial === null) continue;
@@ -171,24 +165,14 @@ export class LightDepthTarget extends LightDepthView {
   }
 
   /**
-   * Of `objects`, those three draws from the light: on its layers and, but for the six faces of a
-   * point light (each has its own frustum), in its view by three's own test.
+   * Of `objects` (a LightDepthTarget used alone), those three draws from the light: on its camera's
+   * layers and, but for a point light's six faces (each its own frustum), in its view.
    * @private @param {Iterable<import('three').Object3D>} objects
    */
   _drawnFrom(objects) {
-    const drawn = this._drawn;
-    drawn.length = 0;
-    const { camera } = this;
-    if (!this.isCube) {
-      _frustum.setFromProjectionMatrix(_projScreen.multiplyMatrices(camera.projectionMatrix, camera.matrixWorldInverse));
-      // A hair wider than three's own (which may take the projection reversed): what lies on the
-      // edge gets its depth material, never draws its own colour into the map.
-      for (const plane of _frustum.planes) plane.constant += FRUSTUM_SLACK * (camera.far - camera.near);
-    }
+    const drawn = [];
     for (const object of objects) {
-      if (!object.layers.test(camera.layers)) continue;
-      if (!this.isCube && object.frustumCulled !== false && !intersectsFrustum(object, _frustum)) continue;
-      drawn.push(object);
+      if (object.layers.test(this.camera.layers) && (this.isCube || this._inViewOf(object, true))) drawn.push(object);
     }
     return drawn;
   }

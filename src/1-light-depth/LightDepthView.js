@@ -1,14 +1,27 @@
 // Stage 1, renderer-free: the light's camera, its frustum checks and fit, and which materials it
 // sees, shared by LightDepthTarget and the WebGPU LightDepthNodeTarget (src/webgpu/1-light-depth/),
 // which bring the target, the depth material and the render.
-import { Box3, Layers, Matrix4, OrthographicCamera, PerspectiveCamera, Sphere, Vector3 } from 'three';
-import { materialsOf } from '../frameMeshes.js';
+import { Box3, Frustum, Layers, Matrix4, OrthographicCamera, PerspectiveCamera, Sphere, Vector3 } from 'three';
+import { intersectsFrustum, materialsOf } from '../frameMeshes.js';
 import { localBoundsOf } from '../support/meshBounds.js';
 import { checkInteger, checkNumber, checkOptions } from '../support/parameterChecks.js';
 import { describe } from '../support/rendererSupport.js';
 import { LIGHT_DEPTH_SIZES, PIPELINE_DEFAULTS } from '../options.js';
 
 const _target = new Vector3();
+const _frustum = new Frustum();
+const _projScreen = new Matrix4();
+const _open = new Vector3(); // a plane of normal 0 and constant 1: every point is inside it
+
+/** The light's view frustum wider than three's by a fraction of its depth range: what lies on its edge gets a depth material (three may take the projection reversed). */
+const FRUSTUM_SLACK = 1e-4;
+
+/** Sets _frustum to `camera`'s view, each plane moved out by `slack` world units. */
+function setFrustum(camera, slack) {
+  _frustum.setFromProjectionMatrix(_projScreen.multiplyMatrices(camera.projectionMatrix, camera.matrixWorldInverse), camera.coordinateSystem, camera.reversedDepth);
+  if (slack > 0) for (const plane of _frustum.planes) plane.constant += slack;
+  return _frustum;
+}
 const _corner = new Vector3();
 const _inverse = new Matrix4();
 
@@ -177,6 +190,8 @@ export class LightDepthView {
     this.window = null;
     /** The layers the light's pass draws (lightLayers: as three's shadow maps), set by fit. */
     this.layers = new Layers();
+    /** What fit found in the light's view (its pass swaps depth materials in for these; three culls the rest). @type {import('three').Object3D[]} */
+    this.inView = [];
     this.camera = cameraFor(light);
     /** World → the light's view (for a point light: centred on it, the world's axes; its faces turn from there). */
     this.viewMatrix = new Matrix4();
@@ -301,13 +316,12 @@ export class LightDepthView {
    */
   fit(frame, transmits) {
     this.layers.mask = lightLayers(this.light, frame.camera).mask;
-    const seen = [];
     const targets = [];
-    for (const object of frame.solids) if (this._sees(object)) seen.push(object);
     for (const object of frame.onScreen) if (this._sees(object) && materialsOf(object).some((m) => m && transmits(m))) targets.push(object);
     if (this.light.isPointLight) this._aim(targets);
     this.window = null;
     this.fitted = null;
+    this.inView.length = 0;
     this.updateCamera();
     const view = this.camera.matrixWorldInverse;
     const perspective = !this.light.isDirectionalLight;
@@ -316,12 +330,14 @@ export class LightDepthView {
     if (!(perspective ? across.far > 0 : Number.isFinite(across.far))) return null; // nothing to hold: the map goes unread
     const { far } = across;
     if (!cube && across.bounded) this.window = this._window(across);
-    // Whatever lies in the window before the farthest transmitting surface may stand between it and the light.
+    // What may stand between the light and the farthest transmitting surface: the objects in the
+    // window (three's frustum test on its sides, `candidates`), and of those the surfaces before it.
+    const candidates = this._inWindow(frame.solids);
     let near = Infinity;
-    for (const object of seen) {
+    for (const object of candidates) {
+      if (!this._sees(object)) continue;
       const bounds = lightViewBounds(_objectBounds.makeEmpty(), [object], view, perspective, cube);
       if (!(bounds.far > (perspective ? 0 : -Infinity)) || !(bounds.near < far)) continue;
-      if (this.window && bounds.bounded && !bounds.overlaps(this.window)) continue;
       near = Math.min(near, bounds.near);
     }
     // A mesh flat in the light's view (a leaf face-on) has near = far: the margin gives it depth.
@@ -330,8 +346,41 @@ export class LightDepthView {
     if (perspective) near = Math.max(cube ? 0 : near, FIT.MIN_NEAR * far); // six faces: the nearest is not a corner's
     this.fitted = { near, far: far + margin };
     this.updateCamera();
+    // What the light's pass draws: of the candidates, those in its view (three's test, a hair wider).
+    for (const object of candidates) if (cube || this._inViewOf(object, true)) this.inView.push(object);
     const inside = this.light.isSpotLight ? targets.find((object) => this._inside(object)) : undefined;
     return inside ? `the spot light${this.light.name ? ` "${this.light.name}"` : ''} is inside the bounds of ${nameOf(inside)}, so its parts nearer than ${Number(this.fitted.near.toPrecision(3))} world units to the light are not in the light's depth map (no transmittance there): move the light out of it` : null;
+  }
+
+  /**
+   * Of `objects`, those on the light's layers within its view's sides (its near and far left
+   * open): every one for six faces, which turn to every side.
+   * @private @param {Iterable<import('three').Object3D>} objects
+   */
+  _inWindow(objects) {
+    const cube = this.isCube;
+    if (!cube) {
+      setFrustum(this.camera, 0);
+      _frustum.planes[4].set(_open, 1); // far: open
+      _frustum.planes[5].set(_open, 1); // near: open
+    }
+    const found = [];
+    for (const object of objects) {
+      if (!object.layers.test(this.layers)) continue;
+      if (cube || object.frustumCulled === false || intersectsFrustum(object, _frustum)) found.push(object);
+    }
+    return found;
+  }
+
+  /**
+   * Whether three draws `object` from the light's camera as it stands (on its layers, in its view:
+   * three's frustum test, `widened` by a hair so that what lies on the edge counts).
+   * @private
+   */
+  _inViewOf(object, widened) {
+    if (object.frustumCulled === false) return true;
+    setFrustum(this.camera, widened ? FRUSTUM_SLACK * Math.abs(this.camera.far - this.camera.near) : 0);
+    return intersectsFrustum(object, _frustum);
   }
 
   /** Whether the light's pass draws `object` as a surface with bounds: a mesh on its layers with a material it sees. @private */
