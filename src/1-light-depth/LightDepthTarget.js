@@ -137,7 +137,7 @@ export class LightDepthTarget extends LightDepthView {
         // Per mesh, not scene.overrideMaterial, which would draw a leaf card's cut-away corners
         // and a glass pane as solid (three's shadow maps do the same). What three culls from the
         // light's view keeps its material: it is not drawn.
-        const drawn = frame ? this.inView : this._drawnFrom(visibleObjects(scene));
+        const drawn = frame ? this.inView : this.inViewOf(visibleObjects(scene).filter((object) => object.layers.test(camera.layers)));
         for (const object of drawn) {
           const depthMaterial = this.depthMaterialOf(object);
           if (depthMaterial === null) continue;
@@ -162,18 +162,5 @@ export class LightDepthTarget extends LightDepthView {
         renderer.shadowMap.needsUpdate = shadowsNeedUpdate;
       }
     });
-  }
-
-  /**
-   * Of `objects` (a LightDepthTarget used alone), those three draws from the light: on its camera's
-   * layers and, but for a point light's six faces (each its own frustum), in its view.
-   * @private @param {Iterable<import('three').Object3D>} objects
-   */
-  _drawnFrom(objects) {
-    const drawn = [];
-    for (const object of objects) {
-      if (object.layers.test(this.camera.layers) && (this.isCube || this._inViewOf(object, true))) drawn.push(object);
-    }
-    return drawn;
   }
 }

@@ -347,7 +347,7 @@ export class LightDepthView {
     this.fitted = { near, far: far + margin };
     this.updateCamera();
     // What the light's pass draws: of the candidates, those in its view (three's test, a hair wider).
-    for (const object of candidates) if (cube || this._inViewOf(object, true)) this.inView.push(object);
+    this.inView.push(...this.inViewOf(candidates));
     const inside = this.light.isSpotLight ? targets.find((object) => this._inside(object)) : undefined;
     return inside ? `the spot light${this.light.name ? ` "${this.light.name}"` : ''} is inside the bounds of ${nameOf(inside)}, so its parts nearer than ${Number(this.fitted.near.toPrecision(3))} world units to the light are not in the light's depth map (no transmittance there): move the light out of it` : null;
   }
@@ -373,14 +373,20 @@ export class LightDepthView {
   }
 
   /**
-   * Whether three draws `object` from the light's camera as it stands (on its layers, in its view:
-   * three's frustum test, `widened` by a hair so that what lies on the edge counts).
-   * @private
+   * Of `objects` on the light's layers, those three draws from the light's camera as it stands:
+   * in its view by three's frustum test, a hair wider so that what lies on the edge counts (every
+   * one for six faces, each its own frustum).
+   * @param {Iterable<import('three').Object3D>} objects
+   * @returns {import('three').Object3D[]}
    */
-  _inViewOf(object, widened) {
-    if (object.frustumCulled === false) return true;
-    setFrustum(this.camera, widened ? FRUSTUM_SLACK * Math.abs(this.camera.far - this.camera.near) : 0);
-    return intersectsFrustum(object, _frustum);
+  inViewOf(objects) {
+    const cube = this.isCube;
+    if (!cube) setFrustum(this.camera, FRUSTUM_SLACK * Math.abs(this.camera.far - this.camera.near));
+    const found = [];
+    for (const object of objects) {
+      if (cube || object.frustumCulled === false || intersectsFrustum(object, _frustum)) found.push(object);
+    }
+    return found;
   }
 
   /** Whether the light's pass draws `object` as a surface with bounds: a mesh on its layers with a material it sees. @private */
