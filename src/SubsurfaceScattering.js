@@ -19,12 +19,13 @@
 //
 // The settings are properties made from the options' schema (src/options.js,
 // src/support/settings.js); _applySetting says what each does to the stages.
+import { Color } from 'three';
 import { Pass } from 'three/addons/postprocessing/Pass.js';
 import { getProfile } from './profiles/presets.js';
 import { ProfileLookup } from './profiles/ProfileLookup.js';
 import { profileSlots } from './profiles/profileSlots.js';
 import { checkNumber } from './support/parameterChecks.js';
-import { describe } from './support/rendererSupport.js';
+import { assertFloatRenderTargets, describe } from './support/rendererSupport.js';
 import { checkThreeRevision } from './support/threeVersion.js';
 import { withSettings } from './support/settings.js';
 import { stopWatching, warnWhenDisabledFreezes, watchRendered } from './support/frozenFrameWatch.js';
@@ -41,6 +42,9 @@ import { SubsurfaceScenePass } from './2-scene-split/SubsurfaceScenePass.js';
 import { BlurStage } from './3-blur/BlurStage.js';
 import { SubsurfaceComposePass } from './4-compose/SubsurfaceComposePass.js';
 import { materialOutputOf } from './4-compose/debugViews.js';
+import { holdingMatrices, preservingRendererState } from './support/rendererState.js';
+
+const _clearColor = new Color();
 
 /**
  * A stage of one frame, as stageTimer sees it.
@@ -97,6 +101,8 @@ export class SubsurfaceScattering extends PassWithSettings {
     this._size = { width: 1, height: 1 };
     /** @internal The GPU's render target limits, known from the first frame on. */
     this._limits = undefined;
+    /** @internal Whether `depthTexture` was read: the scene split then runs on every frame (_drawsPlain). */
+    this._depthTextureRead = false;
     /** @internal The frame's checks of the camera and the light, each warned about once (see `problems`). */
     this._checks = new FrameChecks('SubsurfaceScattering');
 
@@ -292,8 +298,15 @@ export class SubsurfaceScattering extends PassWithSettings {
    */
   get problems() { return this._checks.current; }
 
-  /** The scene's depth from the last frame (its opaque part), a DepthTexture, for passes of your own. */
-  get depthTexture() { return this._scenePass.depthTexture; }
+  /**
+   * The scene's depth from the last frame (its opaque part), a DepthTexture, for passes of your
+   * own. Once read, the pipeline splits the scene on every frame to keep it, also where no
+   * subsurface mesh is on the screen (elsewhere such a frame is three's own draw, as cheap).
+   */
+  get depthTexture() {
+    this._depthTextureRead = true;
+    return this._scenePass.depthTexture;
+  }
 
   // ---- The frame.
 
@@ -308,29 +321,50 @@ export class SubsurfaceScattering extends PassWithSettings {
     const target = this.renderToScreen ? null : readBuffer;
     watchRendered(this, renderer); // for the warning when disabled with nothing else drawing the scene
     // 0. Checks: the size against the GPU's limits (a RangeError), the camera, the light and the
-    //    scene (a warning, once each; the frame is drawn as three would draw it).
+    //    scene (a warning, once each; the frame is drawn as three would draw it). What the frame
+    //    covers, decided once (src/frameMeshes.js: visible, layers, LOD levels, the frustum): the
+    //    lights' maps, the plan and the box read it.
+    assertFloatRenderTargets(renderer, 'SubsurfaceScattering');
     this._limits = checkTargetLimits(renderer, this._size, 'SubsurfaceScattering');
     const checks = this._checks.begin();
     checks.camera(camera);
     checks.scene(scene);
     // 'castShadow': the scene's lights that cast shadows now, more than MAX_LIGHTS said once.
     if (this.light === CAST_SHADOW) this._castShadowLights(scene, checks);
-    // The lights' checks fit their maps to the meshes, as the scene split's render will place them.
-    if (this._lightDepths.length > 0 && scene.matrixWorldAutoUpdate === true) scene.updateMatrixWorld();
-    const works = this._lightDepths.map((lightDepth) => checks.light(lightDepth, scene, this.transmittance, this._transmitsThrough));
+    Object.assign(this._scenePass, { scene, camera, clearColor: this.clearColor, clearAlpha: this.clearAlpha });
+    const frame = this._scenePass.collect();
+    // The lights' checks fit their maps to the transmitting meshes on the screen.
+    const works = this._lightDepths.map((lightDepth) => checks.light(lightDepth, frame, this.transmittance, this._transmitsThrough));
     checks.end();
+    // No subsurface mesh on the screen: the frame is three's own, as a RenderPass draws it.
+    if (this._drawsPlain()) {
+      for (const lightDepth of this._lightDepths) lightDepth.invalidate();
+      this.plan = this._blur.plan(0);
+      this._stage('scene', () => this._renderPlain(renderer, target));
+      return;
+    }
+    // The stages render the scene several times: its matrices were updated once, by collect.
+    holdingMatrices(scene, () => this._renderStages(renderer, readBuffer, target, works));
+  }
+
+  /**
+   * Steps 1 to 6 of a frame whose checks (step 0) found subsurface meshes on the screen.
+   * @private
+   */
+  _renderStages(renderer, readBuffer, target, works) {
+    const { scene, camera } = this;
+    const { frame } = this._scenePass;
     // 1. Light depth: linear depth seen from each light, for transmittance (not for a light that
     //    is off, nor one that reaches no subsurface mesh from behind: its map would go unread).
     this._lightDepths.forEach((lightDepth, i) => {
-      if (works[i] && isShining(lightDepth.light, scene, camera) && this._transmits(lightDepth.light, scene, camera)) {
-        this._stage('lightDepth', () => lightDepth.render(renderer, scene));
+      if (works[i] && isShining(lightDepth.light, scene, camera) && this._transmits(lightDepth.light, camera)) {
+        this._stage('lightDepth', () => lightDepth.render(renderer, scene, frame));
       } else {
         lightDepth.invalidate();
       }
     });
     // 2. Scene split: the opaque scene into the multi-target (colour | diffuse | surface | depth),
     //    multisampled as asked (or as the composer's buffer is).
-    Object.assign(this._scenePass, { scene, camera, clearColor: this.clearColor, clearAlpha: this.clearAlpha });
     const msaaSamples = this.multisampling === 'auto' ? (readBuffer?.samples ?? 0) : this.multisampling;
     if (this._scenePass.setSamples(msaaSamples)) this._blur.setMultisampled(msaaSamples > 0);
     this._stage('scene', () => this._scenePass.render(renderer));
@@ -359,6 +393,35 @@ export class SubsurfaceScattering extends PassWithSettings {
   }
 
   /**
+   * Whether this frame is three's own: no subsurface mesh on the screen (nor an override drawing
+   * the scene), the final image shown into the composer's buffer (to the screen the compose
+   * tone-maps as OutputPass would), and the scene's depth not asked of the pipeline.
+   * @private
+   */
+  _drawsPlain() {
+    return this._scenePass.subsurfaceMeshes.length === 0 && this.debugView === 'final' && !this._depthTextureRead && !this.renderToScreen;
+  }
+
+  /**
+   * The frame as three's RenderPass draws it: the scene into `target` (null: the screen), cleared
+   * first as `clear`, `clearDepth`, `clearColor` and `clearAlpha` say.
+   * @private @param {import('three').WebGLRenderer} renderer @param {import('three').WebGLRenderTarget|null} target
+   */
+  _renderPlain(renderer, target) {
+    const { scene, camera } = this;
+    preservingRendererState(renderer, scene, () => {
+      renderer.autoClear = false;
+      renderer.setRenderTarget(target);
+      if (this.clearColor !== null || this.clearAlpha !== null) {
+        renderer.setClearColor(this.clearColor ?? renderer.getClearColor(_clearColor), this.clearAlpha ?? renderer.getClearAlpha());
+      }
+      if (this.clear) renderer.clear(renderer.autoClearColor, renderer.autoClearDepth, renderer.autoClearStencil);
+      else if (this.clearDepth) renderer.clearDepth();
+      holdingMatrices(scene, () => renderer.render(scene, camera)); // updated by collect
+    });
+  }
+
+  /**
    * Stage 4 alone over the last scene split, into the scattered target, as the last frame planned
    * it (the bench re-runs it to time it).
    * @private @param {import('three').WebGLRenderer} renderer
@@ -378,15 +441,13 @@ export class SubsurfaceScattering extends PassWithSettings {
   }
 
   /**
-   * Whether `light` can send transmitted light to a subsurface mesh of this pipeline this frame
-   * (lightFromBehind at each one's nearest point); the thickness view always reads the map.
+   * Whether `light` can send transmitted light to a subsurface mesh of this pipeline on the screen
+   * this frame (lightFromBehind at each one's nearest point); the thickness view always reads the map.
    * @private
    */
-  _transmits(light, scene, camera) {
+  _transmits(light, camera) {
     if (materialOutputOf(this.debugView) === 'thickness') return true;
-    // The camera's matrices as the scene split's render will see them (the scene's are: render step 0).
-    if (camera.parent === null && camera.matrixWorldAutoUpdate === true) camera.updateMatrixWorld();
-    return lightReachesFromBehind(light, scene, camera, this._transmitsThrough);
+    return lightReachesFromBehind(light, this._scenePass.frame.onScreen, camera, this._transmitsThrough);
   }
 
   /** The largest on-screen size of a profile mm over the subsurface meshes the split drew. @private */

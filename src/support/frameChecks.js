@@ -129,13 +129,15 @@ export class FrameChecks {
    * The light's colour and intensity (always: three lights the scene with them) and, with
    * transmittance on, its place in the scene and its frustum.
    * @param {import('../1-light-depth/LightDepthTarget.js').LightDepthTarget} lightDepth
-   * @param {import('three').Scene} scene
+   * @param {import('../frameMeshes.js').FrameMeshes} frame what the frame covers (its scene's
+   *   meshes, the camera), world matrices up to date
    * @param {boolean} transmittance
    * @param {(material: import('three').Material) => boolean} transmits the materials whose
    *   thickness the map must hold (its near and far are fitted to them: LightDepthView.fit)
    * @returns {boolean} whether transmittance can be drawn from it this frame
    */
-  light(lightDepth, scene, transmittance, transmits) {
+  light(lightDepth, frame, transmittance, transmits) {
+    const { scene } = frame;
     const { light } = lightDepth;
     // Each light's problems apart (a pipeline may have four), named where the user named it.
     const the = light.name ? `the light "${light.name}"` : 'the light';
@@ -155,8 +157,9 @@ export class FrameChecks {
         'or set transmittance to false');
       return false;
     }
-    const unfit = lightDepth.fit(scene, transmits);
+    const unfit = lightDepth.fit(frame, transmits);
     if (unfit) problem('lightInside', unfit);
+    if (lightDepth.fitted === null) return false; // no transmitting mesh on the screen: its map would go unread
     const frustum = lightDepth.frustumProblem();
     if (frustum) {
       problem('lightFrustum', `${the}'s depth map has no valid frustum (${frustum}): there is no transmittance until it has one`);

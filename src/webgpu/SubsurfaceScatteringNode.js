@@ -26,7 +26,7 @@ import { planBlur } from '../3-blur/blurPlan.js';
 import { isPerspective } from '../support/screenScale.js';
 import { describe } from '../support/rendererSupport.js';
 import { LightStageNode } from './1-light-depth/LightStageNode.js';
-import { subsurfaceMeshesOf } from './2-scene-split/subsurfaceNodeMaterial.js';
+import { FrameMeshes } from '../frameMeshes.js';
 import {
   CAST_SHADOW, NODE_SCHEMA, checkNeedsLight, checkNodeOptions, lightsOf, propertiesOf,
 } from '../options.js';
@@ -107,6 +107,8 @@ export class SubsurfaceScatteringNode extends NodeWithSettings {
       resolution: uniform(new Vector2(1, 1)), depthFalloff: uniform(1), perspective: uniform(1), mmToWorld: uniform(1e-3),
       marginalRangeMm: uniform(1), debugView: debugViewUniform(), debugDepthRange: uniform(1), debugThicknessRangeMm: uniform(1), scatteredShare: uniform(1),
     };
+    /** What the frame covers (src/frameMeshes.js), made by the light stage each frame before the scene pass draws. */
+    this.frame = new FrameMeshes();
     /** Stage 1 and the materials' transmittance uniforms, before the scene pass (built with or without a light: `light` is assignable). */
     this._lightStage = new LightStageNode(this, nodeLight(o.light), o.lightDepthSize);
     for (const name of ['worldUnitInMm', 'samples', 'strength', 'debugView', 'debugDepthRange', 'debugThicknessRangeMm']) this._applySetting(name, o[name]);
@@ -308,7 +310,7 @@ export class SubsurfaceScatteringNode extends NodeWithSettings {
     renderer.getDrawingBufferSize(_size);
     scenePass.setSize(_size.width, _size.height);
     const { width, height } = scenePass.renderTarget;
-    this.plan = this._planFrame(subsurfaceMeshesOf(scene).meshes, camera, width, height);
+    this.plan = this._planFrame(this.frame.onScreen, camera, width, height); // the light stage's lists, this frame's
     this._uniforms.scatteredShare.value = this.plan.blur ? this.plan.fade : 1; // the blur fading in (blurPlan.js)
     if (this.kernelGroups === 1) this._freeGroupTarget(); // back to one kernel: its 8 B per pixel and group go
     const diffuse = scenePass.getTexture(ATTACHMENT_NAMES.DIFFUSE);
