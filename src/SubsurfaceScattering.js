@@ -31,7 +31,7 @@ import { stopWatching, warnWhenDisabledFreezes, watchRendered } from './support/
 import { PASS_BOOLEANS, booleanFields } from './support/booleanFields.js';
 import { FrameChecks, checkTargetSize, checkTargetLimits } from './support/frameChecks.js';
 import {
-  CAST_SHADOW, MAX_LIGHTS, PIPELINE_SCHEMA, checkNeedsLight, checkPipelineOptions, lightsOf, propertiesOf,
+  CAST_SHADOW, MAX_LIGHTS, PIPELINE_SCHEMA, checkPipelineOptions, lightsOf, propertiesOf,
 } from './options.js';
 import { estimatePixelsPerMm } from './framePlan.js';
 import { LightDepthTarget } from './1-light-depth/LightDepthTarget.js';
@@ -69,11 +69,12 @@ export class SubsurfaceScattering extends PassWithSettings {
     const o = checkPipelineOptions(options); // every option checked here, once, against the schema
     /** @internal The settings' values (read and assigned through their properties). */
     this._settings = Object.fromEntries(propertiesOf(PIPELINE_SCHEMA).map(({ name }) => [name, o[name]]));
-    if (Object.hasOwn(options, 'transmittance')) checkNeedsLight('transmittance', o.transmittance, o.light);
-    checkNeedsLight('debugView', o.debugView, o.light);
-    this._settings.transmittance = o.transmittance && o.light !== null; // the default: on where there is a light
-    /** @internal Whether transmittance is asked for: kept across lights, so a light arriving does not undo an `off`. */
-    this._transmittanceWanted = o.transmittance;
+    /**
+     * @internal Whether the user set `transmittance` true (not the default), for the frame's word
+     * when there is no light: the settings a light needs are kept as set, whatever the order they
+     * came in, and take effect with a light.
+     */
+    this._transmittanceAsked = Object.hasOwn(options, 'transmittance') && o.transmittance;
 
     this.needsSwap = false; // like RenderPass: it draws into the read buffer
     /** As RenderPass: first in renderer.setEffects([...]) (three r182+), the renderer leaves the scene's draw to it. */
@@ -170,12 +171,10 @@ export class SubsurfaceScattering extends PassWithSettings {
         this._blur.setForeshortening(value);
         return;
       case 'transmittance':
-        checkNeedsLight(name, value, this.light);
-        this._transmittanceWanted = value;
+        this._transmittanceAsked = value;
         this._subsurfaceMaterials.rebindAll();
         return;
       case 'debugView': case 'debugDepthRange': case 'debugThicknessRangeMm':
-        checkNeedsLight('debugView', this.debugView, this.light);
         this._composePass.setDebugView(this.debugView, { depthRange: this.debugDepthRange, thicknessRangeMm: this.debugThicknessRangeMm });
         this._subsurfaceMaterials.setDebugOutput(materialOutputOf(this.debugView));
         return;
@@ -194,16 +193,13 @@ export class SubsurfaceScattering extends PassWithSettings {
 
   /**
    * Other lights, or none: each map follows its light from the next frame (kept where there was
-   * one at its place, so its materials read it on); from none to a light transmittance turns on
-   * unless it was set off, to none off.
+   * one at its place, so its materials read it on). `transmittance` and `debugView` stay as set:
+   * they act through the lights there are.
    * @private
    */
   _setLight(light, previous) {
     if (light === previous) return;
-    if (light === null) checkNeedsLight('debugView', this.debugView, null); // a light's view stays: refused
-    const switches = previous === null || light === null;
-    if (switches) this._settings.transmittance = light !== null && this._transmittanceWanted;
-    if (!this._useLights(lightsOf(light, this.scene)) && switches) this._subsurfaceMaterials.rebindAll();
+    this._useLights(lightsOf(light, this.scene));
   }
 
   /**
@@ -315,6 +311,7 @@ export class SubsurfaceScattering extends PassWithSettings {
     checks.scene(scene);
     // 'castShadow': the scene's lights that cast shadows now, more than MAX_LIGHTS said once.
     if (this.light === CAST_SHADOW) this._castShadowLights(scene, checks);
+    if (this._lightDepths.length === 0) checks.withoutLight(this._transmittanceAsked, this.debugView);
     // The lights' checks fit their maps to the meshes, as the scene split's render will place them.
     if (this._lightDepths.length > 0 && scene.matrixWorldAutoUpdate === true) scene.updateMatrixWorld();
     const works = this._lightDepths.map((lightDepth) => checks.light(lightDepth, scene, this.transmittance, this._transmitsThrough));

@@ -28,7 +28,7 @@ import { describe } from '../support/rendererSupport.js';
 import { LightStageNode } from './1-light-depth/LightStageNode.js';
 import { subsurfaceMeshesOf } from './2-scene-split/subsurfaceNodeMaterial.js';
 import {
-  CAST_SHADOW, NODE_SCHEMA, checkNeedsLight, checkNodeOptions, lightsOf, propertiesOf,
+  CAST_SHADOW, NODE_SCHEMA, checkNodeOptions, lightsOf, propertiesOf,
 } from '../options.js';
 import { withSettings } from '../support/settings.js';
 import { WEBGPU_THREE, checkThreeRevision } from '../support/threeVersion.js';
@@ -94,11 +94,8 @@ export class SubsurfaceScatteringNode extends NodeWithSettings {
     nodeLight(o.light);
     /** @internal The settings' values (read and assigned through their properties). */
     this._settings = Object.fromEntries(propertiesOf(NODE_SCHEMA).map(({ name }) => [name, o[name]]));
-    if (Object.hasOwn(options ?? {}, 'transmittance')) checkNeedsLight('transmittance', o.transmittance, o.light);
-    checkNeedsLight('debugView', o.debugView, o.light);
-    this._settings.transmittance = o.transmittance && o.light !== null; // the default: on where there is a light
-    /** @internal Whether transmittance is asked for: kept across lights, so a light arriving does not undo an `off`. */
-    this._transmittanceWanted = o.transmittance;
+    /** @internal Whether the user set `transmittance` true, for the frame's word when there is no light (as the WebGL pipeline). */
+    this._transmittanceAsked = Object.hasOwn(options ?? {}, 'transmittance') && o.transmittance;
     this.scenePass = scenePass;
     this.profileLookup = new ProfileLookup(o.profile);
     this.footprintTable = new FootprintTable(this.profileLookup);
@@ -106,6 +103,7 @@ export class SubsurfaceScatteringNode extends NodeWithSettings {
       kernelRadiusMm: uniform(0), strength: uniform(new Vector3()), projectionScale: uniform(new Vector2(1, 1)),
       resolution: uniform(new Vector2(1, 1)), depthFalloff: uniform(1), perspective: uniform(1), mmToWorld: uniform(1e-3),
       marginalRangeMm: uniform(1), debugView: debugViewUniform(), debugDepthRange: uniform(1), debugThicknessRangeMm: uniform(1), scatteredShare: uniform(1),
+      lightShown: uniform(o.light === null ? 0 : 1), // the light's views show nothing without one (the WebGL materials write 0 there)
     };
     /** Stage 1 and the materials' transmittance uniforms, before the scene pass (built with or without a light: `light` is assignable). */
     this._lightStage = new LightStageNode(this, nodeLight(o.light), o.lightDepthSize);
@@ -164,17 +162,14 @@ export class SubsurfaceScatteringNode extends NodeWithSettings {
         u.strength.value.fromArray(value ?? [1, 1, 1]);
         return;
       case 'transmittance':
-        checkNeedsLight(name, value, this.light);
-        this._transmittanceWanted = value;
+        this._transmittanceAsked = value;
         return;
-      case 'light': // as the WebGL pipeline: a light after none turns transmittance on (unless set off), null off
+      case 'light': // as the WebGL pipeline: transmittance and debugView stay as set, acting through the light there is
         if (value === previous) return;
-        if (value === null) checkNeedsLight('debugView', this.debugView, null);
         this._lightStage.setLight(nodeLight(value));
-        if (value === null || previous === null) this._settings.transmittance = value !== null && this._transmittanceWanted;
+        u.lightShown.value = value === null ? 0 : 1;
         return;
       case 'debugView':
-        checkNeedsLight(name, value, this.light);
         u.debugView.value = DEBUG_VIEWS.indexOf(value);
         return;
       case 'debugDepthRange': case 'debugThicknessRangeMm':
@@ -363,6 +358,7 @@ export class SubsurfaceScatteringNode extends NodeWithSettings {
       depthRange: this._uniforms.debugDepthRange,
       thicknessRangeMm: this._uniforms.debugThicknessRangeMm,
       share: this._uniforms.scatteredShare,
+      lightShown: this._uniforms.lightShown,
     });
   }
 

@@ -468,6 +468,52 @@ async function lightAssigned({ backend = 'webgpu', width = 96, height = 54 }) {
 }
 
 /**
+ * The settings a light needs, set at once in either key order (issue 40): the lab's back-lit slab
+ * through a node made without a light; `order` 'forward' or 'backward' assigns each step's settings
+ * in that key order. Per step: the diffuse attachment, the node's output (linear float) and problems;
+ * `made`: the diffuse attachment of a node made with the light.
+ */
+async function lightKeyOrder({ backend = 'webgpu', width = 48, height = 27, order = 'forward' }) {
+  const renderer = await sharedRenderer(backend, width, height);
+  const built = window.lab.buildScene('backlit', { width, height, thicknessMm: 1 });
+  const sun = built.light;
+  built.scene.add(new THREE.AmbientLight(0xffffff, 1)); // diffuse light in front: what a thickness view must not show
+  const skin = NODE.subsurfaceMaterial(built.subsurface[0], { widthMm: 1, shrinkMm: 0.6 });
+  built.scene.traverse((object) => { if (object.material === built.subsurface[0]) object.material = skin; });
+  const target = new THREE.RenderTarget(width, height, { type: THREE.FloatType });
+  const frames = async (light, steps) => {
+    const { scenePass, node, pipeline } = subsurfacePipeline(renderer, built.scene, built.camera, { type: THREE.FloatType, sss: { worldUnitInMm: 10, light } });
+    const out = {};
+    for (const [label, settings] of steps) {
+      await new Promise((resolve) => { requestAnimationFrame(() => resolve()); }); // a frame each: the scene pass draws once a frame
+      const entries = Object.entries(settings);
+      Object.assign(node, Object.fromEntries(order === 'forward' ? entries : entries.reverse()));
+      renderer.setRenderTarget(target);
+      pipeline.render();
+      renderer.setRenderTarget(null);
+      out[label] = {
+        diffuse: await readFloats(renderer, scenePass.renderTarget, 'diffuse'), output: await readFloats(renderer, target),
+        problems: [...node.problems], transmittance: node.transmittance, debugView: node.debugView,
+      };
+    }
+    node.dispose();
+    pipeline.dispose();
+    scenePass.dispose();
+    return out;
+  };
+  const made = (await frames(sun, [['made', {}]])).made;
+  const steps = await frames(null, [
+    ['transmittance and the light', { transmittance: true, light: sun }],
+    ['no light and the thickness view', { light: null, debugView: 'thickness' }],
+    ['the light again', { light: sun }],
+  ]);
+  target.dispose();
+  skin.dispose();
+  built.subsurface[0].dispose();
+  return { made, steps };
+}
+
+/**
  * The lab's back-lit slab through the node with its light's shadow camera near beyond the slab
  * (12 units; the light is 10 behind): the diffuse attachment (issue 36: the map's near and far are
  * fitted to the meshes, not taken from the shadow camera).
@@ -532,6 +578,6 @@ async function sameFrame({ backend = 'webgpu', width = 96, height = 54 }) {
 
 window.wgpu = {
   THREE, NODE, pass, createRenderer, readFloats, subsurfacePipeline, flat, disposeFlatRig, head, disposal, plainDraw, debugViews, labScene, labScenePlain, lightDepthCards,
-  dollyOpen, dollyFrames, dollyClose, lightAssigned, sameFrame, nearLight,
+  dollyOpen, dollyFrames, dollyClose, lightAssigned, lightKeyOrder, sameFrame, nearLight,
 };
 window.testReady = true;

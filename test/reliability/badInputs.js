@@ -88,11 +88,15 @@ export const CALL_CASES = [
   ['sss.worldUnitInMm = 1e-9', (t) => { t.sss.worldUnitInMm = 1e-9; }, 'RangeError', /worldUnitInMm must be in .*got 1e-9/],
   ["transmittance = 'no'", (t) => { t.sss.transmittance = 'no'; }, 'TypeError', /transmittance must be a boolean \(true or false\), got "no"/],
   ['sss.light = an AmbientLight', (t) => { t.sss.light = new t.THREE.AmbientLight(); }, 'TypeError', /^light must be a THREE\.SpotLight, THREE\.DirectionalLight, THREE\.PointLight, a list of them, 'castShadow' or null, got an AmbientLight/],
-  ["sss.light = null with debugView 'thickness'", (t) => { t.sss.debugView = 'thickness'; t.sss.light = null; }, 'TypeError', /^debugView = "thickness" needs a light/],
-  ["debugView = 'thickness' without a light", (t) => { t.make({ light: null }).debugView = 'thickness'; }, 'TypeError', /^debugView = "thickness" needs a light/],
-  ["debugView: 'transmittance' without a light", (t) => t.make({ light: null, debugView: 'transmittance' }), 'TypeError', /^debugView = "transmittance" needs a light/],
-  ['transmittance: true without a light', (t) => t.make({ light: null, transmittance: true }), 'TypeError', /^transmittance = true needs a light/],
-  ['transmittance = true without a light', (t) => { t.make({ light: null }).transmittance = true; }, 'TypeError', /^transmittance = true needs a light \(`light`: a spot, directional or point light, or a list\); there is none$/],
+  // What a light gives, asked for without one: kept as set (any key order works), said by the frame (FRAME_CASES).
+  ["sss.light = null with debugView 'thickness': kept", (t) => { t.sss.debugView = 'thickness'; t.sss.light = null; t.expectRead(t.sss, { debugView: 'thickness', light: null }); }, 'ok'],
+  ["debugView = 'thickness' without a light: kept", (t) => { const s = t.make({ light: null }); s.debugView = 'thickness'; t.expectRead(s, { debugView: 'thickness' }); }, 'ok'],
+  ["debugView: 'transmittance' without a light: kept", (t) => t.expectRead(t.make({ light: null, debugView: 'transmittance' }), { debugView: 'transmittance' }), 'ok'],
+  ['transmittance: true without a light: kept', (t) => t.expectRead(t.make({ light: null, transmittance: true }), { transmittance: true }), 'ok'],
+  ['transmittance = true without a light: kept', (t) => { const s = t.make({ light: null, transmittance: false }); s.transmittance = true; t.expectRead(s, { transmittance: true }); }, 'ok'],
+  ["Object.assign(sss, { transmittance: true, debugView: 'thickness', light }) without a light: kept", (t) => {
+    t.expectRead(Object.assign(t.make({ light: null }), { transmittance: true, debugView: 'thickness', light: t.light }), { transmittance: true, debugView: 'thickness', light: t.light });
+  }, 'ok'],
   ['samples = 4', (t) => { t.sss.samples = 4; }, 'RangeError', /samples must be an odd integer in 3\.\.63, got 4/],
   ["method = 'gauss'", (t) => { t.sss.method = 'gauss'; }, 'RangeError', /method must be one of/],
   ['profile = a NaN profile', (t) => { t.sss.profile = t.nanProfile(); }, 'TypeError', /profile "nan": R\(0\.1 mm\) must be a finite number/],
@@ -199,6 +203,9 @@ export const FRAME_CASES = [
   ['a spot light inside the subsurface mesh', (t) => { t.light.position.set(0, 0, 0); }, 'warning', /the spot light is inside the bounds of (mesh ".*"|an unnamed Mesh), so its parts nearer than/],
   ['a DirectionalLight whose shadow camera has no width', (t) => { const l = new t.THREE.DirectionalLight(0xffffff, 3); l.position.set(0, 0, -5); l.shadow.camera.left = l.shadow.camera.right = 0; t.scene.add(l, l.target); t.usePipeline({ light: l }); }, 'warning', /no valid frustum \(light\.shadow\.camera spans left 0 to right 0/],
   ['scene.overrideMaterial', (t) => { t.scene.overrideMaterial = new t.THREE.MeshBasicMaterial({ color: 0x3366ff }); }, 'warning', /scene\.overrideMaterial is set: the scene is drawn with it as three draws it, without subsurface scattering/],
+  ['transmittance: true, no light', (t) => { t.usePipeline({ light: null, transmittance: true }); }, 'warning', /transmittance is true but there is no light \(`light` is null, or no light casts shadows\): nothing is transmitted until a light is set$/],
+  ["debugView 'thickness', then light = null", (t) => { t.sss.debugView = 'thickness'; t.sss.light = null; }, 'warning', /debugView 'thickness' shows what the light gives, and there is no light .*: it is black on the subsurface pixels until a light is set/],
+  ["debugView 'transmittance' with light 'castShadow' and no light casting shadows", (t) => { t.usePipeline({ light: 'castShadow', debugView: 'transmittance' }); }, 'warning', /debugView 'transmittance' shows what the light gives, and there is no light/],
   ['a transparent subsurface material', (t) => { t.material.transparent = true; t.material.opacity = 0.8; }, 'warning', /is transparent, so it is blended over the scattered image without scattering/],
   // Sane as they are (documented): what three does, and what the pipeline adds stays finite.
   ['the light hidden', (t) => { t.light.visible = false; }, 'sane'],

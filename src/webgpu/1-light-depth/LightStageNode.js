@@ -47,7 +47,7 @@ export class LightStageNode extends Node {
    */
   updateBefore({ renderer }) {
     if (this.owner.light === null) { // none (any more): the materials handed uniforms send nothing
-      this.checks.begin().end();
+      this.checks.begin().withoutLight(this.owner._transmittanceAsked, this.owner.debugView).end();
       for (const material of this._materials) {
         if (!material.transmittanceNodes) continue;
         material.transmittanceNodes.sssTransmits.value = false;
