@@ -41,6 +41,7 @@ import { SubsurfaceScenePass } from './2-scene-split/SubsurfaceScenePass.js';
 import { BlurStage } from './3-blur/BlurStage.js';
 import { SubsurfaceComposePass } from './4-compose/SubsurfaceComposePass.js';
 import { materialOutputOf } from './4-compose/debugViews.js';
+import { nameClass } from './support/className.js';
 
 /**
  * A stage of one frame, as stageTimer sees it.
@@ -498,3 +499,5 @@ warnWhenDisabledFreezes(SubsurfaceScattering.prototype, 'SubsurfaceScattering: e
   'scene, so the composer shows the last frame it drew, frozen (enabled = false skips the pass, as for any pass). To turn ' +
   'the blur off, set scattering = false (in version 0.1 that was enabled = false); to draw the scene without the ' +
   'pipeline, enable a RenderPass in its place.');
+
+nameClass(SubsurfaceScattering, 'SubsurfaceScattering'); // its name in messages, minified or not

@@ -9,6 +9,7 @@ import fragmentShader from '../../shaders/1-light-depth/lightDepth.frag.glsl?raw
 import { assertFloatRenderTargets, describe } from '../support/rendererSupport.js';
 import { preservingRendererState } from '../support/rendererState.js';
 import { LightDepthView, boundsNoVolume } from './LightDepthView.js';
+import { nameClass } from '../support/className.js';
 
 /** Drawn in place of what the light pass leaves out: three culls a material with visible false. */
 const HIDDEN = new ShaderMaterial({ name: 'LightDepthHidden', visible: false });
@@ -145,3 +146,5 @@ export class LightDepthTarget extends LightDepthView {
     });
   }
 }
+
+nameClass(LightDepthTarget, 'LightDepthTarget'); // its name in messages, minified or not

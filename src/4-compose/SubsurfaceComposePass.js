@@ -12,6 +12,7 @@ import { checkBoolean, checkOneOf, checkNumber, checkOptions } from '../support/
 import { PASS_BOOLEANS, booleanFields } from '../support/booleanFields.js';
 import { DEBUG_VIEWS, DEBUG_VIEW } from './debugViews.js';
 import { PIPELINE_DEFAULTS } from '../options.js';
+import { nameClass } from '../support/className.js';
 
 
 const fragmentShader = assembleGlsl('SubsurfaceComposePass', composeGlsl, { 'common/finite.glsl': finiteGlsl, 'common/carriedDepth.glsl': carriedDepthGlsl });
@@ -144,3 +145,5 @@ export class SubsurfaceComposePass extends ShaderPass {
 }
 
 booleanFields(SubsurfaceComposePass.prototype, PASS_BOOLEANS);
+
+nameClass(SubsurfaceComposePass, 'SubsurfaceComposePass'); // its name in messages, minified or not

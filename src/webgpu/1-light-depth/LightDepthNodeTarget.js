@@ -8,6 +8,7 @@ import { MeshBasicNodeMaterial, NodeMaterial, RenderTarget, RendererUtils } from
 import { DoubleSide, FloatType, NearestFilter, RGFormat } from 'three';
 import { Fn, abs, dot, float, normalView, positionView, vec3, vec4 } from 'three/tsl';
 import { LightDepthView, boundsNoVolume } from '../../1-light-depth/LightDepthView.js';
+import { nameClass } from '../../support/className.js';
 
 let _state;
 
@@ -95,3 +96,5 @@ export class LightDepthNodeTarget extends LightDepthView {
     shaped.opacity = material.opacity;
   }
 }
+
+nameClass(LightDepthNodeTarget, 'LightDepthNodeTarget'); // its name in messages, minified or not
