@@ -121,6 +121,7 @@ export class SubsurfaceScattering extends PassWithSettings {
       diffuseTexture: this._scenePass.diffuseTexture,
       scatteredTexture: this._blur.scatteredTarget.texture,
       depthTexture: this._scenePass.depthTexture,
+      depthTarget: this._scenePass.renderTarget, // copied per sample under MSAA (src/4-compose/multisampledDepth.js)
     });
     this._composePass.setDebugView(o.debugView, { depthRange: o.debugDepthRange, thicknessRangeMm: o.debugThicknessRangeMm });
     this._composePass.setSplit(o.split);
@@ -310,6 +311,7 @@ export class SubsurfaceScattering extends PassWithSettings {
     const checks = this._checks.begin();
     checks.camera(camera);
     checks.scene(scene);
+    checks.depthHandOff(this._composePass.depthHandOff); // the last frame's: the output's MSAA unlike the split's
     // 'castShadow': the scene's lights that cast shadows now, more than MAX_LIGHTS said once.
     if (this.light === CAST_SHADOW) this._castShadowLights(scene, checks);
     if (this._lightDepths.length === 0) checks.withoutLight(this._transmittanceAsked, this.debugView);

@@ -13,7 +13,7 @@ import { PASS_BOOLEANS, booleanFields } from '../support/booleanFields.js';
 import { DEBUG_VIEWS, DEBUG_VIEW } from './debugViews.js';
 import { PIPELINE_DEFAULTS } from '../options.js';
 import { nameClass } from '../support/className.js';
-
+import { MultisampledDepthShare } from './multisampledDepth.js';
 
 const fragmentShader = assembleGlsl('SubsurfaceComposePass', composeGlsl, { 'common/finite.glsl': finiteGlsl, 'common/carriedDepth.glsl': carriedDepthGlsl });
 
@@ -28,18 +28,24 @@ export class SubsurfaceComposePass extends ShaderPass {
    * @param {import('three').Texture|null} [options.scatteredTexture=null] the blurred diffuse light,
    *   alpha as the diffuse's; null: the composer's read buffer
    * @param {import('three').DepthTexture} options.depthTexture the multi-target's depth, written out
+   * @param {import('three').WebGLRenderTarget|null} [options.depthTarget=null] the multi-target
+   *   itself: where the output is multisampled like it, the output takes its multisampled depth
+   *   (./multisampledDepth.js) instead of a depth written one per pixel
    */
   constructor(options = {}) {
     const {
-      colorTexture, surfaceTexture, diffuseTexture, scatteredTexture = null, depthTexture,
-    } = checkOptions('SubsurfaceComposePass options', options, ['colorTexture', 'surfaceTexture', 'diffuseTexture', 'scatteredTexture', 'depthTexture']);
+      colorTexture, surfaceTexture, diffuseTexture, scatteredTexture = null, depthTexture, depthTarget = null,
+    } = checkOptions('SubsurfaceComposePass options', options, ['colorTexture', 'surfaceTexture', 'diffuseTexture', 'scatteredTexture', 'depthTexture', 'depthTarget']);
     const inputs = { colorTexture, surfaceTexture, diffuseTexture, depthTexture };
     for (const [name, t] of Object.entries(inputs)) {
       if (!t || t.isTexture !== true) throw new TypeError(`SubsurfaceComposePass: ${name} must be a THREE.Texture, got ${describe(t)}`);
     }
+    if (depthTarget !== null && (depthTarget?.isWebGLRenderTarget !== true || depthTarget.depthTexture !== depthTexture)) {
+      throw new TypeError(`SubsurfaceComposePass: depthTarget must be null or the THREE.WebGLRenderTarget whose depthTexture is depthTexture, got ${describe(depthTarget)}`);
+    }
     super({
       name: 'SubsurfaceComposePass',
-      defines: { ...enumDefines('DEBUG_VIEW', DEBUG_VIEWS, DEBUG_VIEW.FINAL), KEEP_BACKGROUND: 0 },
+      defines: { ...enumDefines('DEBUG_VIEW', DEBUG_VIEWS, DEBUG_VIEW.FINAL), KEEP_BACKGROUND: 0, WRITE_DEPTH: 1 },
       uniforms: {
         tColor: { value: null }, tScattered: { value: null }, tDiffuse: { value: null }, tSurface: { value: null },
         tDepth: { value: null }, farDepth: { value: 1 },
@@ -55,6 +61,16 @@ export class SubsurfaceComposePass extends ShaderPass {
     this.uniforms.tDiffuse.value = inputs.diffuseTexture;
     this.uniforms.tDepth.value = inputs.depthTexture;
     this.scatteredTexture = scatteredTexture;
+    this._depthTarget = depthTarget;
+    this._depthShare = new MultisampledDepthShare();
+    /**
+     * How the last frame handed the scene's depth on: true, per sample (the output took the split's
+     * multisampled depth); false, written per pixel (the output is not multisampled, or drawn in
+     * part); a string: why a multisampled output could not take it (written per pixel: a pass
+     * drawn after it has an aliased edge along silhouettes).
+     * @type {boolean|string}
+     */
+    this.depthHandOff = false;
     this.setClear(true);
     this.debugView = DEBUG_VIEW.FINAL;
     this.split = 0;
@@ -89,9 +105,8 @@ export class SubsurfaceComposePass extends ShaderPass {
     checkBoolean('clear', clear);
     checkBoolean('clearDepth', clearDepth);
     setDefines(this.material, { KEEP_BACKGROUND: clear ? 0 : 1 });
-    this.material.depthTest = true; // depth is written only while the depth test is on
-    this.material.depthWrite = true;
     this.material.depthFunc = clear || clearDepth ? AlwaysDepth : LessEqualDepth;
+    this._clear = clear;
   }
 
   /**
@@ -113,9 +128,23 @@ export class SubsurfaceComposePass extends ShaderPass {
     this.uniforms.scatteredShare.value = checkNumber('scatteredShare', share, { min: 0, max: 1 });
   }
 
+  /** Draws into `writeBuffer` (the screen with renderToScreen), as ShaderPass does. */
   render(renderer, writeBuffer, readBuffer, deltaTime, maskActive) {
     // getReversed: three r172+.
     this.uniforms.farDepth.value = renderer.state.buffers.depth.getReversed?.() ? 0 : 1;
+    // The depth per sample where the output takes the split's (it replaces the output's depth:
+    // with clear only); else written, one per pixel (written only while the depth test is on).
+    const target = this.renderToScreen ? null : writeBuffer;
+    if (this._clear && this._depthTarget) {
+      this.depthHandOff = this._depthShare.share(renderer, this._depthTarget, target);
+    } else {
+      this._depthShare.release();
+      this.depthHandOff = false;
+    }
+    const shared = this.depthHandOff === true;
+    setDefines(this.material, { WRITE_DEPTH: shared ? 0 : 1 });
+    this.material.depthTest = !shared;
+    this.material.depthWrite = !shared;
     super.render(renderer, writeBuffer, readBuffer, deltaTime, maskActive);
   }
 
@@ -130,6 +159,12 @@ export class SubsurfaceComposePass extends ShaderPass {
   setSize(width) {
     this._width = width;
     this.uniforms.splitX.value = this.split * width;
+  }
+
+  /** Frees the pass; an output that took the scene split's depth gets its own back. */
+  dispose() {
+    this._depthShare.release();
+    super.dispose();
   }
 
   /** The blurred diffuse light: a texture, or null for the composer's read buffer. */

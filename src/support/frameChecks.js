@@ -1,8 +1,9 @@
 // What the orchestrator checks before each frame, where three itself would draw silently:
 // - the size against the GPU's largest render target (a RangeError: three's buffers fail there too);
-// - the camera, the scene (an overrideMaterial), the light, and settings that ask for a light
-//   where there is none: a console warning once per pipeline and a message in `sss.problems` while
-//   it lasts; the frame is drawn as three would draw it, never with NaN pixels.
+// - the camera, the scene (an overrideMaterial), the light, settings that ask for a light where
+//   there is none, and an MSAA output that cannot take the scene's depth per sample: a console
+//   warning once per pipeline and a message in `sss.problems` while it lasts; the frame is drawn
+//   as three would draw it, never with NaN pixels.
 import { checkNumber } from './parameterChecks.js';
 import { LIGHT_VIEWS, MAX_TARGET_SIZE } from '../options.js';
 
@@ -163,6 +164,18 @@ export class FrameChecks {
       return false;
     }
     return true;
+  }
+
+  /**
+   * The last frame's depth hand-off (SubsurfaceComposePass.depthHandOff): a string says why a
+   * multisampled output could not take the scene's depth per sample.
+   * @param {boolean|string} handOff
+   */
+  depthHandOff(handOff) {
+    if (typeof handOff !== 'string') return;
+    this.problem('depthHandOff', `the output buffer is multisampled unlike the scene split (${handOff}), so the scene's depth is handed on one per pixel: ` +
+      'what is drawn after the opaque scene (transparent objects, a later pass) has an aliased edge along its silhouettes; ' +
+      "give the buffer the pipeline's samples (`multisampling`) and no stencil buffer");
   }
 
   /**
