@@ -34,6 +34,8 @@ import {
   CAST_SHADOW, MAX_LIGHTS, PIPELINE_SCHEMA, checkPipelineOptions, lightsOf, propertiesOf,
 } from './options.js';
 import { estimatePixelsPerMm } from './framePlan.js';
+import { boxInTarget, cameraViews, unionBox } from './support/cameraViews.js';
+import { subsurfaceScreenBox } from './2-scene-split/subsurfaceScreenBox.js';
 import { LightDepthTarget } from './1-light-depth/LightDepthTarget.js';
 import { PipelineMaterials } from './2-scene-split/PipelineMaterials.js';
 import { isShining, lightReachesFromBehind } from './2-scene-split/transmittanceModel.js';
@@ -139,6 +141,8 @@ export class SubsurfaceScattering extends PassWithSettings {
      * @type {ReturnType<BlurStage['plan']>}
      */
     this.plan = this._blur.lastPlan;
+    /** @internal The last frame's views (src/support/cameraViews.js), each with its plan and subsurface box. */
+    this._views = [];
   }
 
   /**
@@ -335,22 +339,30 @@ export class SubsurfaceScattering extends PassWithSettings {
     if (this._scenePass.setSamples(msaaSamples)) this._blur.setMultisampled(msaaSamples > 0);
     this._stage('scene', () => this._scenePass.render(renderer));
     // 3. Plan: the blur plans itself (src/3-blur/blurPlan.js) from the on-screen size of a profile
-    //    millimetre: its taps for 'auto', no blur under half a pixel.
-    this.plan = this._blur.plan(this._pixelsPerMm());
+    //    millimetre: its taps for 'auto', no blur under half a pixel. An ArrayCamera's views are
+    //    planned apart, each at its own camera's scale.
+    this._views = this._planViews(camera);
+    this.plan = this._views.reduce((most, { plan }) => (plan.kernelPixels > most.kernelPixels ? plan : most), this._views[0]?.plan ?? this._blur.plan(0));
+    const blurred = this._views.filter((view) => view.plan.blur);
     // 4. Blur: the diffuse light, horizontally then vertically (or densely), into scatteredTarget.
-    if (this.plan.blur) this._renderScattering(renderer);
+    if (blurred.length > 0) this._renderScattering(renderer);
     // 5. Compose: colour + the scattered (without blur: the unblurred) diffuse light, and the
     //    scene's depth, into the target: every pixel (clear), or over what it holds (clear false).
-    this._composePass.scatteredTexture = this.plan.blur ? this._blur.scatteredTarget.texture : this._scenePass.diffuseTexture;
+    this._composePass.scatteredTexture = blurred.length > 0 ? this._blur.scatteredTarget.texture : this._scenePass.diffuseTexture;
     // The box bounds where the blur wrote; without the blur the diffuse is read everywhere, as before.
-    this._composePass.setMaskBox(this.plan.blur ? this._scenePass.subsurfaceBox : null);
-    this._composePass.setScatteredShare(this.plan.blur ? this.plan.fade : 1); // the blur fading in (blurPlan.js)
+    this._composePass.setMaskBox(blurred.length > 0 ? unionBox(blurred.map((view) => view.box)) : null);
+    const one = this._views.length === 1 ? this._views[0] : null;
+    this._composePass.setScatteredShare(one?.plan.blur ? one.plan.fade : 1); // the blur fading in (blurPlan.js)
     this._composePass.renderToScreen = this.renderToScreen;
     this._composePass.setClear(this.clear, this.clearDepth);
     const autoClear = renderer.autoClear;
     renderer.autoClear = false; // the full-screen quad would clear what clear = false keeps
     try {
-      this._stage('compose', () => this._composePass.render(renderer, readBuffer, null));
+      this._stage('compose', () => {
+        this._composePass.render(renderer, readBuffer, null);
+        // An ArrayCamera's views its plan fades in or leaves unblurred, again with their own.
+        if (!one && blurred.length > 0) this._composeViews(renderer, readBuffer);
+      });
       // 6. Transparent objects over the composed image, depth-tested against the scene.
       this._stage('transparent', () => this._scenePass.renderTransparent(renderer, target));
     } finally {
@@ -364,7 +376,42 @@ export class SubsurfaceScattering extends PassWithSettings {
    * @private @param {import('three').WebGLRenderer} renderer
    */
   _renderScattering(renderer) {
-    this._blur.render(renderer, this.camera, (stage, draw) => this._stage(stage, draw), this.plan, this._scenePass.subsurfaceBox);
+    const timed = (stage, draw) => this._stage(stage, draw);
+    const [first] = this._views;
+    if (this._views.length === 1 && first.whole) this._blur.render(renderer, first.camera, timed, first.plan, first.box);
+    else this._blur.renderViews(renderer, this._views, timed);
+  }
+
+  /**
+   * The frame's views (src/support/cameraViews.js), each with its plan and its subsurface pixels'
+   * box in the target: the camera's one view, the whole frame; an ArrayCamera's each at its own
+   * camera's scale, the box found as that camera alone would see the meshes.
+   * @private @param {import('three').Camera} camera
+   */
+  _planViews(camera) {
+    const { width, height } = this._scenePass.renderTarget;
+    const views = cameraViews(camera, width, height);
+    for (const view of views) {
+      view.plan = this._blur.plan(this._pixelsPerMm(view));
+      view.box = view.whole ? this._scenePass.subsurfaceBox
+        : boxInTarget(view, subsurfaceScreenBox(this._scenePass.subsurfaceMeshes, view.camera, view.viewport.width, view.viewport.height));
+    }
+    return views;
+  }
+
+  /**
+   * Composes again, each within its rectangle, an ArrayCamera's views whose plan is not the
+   * frame's: fading in (their share of the scattered light) or not blurred (their unblurred light).
+   * @private
+   */
+  _composeViews(renderer, readBuffer) {
+    for (const view of this._views) {
+      if (view.plan.blur && view.plan.fade === 1) continue;
+      this._composePass.scatteredTexture = view.plan.blur ? this._blur.scatteredTarget.texture : this._scenePass.diffuseTexture;
+      this._composePass.setMaskBox(view.plan.blur ? view.box : null);
+      this._composePass.setScatteredShare(view.plan.blur ? view.plan.fade : 1);
+      this._composePass.renderIn(renderer, readBuffer, view.rect);
+    }
   }
 
   /** @private @param {StageName} name @param {() => void} draw */
@@ -389,10 +436,14 @@ export class SubsurfaceScattering extends PassWithSettings {
     return lightReachesFromBehind(light, scene, camera, this._transmitsThrough);
   }
 
-  /** The largest on-screen size of a profile mm over the subsurface meshes the split drew. @private */
-  _pixelsPerMm() {
-    const { width, height } = this._scenePass.renderTarget;
-    return estimatePixelsPerMm(this._scenePass.subsurfaceMeshes, this.camera, { width, height },
+  /**
+   * The largest on-screen size of a profile mm over the subsurface meshes the split drew, in
+   * `view` (default: the camera's, the whole frame).
+   * @private @param {{ camera: import('three').Camera, viewport: { width: number, height: number } }} [view]
+   */
+  _pixelsPerMm(view = { camera: this.camera, viewport: this._scenePass.renderTarget }) {
+    const { width, height } = view.viewport;
+    return estimatePixelsPerMm(this._scenePass.subsurfaceMeshes, view.camera, { width, height },
       (m) => (this._scenePass.categoryOf(m) === 'subsurface' ? this._subsurfaceMaterials.widthWorldOf(m) : undefined));
   }
 

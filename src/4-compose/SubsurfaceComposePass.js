@@ -148,6 +148,39 @@ export class SubsurfaceComposePass extends ShaderPass {
     super.render(renderer, writeBuffer, readBuffer, deltaTime, maskActive);
   }
 
+  /**
+   * render() within `rect` of the output (device pixels), as far as the output's own scissor lets
+   * it: an ArrayCamera view composed again with its own plan (src/support/cameraViews.js).
+   * @param {import('three').WebGLRenderer} renderer
+   * @param {import('three').WebGLRenderTarget|null} writeBuffer
+   * @param {{ x: number, y: number, width: number, height: number }} rect
+   */
+  renderIn(renderer, writeBuffer, rect) {
+    const target = this.renderToScreen ? null : writeBuffer;
+    const ratio = target ? 1 : renderer.getPixelRatio(); // the screen's scissor is in CSS pixels
+    const scissor = target ? target.scissor.clone() : renderer.getScissor(new Vector4());
+    const scissorTest = target ? target.scissorTest : renderer.getScissorTest();
+    const within = (scissorTest ? scissor.clone().multiplyScalar(ratio) : new Vector4(0, 0, Infinity, Infinity));
+    const x0 = Math.max(rect.x, within.x);
+    const y0 = Math.max(rect.y, within.y);
+    const x1 = Math.min(rect.x + rect.width, within.x + within.z);
+    const y1 = Math.min(rect.y + rect.height, within.y + within.w);
+    if (!(x1 > x0 && y1 > y0)) return;
+    const set = (s, test) => {
+      if (target) Object.assign(target, { scissorTest: test }).scissor.copy(s);
+      else {
+        renderer.setScissor(s);
+        renderer.setScissorTest(test);
+      }
+    };
+    set(new Vector4(x0, y0, x1 - x0, y1 - y0).multiplyScalar(1 / ratio), true);
+    try {
+      this.render(renderer, writeBuffer, null);
+    } finally {
+      set(scissor, scissorTest);
+    }
+  }
+
   /** @param {number} fraction of the width, from the left, shown without the blur (0 = none, 1 = all) */
   setSplit(fraction) {
     checkNumber('split', fraction, { min: 0, max: 1 });

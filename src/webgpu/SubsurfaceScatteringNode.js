@@ -31,6 +31,7 @@ import {
   CAST_SHADOW, NODE_SCHEMA, checkNodeOptions, lightsOf, propertiesOf,
 } from '../options.js';
 import { withSettings } from '../support/settings.js';
+import { FrameChecks } from '../support/frameChecks.js';
 import { WEBGPU_THREE, checkThreeRevision } from '../support/threeVersion.js';
 import { ATTACHMENT_NAMES } from './2-scene-split/attachments.js';
 import { subsurfaceBlurNode } from './3-blur/subsurfaceBlurTsl.js';
@@ -105,6 +106,8 @@ export class SubsurfaceScatteringNode extends NodeWithSettings {
       marginalRangeMm: uniform(1), debugView: debugViewUniform(), debugDepthRange: uniform(1), debugThicknessRangeMm: uniform(1), scatteredShare: uniform(1),
       lightShown: uniform(o.light === null ? 0 : 1), // the light's views show nothing without one (the WebGL materials write 0 there)
     };
+    /** The frame's own checks (the light's are the light stage's), each warned about once. */
+    this._checks = new FrameChecks('SubsurfaceScatteringNode');
     /** Stage 1 and the materials' transmittance uniforms, before the scene pass (built with or without a light: `light` is assignable). */
     this._lightStage = new LightStageNode(this, nodeLight(o.light), o.lightDepthSize);
     for (const name of ['worldUnitInMm', 'samples', 'strength', 'debugView', 'debugDepthRange', 'debugThicknessRangeMm']) this._applySetting(name, o[name]);
@@ -192,8 +195,11 @@ export class SubsurfaceScatteringNode extends NodeWithSettings {
   /** @param {import('../options.js').ProfileName|object} profile */
   set profile(profile) { super.profile = profile; }
 
-  /** What the last frame found wrong with the light, one message each (empty when all is well). @type {readonly string[]} */
-  get problems() { return this._lightStage.checks.current; }
+  /** What the last frame found wrong with the light or the camera, one message each (empty when all is well). @type {readonly string[]} */
+  get problems() {
+    const [light, frame] = [this._lightStage.checks.current, this._checks.current];
+    return frame.length === 0 ? light : Object.freeze([...light, ...frame]);
+  }
 
   /** Stage 1: the light depth map for transmittance, or null without a light. @type {import('./1-light-depth/LightDepthNodeTarget.js').LightDepthNodeTarget|null} */
   get lightDepth() { return this.light === null ? null : this._lightStage.lightDepth; }
@@ -303,7 +309,15 @@ export class SubsurfaceScatteringNode extends NodeWithSettings {
     renderer.getDrawingBufferSize(_size);
     scenePass.setSize(_size.width, _size.height);
     const { width, height } = scenePass.renderTarget;
-    this.plan = this._planFrame(subsurfaceMeshesOf(scene).meshes, camera, width, height);
+    // An ArrayCamera's views would each need their own blur (the WebGL pipeline's): drawn unblurred, said.
+    const views = camera.isArrayCamera === true;
+    this._checks.begin();
+    if (views) {
+      this._checks.problem('arrayCamera', 'the camera is an ArrayCamera: the node blurs one view, so its views are drawn without scattering, ' +
+        'as three draws them; the WebGL pipeline (SubsurfaceScattering) blurs each view at its own scale');
+    }
+    this._checks.end();
+    this.plan = this._planFrame(views ? [] : subsurfaceMeshesOf(scene).meshes, camera, width, height);
     this._uniforms.scatteredShare.value = this.plan.blur ? this.plan.fade : 1; // the blur fading in (blurPlan.js)
     if (this.kernelGroups === 1) this._freeGroupTarget(); // back to one kernel: its 8 B per pixel and group go
     const diffuse = scenePass.getTexture(ATTACHMENT_NAMES.DIFFUSE);
