@@ -284,6 +284,50 @@ async function debugViews({ backend = 'webgpu', width = 96, height = 54 }) {
 }
 
 /**
+ * The box through the node with an ArrayCamera of two views (fov 20 and 40) and with scattering
+ * off (issue 40: the node blurs one view, so it draws an ArrayCamera's views unscattered, said once):
+ * the output of each (linear float) and the node's problems.
+ */
+async function arrayCamera({ backend = 'webgpu', width = 96, height = 54 }) {
+  const renderer = await createRenderer(width, height, { backend });
+  const material = new THREE.MeshStandardMaterial({ color: 0xffccaa, roughness: 0.6 });
+  const { scene, camera, mesh } = boxScene(material);
+  mesh.material = NODE.subsurfaceMaterial(material, { widthMm: 5 });
+  const views = [20, 40].map((fov, i) => {
+    const view = new THREE.PerspectiveCamera(fov, width / 2 / height, 0.1, 50);
+    view.position.copy(camera.position);
+    view.updateMatrixWorld();
+    view.viewport = new THREE.Vector4(i * width / 2, 0, width / 2, height);
+    return view;
+  });
+  const array = new THREE.ArrayCamera(views);
+  array.position.copy(camera.position);
+  const target = new THREE.RenderTarget(width, height, { type: THREE.FloatType });
+  const out = {};
+  for (const scattering of [true, false]) {
+    const { scenePass, node, pipeline } = subsurfacePipeline(renderer, scene, array, { sss: { worldUnitInMm: 100, scattering } });
+    renderer.setRenderTarget(target);
+    pipeline.render();
+    renderer.setRenderTarget(null);
+    out[scattering ? 'asked' : 'off'] = { image: await readFloats(renderer, target), problems: [...node.problems], blur: node.plan.blur };
+    node.dispose();
+    pipeline.dispose();
+    scenePass.dispose();
+  }
+  // three's own frame of the views: the box's own material, no pipeline.
+  const subsurface = mesh.material;
+  mesh.material = material;
+  renderer.setRenderTarget(target);
+  renderer.render(scene, array);
+  renderer.setRenderTarget(null);
+  out.three = await readFloats(renderer, target);
+  target.dispose();
+  subsurface.dispose();
+  renderer.dispose();
+  return out;
+}
+
+/**
  * One of the WebGL lab's scenes (lab.js's SCENES, its defaults: 10 mm per unit) through the node,
  * its subsurface materials as node materials, the scene pass multisampled with `samples`, and the
  * scene's light for transmittance where `transmittance`: the diffuse attachment (float, before
@@ -578,6 +622,6 @@ async function sameFrame({ backend = 'webgpu', width = 96, height = 54 }) {
 
 window.wgpu = {
   THREE, NODE, pass, createRenderer, readFloats, subsurfacePipeline, flat, disposeFlatRig, head, disposal, plainDraw, debugViews, labScene, labScenePlain, lightDepthCards,
-  dollyOpen, dollyFrames, dollyClose, lightAssigned, lightKeyOrder, sameFrame, nearLight,
+  dollyOpen, dollyFrames, dollyClose, lightAssigned, lightKeyOrder, sameFrame, nearLight, arrayCamera,
 };
 window.testReady = true;
