@@ -123,7 +123,7 @@ export class SubsurfaceScattering extends PassWithSettings {
       diffuseTexture: this._scenePass.diffuseTexture,
       scatteredTexture: this._blur.scatteredTarget.texture,
       depthTexture: this._scenePass.depthTexture,
-      depthTarget: this._scenePass.renderTarget, // copied per sample under MSAA (src/4-compose/multisampledDepth.js)
+      depthTarget: this._scenePass.renderTarget, // its depth handed on per sample under MSAA (src/4-compose/multisampledDepth.js)
     });
     this._composePass.setDebugView(o.debugView, { depthRange: o.debugDepthRange, thicknessRangeMm: o.debugThicknessRangeMm });
     this._composePass.setSplit(o.split);
@@ -342,7 +342,9 @@ export class SubsurfaceScattering extends PassWithSettings {
     //    millimetre: its taps for 'auto', no blur under half a pixel. An ArrayCamera's views are
     //    planned apart, each at its own camera's scale.
     this._views = this._planViews(camera);
-    this.plan = this._views.reduce((most, { plan }) => (plan.kernelPixels > most.kernelPixels ? plan : most), this._views[0]?.plan ?? this._blur.plan(0));
+    // The frame's plan: its view's, or the one reaching furthest of an ArrayCamera's (none: no blur).
+    this.plan = this._views.length === 0 ? this._blur.plan(0)
+      : this._views.map((view) => view.plan).reduce((most, plan) => (plan.kernelPixels > most.kernelPixels ? plan : most));
     const blurred = this._views.filter((view) => view.plan.blur);
     // 4. Blur: the diffuse light, horizontally then vertically (or densely), into scatteredTarget.
     if (blurred.length > 0) this._renderScattering(renderer);

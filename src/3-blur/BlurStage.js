@@ -254,6 +254,8 @@ export class BlurStage {
    * @param {import('./blurPlan.js').BlurPlan} [plan] the frame's plan (default: the last one)
    * @param {{ x: number, y: number, width: number, height: number }|null} [box=null] the subsurface
    *   pixels' screen box (src/2-scene-split/subsurfaceScreenBox.js); null: the whole frame
+   * @param {string} [clearKey] what the targets' clears follow (renderViews: all the views' boxes;
+   *   default: `box`)
    */
   render(renderer, camera, timed, plan = this.lastPlan, box = null, clearKey = undefined) {
     for (const pass of this.surfacePasses) pass.camera = camera;
