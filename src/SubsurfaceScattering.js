@@ -32,9 +32,11 @@ import { stopWatching, warnWhenDisabledFreezes, watchRendered } from './support/
 import { PASS_BOOLEANS, booleanFields } from './support/booleanFields.js';
 import { FrameChecks, checkTargetSize, checkTargetLimits } from './support/frameChecks.js';
 import {
-  CAST_SHADOW, MAX_LIGHTS, PIPELINE_SCHEMA, checkNeedsLight, checkPipelineOptions, lightsOf, propertiesOf,
+  CAST_SHADOW, MAX_LIGHTS, PIPELINE_SCHEMA, checkPipelineOptions, lightsOf, propertiesOf,
 } from './options.js';
 import { estimatePixelsPerMm } from './framePlan.js';
+import { boxInTarget, cameraViews, unionBox } from './support/cameraViews.js';
+import { subsurfaceScreenBox } from './2-scene-split/subsurfaceScreenBox.js';
 import { LightDepthTarget } from './1-light-depth/LightDepthTarget.js';
 import { PipelineMaterials } from './2-scene-split/PipelineMaterials.js';
 import { isShining, lightReachesFromBehind } from './2-scene-split/transmittanceModel.js';
@@ -43,6 +45,7 @@ import { BlurStage } from './3-blur/BlurStage.js';
 import { SubsurfaceComposePass } from './4-compose/SubsurfaceComposePass.js';
 import { materialOutputOf } from './4-compose/debugViews.js';
 import { holdingMatrices, preservingRendererState } from './support/rendererState.js';
+import { nameClass } from './support/className.js';
 
 const _clearColor = new Color();
 
@@ -73,11 +76,12 @@ export class SubsurfaceScattering extends PassWithSettings {
     const o = checkPipelineOptions(options); // every option checked here, once, against the schema
     /** @internal The settings' values (read and assigned through their properties). */
     this._settings = Object.fromEntries(propertiesOf(PIPELINE_SCHEMA).map(({ name }) => [name, o[name]]));
-    if (Object.hasOwn(options, 'transmittance')) checkNeedsLight('transmittance', o.transmittance, o.light);
-    checkNeedsLight('debugView', o.debugView, o.light);
-    this._settings.transmittance = o.transmittance && o.light !== null; // the default: on where there is a light
-    /** @internal Whether transmittance is asked for: kept across lights, so a light arriving does not undo an `off`. */
-    this._transmittanceWanted = o.transmittance;
+    /**
+     * @internal Whether the user set `transmittance` true (not the default), for the frame's word
+     * when there is no light: the settings a light needs are kept as set, whatever the order they
+     * came in, and take effect with a light.
+     */
+    this._transmittanceAsked = Object.hasOwn(options, 'transmittance') && o.transmittance;
 
     this.needsSwap = false; // like RenderPass: it draws into the read buffer
     /** As RenderPass: first in renderer.setEffects([...]) (three r182+), the renderer leaves the scene's draw to it. */
@@ -125,6 +129,7 @@ export class SubsurfaceScattering extends PassWithSettings {
       diffuseTexture: this._scenePass.diffuseTexture,
       scatteredTexture: this._blur.scatteredTarget.texture,
       depthTexture: this._scenePass.depthTexture,
+      depthTarget: this._scenePass.renderTarget, // its depth handed on per sample under MSAA (src/4-compose/multisampledDepth.js)
     });
     this._composePass.setDebugView(o.debugView, { depthRange: o.debugDepthRange, thicknessRangeMm: o.debugThicknessRangeMm });
     this._composePass.setSplit(o.split);
@@ -142,6 +147,8 @@ export class SubsurfaceScattering extends PassWithSettings {
      * @type {ReturnType<BlurStage['plan']>}
      */
     this.plan = this._blur.lastPlan;
+    /** @internal The last frame's views (src/support/cameraViews.js), each with its plan and subsurface box. */
+    this._views = [];
   }
 
   /**
@@ -176,12 +183,10 @@ export class SubsurfaceScattering extends PassWithSettings {
         this._blur.setForeshortening(value);
         return;
       case 'transmittance':
-        checkNeedsLight(name, value, this.light);
-        this._transmittanceWanted = value;
+        this._transmittanceAsked = value;
         this._subsurfaceMaterials.rebindAll();
         return;
       case 'debugView': case 'debugDepthRange': case 'debugThicknessRangeMm':
-        checkNeedsLight('debugView', this.debugView, this.light);
         this._composePass.setDebugView(this.debugView, { depthRange: this.debugDepthRange, thicknessRangeMm: this.debugThicknessRangeMm });
         this._subsurfaceMaterials.setDebugOutput(materialOutputOf(this.debugView));
         return;
@@ -200,16 +205,13 @@ export class SubsurfaceScattering extends PassWithSettings {
 
   /**
    * Other lights, or none: each map follows its light from the next frame (kept where there was
-   * one at its place, so its materials read it on); from none to a light transmittance turns on
-   * unless it was set off, to none off.
+   * one at its place, so its materials read it on). `transmittance` and `debugView` stay as set:
+   * they act through the lights there are.
    * @private
    */
   _setLight(light, previous) {
     if (light === previous) return;
-    if (light === null) checkNeedsLight('debugView', this.debugView, null); // a light's view stays: refused
-    const switches = previous === null || light === null;
-    if (switches) this._settings.transmittance = light !== null && this._transmittanceWanted;
-    if (!this._useLights(lightsOf(light, this.scene)) && switches) this._subsurfaceMaterials.rebindAll();
+    this._useLights(lightsOf(light, this.scene));
   }
 
   /**
@@ -329,8 +331,10 @@ export class SubsurfaceScattering extends PassWithSettings {
     const checks = this._checks.begin();
     checks.camera(camera);
     checks.scene(scene);
+    checks.depthHandOff(this._composePass.depthHandOff); // the last frame's: the output's MSAA unlike the split's
     // 'castShadow': the scene's lights that cast shadows now, more than MAX_LIGHTS said once.
     if (this.light === CAST_SHADOW) this._castShadowLights(scene, checks);
+    if (this._lightDepths.length === 0) checks.withoutLight(this._transmittanceAsked, this.debugView);
     Object.assign(this._scenePass, { scene, camera, clearColor: this.clearColor, clearAlpha: this.clearAlpha });
     const frame = this._scenePass.collect();
     // The lights' checks fit their maps to the transmitting meshes on the screen.
@@ -369,22 +373,32 @@ export class SubsurfaceScattering extends PassWithSettings {
     if (this._scenePass.setSamples(msaaSamples)) this._blur.setMultisampled(msaaSamples > 0);
     this._stage('scene', () => this._scenePass.render(renderer));
     // 3. Plan: the blur plans itself (src/3-blur/blurPlan.js) from the on-screen size of a profile
-    //    millimetre: its taps for 'auto', no blur under half a pixel.
-    this.plan = this._blur.plan(this._pixelsPerMm());
+    //    millimetre: its taps for 'auto', no blur under half a pixel. An ArrayCamera's views are
+    //    planned apart, each at its own camera's scale.
+    this._views = this._planViews(camera);
+    // The frame's plan: its view's, or the one reaching furthest of an ArrayCamera's (none: no blur).
+    this.plan = this._views.length === 0 ? this._blur.plan(0)
+      : this._views.map((view) => view.plan).reduce((most, plan) => (plan.kernelPixels > most.kernelPixels ? plan : most));
+    const blurred = this._views.filter((view) => view.plan.blur);
     // 4. Blur: the diffuse light, horizontally then vertically (or densely), into scatteredTarget.
-    if (this.plan.blur) this._renderScattering(renderer);
+    if (blurred.length > 0) this._renderScattering(renderer);
     // 5. Compose: colour + the scattered (without blur: the unblurred) diffuse light, and the
     //    scene's depth, into the target: every pixel (clear), or over what it holds (clear false).
-    this._composePass.scatteredTexture = this.plan.blur ? this._blur.scatteredTarget.texture : this._scenePass.diffuseTexture;
+    this._composePass.scatteredTexture = blurred.length > 0 ? this._blur.scatteredTarget.texture : this._scenePass.diffuseTexture;
     // The box bounds where the blur wrote; without the blur the diffuse is read everywhere, as before.
-    this._composePass.setMaskBox(this.plan.blur ? this._scenePass.subsurfaceBox : null);
-    this._composePass.setScatteredShare(this.plan.blur ? this.plan.fade : 1); // the blur fading in (blurPlan.js)
+    this._composePass.setMaskBox(blurred.length > 0 ? unionBox(blurred.map((view) => view.box)) : null);
+    const one = this._views.length === 1 ? this._views[0] : null;
+    this._composePass.setScatteredShare(one?.plan.blur ? one.plan.fade : 1); // the blur fading in (blurPlan.js)
     this._composePass.renderToScreen = this.renderToScreen;
     this._composePass.setClear(this.clear, this.clearDepth);
     const autoClear = renderer.autoClear;
     renderer.autoClear = false; // the full-screen quad would clear what clear = false keeps
     try {
-      this._stage('compose', () => this._composePass.render(renderer, readBuffer, null));
+      this._stage('compose', () => {
+        this._composePass.render(renderer, readBuffer, null);
+        // An ArrayCamera's views its plan fades in or leaves unblurred, again with their own.
+        if (!one && blurred.length > 0) this._composeViews(renderer, readBuffer);
+      });
       // 6. Transparent objects over the composed image, depth-tested against the scene.
       this._stage('transparent', () => this._scenePass.renderTransparent(renderer, target));
     } finally {
@@ -427,7 +441,42 @@ export class SubsurfaceScattering extends PassWithSettings {
    * @private @param {import('three').WebGLRenderer} renderer
    */
   _renderScattering(renderer) {
-    this._blur.render(renderer, this.camera, (stage, draw) => this._stage(stage, draw), this.plan, this._scenePass.subsurfaceBox);
+    const timed = (stage, draw) => this._stage(stage, draw);
+    const [first] = this._views;
+    if (this._views.length === 1 && first.whole) this._blur.render(renderer, first.camera, timed, first.plan, first.box);
+    else this._blur.renderViews(renderer, this._views, timed);
+  }
+
+  /**
+   * The frame's views (src/support/cameraViews.js), each with its plan and its subsurface pixels'
+   * box in the target: the camera's one view, the whole frame; an ArrayCamera's each at its own
+   * camera's scale, the box found as that camera alone would see the meshes.
+   * @private @param {import('three').Camera} camera
+   */
+  _planViews(camera) {
+    const { width, height } = this._scenePass.renderTarget;
+    const views = cameraViews(camera, width, height);
+    for (const view of views) {
+      view.plan = this._blur.plan(this._pixelsPerMm(view));
+      view.box = view.whole ? this._scenePass.subsurfaceBox
+        : boxInTarget(view, subsurfaceScreenBox(this._scenePass.subsurfaceMeshes, view.camera, view.viewport.width, view.viewport.height));
+    }
+    return views;
+  }
+
+  /**
+   * Composes again, each within its rectangle, an ArrayCamera's views whose plan is not the
+   * frame's: fading in (their share of the scattered light) or not blurred (their unblurred light).
+   * @private
+   */
+  _composeViews(renderer, readBuffer) {
+    for (const view of this._views) {
+      if (view.plan.blur && view.plan.fade === 1) continue;
+      this._composePass.scatteredTexture = view.plan.blur ? this._blur.scatteredTarget.texture : this._scenePass.diffuseTexture;
+      this._composePass.setMaskBox(view.plan.blur ? view.box : null);
+      this._composePass.setScatteredShare(view.plan.blur ? view.plan.fade : 1);
+      this._composePass.renderIn(renderer, readBuffer, view.rect);
+    }
   }
 
   /** @private @param {StageName} name @param {() => void} draw */
@@ -450,10 +499,14 @@ export class SubsurfaceScattering extends PassWithSettings {
     return lightReachesFromBehind(light, this._scenePass.frame.onScreen, camera, this._transmitsThrough);
   }
 
-  /** The largest on-screen size of a profile mm over the subsurface meshes the split drew. @private */
-  _pixelsPerMm() {
-    const { width, height } = this._scenePass.renderTarget;
-    return estimatePixelsPerMm(this._scenePass.subsurfaceMeshes, this.camera, { width, height },
+  /**
+   * The largest on-screen size of a profile mm over the subsurface meshes the split drew, in
+   * `view` (default: the camera's, the whole frame).
+   * @private @param {{ camera: import('three').Camera, viewport: { width: number, height: number } }} [view]
+   */
+  _pixelsPerMm(view = { camera: this.camera, viewport: this._scenePass.renderTarget }) {
+    const { width, height } = view.viewport;
+    return estimatePixelsPerMm(this._scenePass.subsurfaceMeshes, view.camera, { width, height },
       (m) => (this._scenePass.categoryOf(m) === 'subsurface' ? this._subsurfaceMaterials.widthWorldOf(m) : undefined));
   }
 
@@ -562,3 +615,5 @@ warnWhenDisabledFreezes(SubsurfaceScattering.prototype, 'SubsurfaceScattering: e
   'scene, so the composer shows the last frame it drew, frozen (enabled = false skips the pass, as for any pass). To turn ' +
   'the blur off, set scattering = false (in version 0.1 that was enabled = false); to draw the scene without the ' +
   'pipeline, enable a RenderPass in its place.');
+
+nameClass(SubsurfaceScattering, 'SubsurfaceScattering'); // its name in messages, minified or not

@@ -10,7 +10,7 @@ import { assertFloatRenderTargets, describe } from '../support/rendererSupport.j
 import { preservingRendererState } from '../support/rendererState.js';
 import { LightDepthView, boundsNoVolume } from './LightDepthView.js';
 import { holdingLevels, isDrawable } from '../frameMeshes.js';
-
+import { nameClass } from '../support/className.js';
 
 /** The drawable objects of `scene` visible with their ancestors (a LightDepthTarget used alone). */
 function visibleObjects(scene) {
@@ -164,3 +164,5 @@ export class LightDepthTarget extends LightDepthView {
     });
   }
 }
+
+nameClass(LightDepthTarget, 'LightDepthTarget'); // its name in messages, minified or not

@@ -7,6 +7,7 @@ import { localBoundsOf } from '../support/meshBounds.js';
 import { checkInteger, checkNumber, checkOptions } from '../support/parameterChecks.js';
 import { describe } from '../support/rendererSupport.js';
 import { LIGHT_DEPTH_SIZES, PIPELINE_DEFAULTS } from '../options.js';
+import { nameClass } from '../support/className.js';
 
 const _target = new Vector3();
 const _frustum = new Frustum();
@@ -485,3 +486,5 @@ export class LightDepthView {
     return null;
   }
 }
+
+nameClass(LightDepthView, 'LightDepthView'); // its name in messages, minified or not

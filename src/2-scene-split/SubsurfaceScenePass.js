@@ -26,6 +26,7 @@ import { checkOptions } from '../support/parameterChecks.js';
 import { PASS_BOOLEANS, booleanFields } from '../support/booleanFields.js';
 import { preservingRendererState } from '../support/rendererState.js';
 import { checkThreeRevision } from '../support/threeVersion.js';
+import { nameClass } from '../support/className.js';
 
 const ZERO = new Float32Array(4);
 const _clearColor = new Color();
@@ -321,3 +322,5 @@ export class SubsurfaceScenePass extends Pass {
 }
 
 booleanFields(SubsurfaceScenePass.prototype, PASS_BOOLEANS);
+
+nameClass(SubsurfaceScenePass, 'SubsurfaceScenePass'); // its name in messages, minified or not

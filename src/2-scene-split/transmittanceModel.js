@@ -8,6 +8,7 @@ import { Matrix4, Vector3 } from 'three';
 import { LightDepthView } from '../1-light-depth/LightDepthView.js';
 import { ProfileLookup } from '../profiles/ProfileLookup.js';
 import { describe } from '../support/rendererSupport.js';
+import { classNameOf } from '../support/className.js';
 import { nearestViewDepth } from '../framePlan.js';
 import { MATERIAL_DEFAULTS, MATERIAL_SCHEMA, PIPELINE_SCHEMA, checkOption } from '../options.js';
 
@@ -62,7 +63,7 @@ export function transmittanceSettings(options, Accepted = LightDepthView) {
   const {
     lightDepth, lookup, worldUnitInMm, widthMm = MATERIAL_DEFAULTS.widthMm, translucency = MATERIAL_DEFAULTS.translucency, shrinkMm = MATERIAL_DEFAULTS.shrinkMm,
   } = options;
-  if (!(lightDepth instanceof Accepted)) throw new TypeError(`transmittance: lightDepth must be a ${Accepted.name}, got ${describe(lightDepth)}`);
+  if (!(lightDepth instanceof Accepted)) throw new TypeError(`transmittance: lightDepth must be a ${classNameOf(Accepted)}, got ${describe(lightDepth)}`);
   if (!(lookup instanceof ProfileLookup)) throw new TypeError(`transmittance: lookup must be a ProfileLookup, got ${describe(lookup)}`);
   checkOption(PIPELINE_SCHEMA, 'worldUnitInMm', worldUnitInMm);
   for (const [name, value] of Object.entries({ widthMm, translucency, shrinkMm })) checkOption(MATERIAL_SCHEMA, name, value);

@@ -9,6 +9,7 @@ import { DoubleSide, FloatType, NearestFilter, RGFormat } from 'three';
 import { Fn, abs, dot, float, normalView, positionView, vec3, vec4 } from 'three/tsl';
 import { LightDepthView, boundsNoVolume } from '../../1-light-depth/LightDepthView.js';
 import { holdingLevels } from '../../frameMeshes.js';
+import { nameClass } from '../../support/className.js';
 
 let _state;
 
@@ -99,3 +100,5 @@ export class LightDepthNodeTarget extends LightDepthView {
     shaped.opacity = material.opacity;
   }
 }
+
+nameClass(LightDepthNodeTarget, 'LightDepthNodeTarget'); // its name in messages, minified or not

@@ -53,7 +53,7 @@ export class LightStageNode extends Node {
     if (camera.parent === null && camera.matrixWorldAutoUpdate === true) camera.updateMatrixWorld();
     const frame = this.owner.frame.update(scene, camera, isSubsurfaceNodeMaterial);
     if (this.owner.light === null) { // none (any more): the materials handed uniforms send nothing
-      this.checks.begin().end();
+      this.checks.begin().withoutLight(this.owner._transmittanceAsked, this.owner.debugView).end();
       for (const material of this._materials) {
         if (!material.transmittanceNodes) continue;
         material.transmittanceNodes.sssTransmits.value = false;
