@@ -263,9 +263,10 @@ export class LightDepthView {
       this.fitted = null;
       return null;
     }
-    // Whatever lies before the farthest transmitting surface may stand between it and the light.
+    // Whatever lies before the farthest transmitting surface may stand between it and the light,
+    // and that surface itself: a flat mesh face-on to the light (a leaf, a card) is all at `far`.
     let near = Infinity;
-    for (const [n, f] of ranges.values()) if (f > (perspective ? 0 : -Infinity) && n < far) near = Math.min(near, n);
+    for (const [n, f] of ranges.values()) if (f > (perspective ? 0 : -Infinity) && n <= far) near = Math.min(near, n);
     const margin = FIT.MARGIN * Math.max(far - near, Math.abs(far), Math.abs(near)) || FIT.MARGIN; // a flat mesh in the light's plane: some depth
     near -= margin;
     if (perspective) near = Math.max(cube ? 0 : near, FIT.MIN_NEAR * far); // six faces: the nearest is not a corner's

@@ -8,6 +8,7 @@ import { Matrix4, Vector3 } from 'three';
 import { LightDepthView } from '../1-light-depth/LightDepthView.js';
 import { ProfileLookup } from '../profiles/ProfileLookup.js';
 import { describe } from '../support/rendererSupport.js';
+import { glslFloat } from '../support/glsl.js';
 import { nearestViewDepth } from '../framePlan.js';
 import { MATERIAL_DEFAULTS, MATERIAL_SCHEMA, PIPELINE_SCHEMA, checkOption } from '../options.js';
 
@@ -24,6 +25,17 @@ export const TRANSMITTED_LIGHT = Object.freeze({ WRAP_OFFSET: 0.3, FROM_BEHIND_R
 export const TRANSMITTED_LIGHT_DEFINES = Object.freeze(Object.fromEntries(
   Object.entries(TRANSMITTED_LIGHT).map(([name, value]) => [`SSS_${name}`, value.toFixed(6)]),
 ));
+
+/**
+ * A sheet, a surface of no thickness (transmittance.glsl's sssTransmittanceAround): a texel on the
+ * far side of a point records the point's own surface where its depth lies within TEXELS of a
+ * texel's width of the point's tangent plane (exact for a plane: the map holds each texel centre's
+ * depth; the tolerance is for a curved sheet, whose surface leaves the plane over the texels read).
+ */
+export const SHEET = Object.freeze({ TEXELS: 0.5 });
+
+/** SHEET as GLSL define lines (SSS_SHEET_TEXELS, ...), for the chunk that reads them. */
+export const SHEET_DEFINES = Object.entries(SHEET).map(([name, value]) => `#define SSS_SHEET_${name} ${glslFloat(value)}`).join('\n');
 
 /** The kinds of light transmittance is shaded with (a uniform: its index). */
 export const LIGHT_TYPES = Object.freeze(['directional', 'spot', 'point']);
