@@ -130,7 +130,7 @@ export class SubsurfaceScattering extends PassWithSettings {
       lookupOf: (profile) => this._lookupOf(profile),
       checkProfiles: (profiles) => this._checkProfiles(this.method, profiles, this.profile, 'makeSubsurface'),
       debugOutput: materialOutputOf(this.debugView),
-    }));
+    }), () => this._useProfiles());
     /**
      * What the last frame ran: { samples, kernelPixels, blur, passes, groups } (src/3-blur/blurPlan.js).
      * @type {ReturnType<BlurStage['plan']>}
@@ -318,7 +318,6 @@ export class SubsurfaceScattering extends PassWithSettings {
     // The lights' checks fit their maps to the meshes, as the scene split's render will place them.
     if (this._lightDepths.length > 0 && scene.matrixWorldAutoUpdate === true) scene.updateMatrixWorld();
     const works = this._lightDepths.map((lightDepth) => checks.light(lightDepth, scene, this.transmittance, this._transmitsThrough));
-    checks.end();
     // 1. Light depth: linear depth seen from each light, for transmittance (not for a light that
     //    is off, nor one that reaches no subsurface mesh from behind: its map would go unread).
     this._lightDepths.forEach((lightDepth, i) => {
@@ -334,6 +333,10 @@ export class SubsurfaceScattering extends PassWithSettings {
     const msaaSamples = this.multisampling === 'auto' ? (readBuffer?.samples ?? 0) : this.multisampling;
     if (this._scenePass.setSamples(msaaSamples)) this._blur.setMultisampled(msaaSamples > 0);
     this._stage('scene', () => this._scenePass.render(renderer));
+    // The materials as three compiled them and the copies the split met: what it could not make
+    // subsurface is drawn as three draws it, each named once.
+    this._subsurfaceMaterials.checkMaterials(checks, this._scenePass.copiesNotFollowed);
+    checks.end();
     // 3. Plan: the blur plans itself (src/3-blur/blurPlan.js) from the on-screen size of a profile
     //    millimetre: its taps for 'auto', no blur under half a pixel.
     this.plan = this._blur.plan(this._pixelsPerMm());

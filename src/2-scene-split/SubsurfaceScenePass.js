@@ -17,7 +17,7 @@
 // image, depth-tested against the scene, exactly as three blends them over its opaque pass.
 import { Color, FloatType, HalfFloatType } from 'three';
 import { Pass } from 'three/addons/postprocessing/Pass.js';
-import { getSubsurface } from './subsurfaceMaterial.js';
+import { followCopy, getSubsurface } from './subsurfaceMaterial.js';
 import { subsurfaceScreenBox } from './subsurfaceScreenBox.js';
 import { ATTACHMENTS, DRAW_BUFFERS, DRAW_PHASES, createSubsurfaceTarget, diffuseCarriesDepth, drawingInto, setDiffuseCarriesDepth, setSurfaceChannels } from './subsurfaceTarget.js';
 import { assertFloatRenderTargets, describe } from '../support/rendererSupport.js';
@@ -85,6 +85,8 @@ export class SubsurfaceScenePass extends Pass {
     this._type = type;
     this._applyDiffuseLayout();
 
+    /** Copies of subsurface materials the last render met and could not make subsurface: material → why. */
+    this.copiesNotFollowed = new Map();
     this._visibility = new Map();
     this._writes = new Map();
     this._categories = new Map();
@@ -143,10 +145,23 @@ export class SubsurfaceScenePass extends Pass {
     return this._categories.get(material);
   }
 
+  /**
+   * A material's subsurface binding; a copy of a subsurface material (its userData's mark) is bound
+   * as its source first (followCopy), or kept in `copiesNotFollowed` with the reason.
+   */
+  _subsurfaceOf(material) {
+    const binding = getSubsurface(material);
+    if (binding) return binding;
+    const copy = followCopy(material);
+    if (copy?.follows === false) this.copiesNotFollowed.set(material, copy.reason);
+    return getSubsurface(material);
+  }
+
   /** Sorts the scene's visible materials into the three categories; returns how many are transparent. */
   _classify() {
     const categories = this._categories;
     categories.clear();
+    this.copiesNotFollowed.clear();
     this.subsurfaceMeshes.length = 0;
     let transparent = 0;
     this.scene.traverseVisible((object) => {
@@ -155,7 +170,7 @@ export class SubsurfaceScenePass extends Pass {
       let hasSubsurface = false;
       for (const m of Array.isArray(material) ? material : [material]) {
         if (!m || !m.visible) continue;
-        const category = m.transparent ? CATEGORIES.TRANSPARENT : getSubsurface(m) ? CATEGORIES.SUBSURFACE : CATEGORIES.OPAQUE;
+        const category = m.transparent ? CATEGORIES.TRANSPARENT : this._subsurfaceOf(m) ? CATEGORIES.SUBSURFACE : CATEGORIES.OPAQUE;
         if (m.transparent && getSubsurface(m) && !warnedTransparent.has(m)) {
           warnedTransparent.add(m);
           console.warn(`SubsurfaceScattering: ${materialLabel(m, object)} is transparent, so it is blended over the scattered image without scattering (as three blends transparent objects). Set transparent = false to make it scatter; alphaTest or alphaHash keep its cut-outs.`);
@@ -177,6 +192,7 @@ export class SubsurfaceScenePass extends Pass {
    */
   _classifyOverridden() {
     this._categories.clear();
+    this.copiesNotFollowed.clear();
     this.subsurfaceMeshes.length = 0;
     this.transparentCount = 0;
     return 0;

@@ -2,8 +2,7 @@
 // Location 0 keeps three's pc_fragColor: the colour attachment (specular + emissive while split,
 // full colour otherwise). The locations and what each channel holds come from the multi-target's
 // contract (src/2-scene-split/subsurfaceTarget.js), as defines.
-layout( location = SSS_DIFFUSE_LOCATION ) out highp vec4 sssDiffuseOutput; // diffuse light (+ transmittance); a: 1 (the mask) or the depth (sssDiffuseCarriesDepth)
-layout( location = SSS_SURFACE_LOCATION ) out highp vec4 sssSurfaceOutput; // r: linear view depth, g: world units per profile mm, b: profile slot
+#include "2-scene-split/material/outputs.glsl"
 
 uniform bool sssSplit;       // true only while drawn into the multi-target's split call
 uniform float sssWidthWorld; // widthMm / worldUnitInMm: world units per profile millimetre
