@@ -333,9 +333,10 @@ export class SubsurfaceScattering extends PassWithSettings {
     const msaaSamples = this.multisampling === 'auto' ? (readBuffer?.samples ?? 0) : this.multisampling;
     if (this._scenePass.setSamples(msaaSamples)) this._blur.setMultisampled(msaaSamples > 0);
     this._stage('scene', () => this._scenePass.render(renderer));
-    // The materials as three compiled them and the copies the split met: what it could not make
-    // subsurface is drawn as three draws it, each named once.
+    // The materials as three compiled them, in the lights' passes and the split, and the copies the
+    // split met: what could not be drawn as the camera sees it is drawn as three draws it, named once.
     this._subsurfaceMaterials.checkMaterials(checks, this._scenePass.copiesNotFollowed);
+    for (const lightDepth of this._lightDepths) for (const [key, message] of lightDepth.shapeProblems) checks.problem(key, message);
     checks.end();
     // 3. Plan: the blur plans itself (src/3-blur/blurPlan.js) from the on-screen size of a profile
     //    millimetre: its taps for 'auto', no blur under half a pixel.

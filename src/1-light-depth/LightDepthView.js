@@ -20,11 +20,19 @@ export const FIT = Object.freeze({ MARGIN: 0.02, MIN_NEAR: 1e-3 });
 /**
  * The light view depths of `object`'s bounds' corners, [nearest, farthest], or null where it has
  * none; for a point light's six faces (`cube`) the depth on the face each corner falls in (the
- * largest of its distances along the axes).
+ * largest of its distances along the axes). A mesh that moves its vertices its own way (`moves`: a
+ * hook, a position node) is taken as far as its bounding sphere reaches, the bound three's frustum
+ * culling holds displaced vertices to: a leaf bent out of its plane stays in the map.
  */
-function depthRange(object, view, cube) {
+function depthRange(object, view, cube, moves) {
   const box = localBoundsOf(object);
   if (!box || box.isEmpty()) return null;
+  if (moves) {
+    box.getBoundingSphere(_sphere).applyMatrix4(object.matrixWorld);
+    _corner.copy(_sphere.center).applyMatrix4(view);
+    const depth = cube ? Math.max(Math.abs(_corner.x), Math.abs(_corner.y), Math.abs(_corner.z)) : -_corner.z;
+    return [depth - _sphere.radius, depth + _sphere.radius];
+  }
   let near = Infinity;
   let far = -Infinity;
   for (let k = 0; k < 8; k++) {
@@ -40,8 +48,8 @@ function depthRange(object, view, cube) {
 const nameOf = (object) => (object.name ? `mesh "${object.name}"` : `an unnamed ${object.type}`);
 
 /**
- * Whether a material's own shape matters from the light (a cut-out or clipping planes); other
- * materials share one depth material.
+ * Whether a material's own shape matters from the light (a cut-out or clipping planes; its own vertex
+ * stage: LightDepthView.hasOwnVertexStage); other materials share one depth material.
  * @param {import('three').Material} material
  */
 export function hasOwnShape(material) {
@@ -131,8 +139,10 @@ export class LightDepthView {
     this.size = size;
     /** Whether the map holds the scene as last rendered; no transmittance from one that does not. */
     this.valid = false;
-    /** @type {Map<import('three').Material, import('three').Material>} depth materials of cut-out or clipped materials */
+    /** @type {Map<import('three').Material, import('three').Material>} depth materials of cut-out, clipped or displaced materials */
     this._shaped = new Map();
+    /** What the depth pass could not draw as the camera sees it, each named once in `problems`: key → message. */
+    this.shapeProblems = new Map();
     this._onMaterialDispose = (event) => this._forget(event.target);
   }
 
@@ -142,7 +152,17 @@ export class LightDepthView {
    */
   depthMaterialFor(material) {
     if (!lightSees(material)) return null;
-    return hasOwnShape(material) ? this._shapedMaterial(material) : this.material;
+    return hasOwnShape(material) || this.hasOwnVertexStage(material) ? this._shapedMaterial(material) : this.material;
+  }
+
+  /**
+   * Whether `material` moves its vertices its own way (a user's shader hook, a position node), so
+   * that the light sees the shape the camera sees only through a depth material of its own: the
+   * subclass's answer (here: none), given the material.
+   * @returns {boolean}
+   */
+  hasOwnVertexStage() {
+    return false;
   }
 
   /** One per material, its settings read now. */
@@ -153,10 +173,10 @@ export class LightDepthView {
       this._shaped.set(material, shaped);
       material.addEventListener('dispose', this._onMaterialDispose);
     }
-    // alphaToCoverage counts as alphaTest 0.5, as in three's shadow maps.
+    // alphaToCoverage counts as alphaTest 0.5, as in three's shadow maps. The maps only cut out.
     const alphaTest = material.alphaToCoverage === true ? 0.5 : material.alphaTest;
-    const map = material.map ?? null;
-    const alphaMap = material.alphaMap ?? null;
+    const map = alphaTest > 0 ? material.map ?? null : null;
+    const alphaMap = alphaTest > 0 ? material.alphaMap ?? null : null;
     Object.assign(shaped, {
       map, alphaMap, alphaTest: map || alphaMap ? alphaTest : 0, clippingPlanes: material.clippingPlanes, clipIntersection: material.clipIntersection,
     });
@@ -166,6 +186,7 @@ export class LightDepthView {
 
   _forget(material) {
     material.removeEventListener('dispose', this._onMaterialDispose);
+    this.shapeProblems.delete(`lightShape:${material.uuid}`);
     this._shaped.get(material)?.dispose();
     this._shaped.delete(material);
   }
@@ -257,7 +278,8 @@ export class LightDepthView {
     const view = this.camera.matrixWorldInverse;
     const perspective = !this.light.isDirectionalLight;
     const cube = this.isCube;
-    const ranges = new Map(seen.map((object) => [object, depthRange(object, view, cube)]).filter(([, range]) => range));
+    const moves = (object) => (Array.isArray(object.material) ? object.material : [object.material]).some((m) => m && this.hasOwnVertexStage(m));
+    const ranges = new Map(seen.map((object) => [object, depthRange(object, view, cube, moves(object))]).filter(([, range]) => range));
     const far = targets.reduce((most, object) => Math.max(most, ranges.get(object)?.[1] ?? -Infinity), -Infinity); // no spread: scenes of 100k meshes
     if (!(perspective ? far > 0 : Number.isFinite(far))) { // nothing to hold: the map goes unread
       this.fitted = null;

@@ -26,7 +26,8 @@
 import { LessEqualDepth } from 'three';
 import parsGlsl from '../../shaders/2-scene-split/material/pars.glsl?raw';
 import outputsGlsl from '../../shaders/2-scene-split/material/outputs.glsl?raw';
-import unsplitGlsl from '../../shaders/2-scene-split/material/unsplit.vert.glsl?raw';
+import unsplitVertexGlsl from '../../shaders/2-scene-split/material/unsplit.vert.glsl?raw';
+import unsplitFragmentGlsl from '../../shaders/2-scene-split/material/unsplit.frag.glsl?raw';
 import hiddenGlsl from '../../shaders/2-scene-split/material/hidden.vert.glsl?raw';
 import transmittedLightGlsl from '../../shaders/2-scene-split/material/transmittedLight.glsl?raw';
 import splitGlsl from '../../shaders/2-scene-split/material/split.glsl?raw';
@@ -134,13 +135,14 @@ function splitShader(shader) {
 }
 
 /**
- * The material as three draws it, for the split's calls: the attachments declared (a draw into the
- * split call needs them), drawn in the first call and clipped in the split call
- * (shaders/2-scene-split/material/unsplit.vert.glsl), whatever its own hook made of the shader.
+ * The material as three draws it, for the split's calls, whatever its own hook made of the shader:
+ * its main() renamed and called from ours, which writes the attachments 0 (a draw into the split
+ * call needs them: shaders/2-scene-split/material/unsplit.frag.glsl) and draws the material in the
+ * first call only (unsplit.vert.glsl).
  */
 function unsplitShader(shader) {
-  shader.fragmentShader = `${outputsGlsl}\n${shader.fragmentShader}`;
-  shader.vertexShader = `#define main sssMaterialMain\n${shader.vertexShader}\n${unsplitGlsl}`;
+  shader.fragmentShader = `${outputsGlsl}\n#define main sssMaterialMain\n${shader.fragmentShader}\n${unsplitFragmentGlsl}`;
+  shader.vertexShader = `#define main sssMaterialMain\n${shader.vertexShader}\n${unsplitVertexGlsl}`;
 }
 
 /** A material as a message names it. */

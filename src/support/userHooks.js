@@ -89,14 +89,26 @@ export function composeHooks(material, ours) {
   };
 }
 
+/** The user's hooks on `material`: those held under ours, else the material's own. */
+const userHooksOf = (material) => composed.get(material)
+  ?? { onBeforeCompile: asUser('onBeforeCompile', material.onBeforeCompile), customProgramCacheKey: asUser('customProgramCacheKey', material.customProgramCacheKey) };
+
 /**
- * The user's own shader hook on `material` and its program key, whether or not ours are composed
- * with it, or null where it has none (three's default onBeforeCompile).
+ * The user's own onBeforeCompile on `material`, whether or not ours are composed with it, or null
+ * where it has none (three's default).
  * @param {import('three').Material} material
- * @returns {{ onBeforeCompile: Function, key: string } | null}
+ * @returns {Function|null}
  */
 export function userShaderHook(material) {
-  const user = composed.get(material) ?? { onBeforeCompile: asUser('onBeforeCompile', material.onBeforeCompile), customProgramCacheKey: asUser('customProgramCacheKey', material.customProgramCacheKey) };
-  if (!user.onBeforeCompile) return null;
-  return { onBeforeCompile: user.onBeforeCompile, key: userProgramKey(material, user) };
+  return userHooksOf(material).onBeforeCompile ?? null;
+}
+
+/**
+ * The program key of the user's own hooks on `material` (their customProgramCacheKey, else their
+ * onBeforeCompile's source), without ours.
+ * @param {import('three').Material} material
+ * @returns {string}
+ */
+export function userProgramKeyOf(material) {
+  return userProgramKey(material, userHooksOf(material));
 }

@@ -12,6 +12,7 @@ import { ATTACHMENTS } from '/src/2-scene-split/subsurfaceTarget.js';
 import { readRenderTargetFloats } from '/dev/readback.js';
 import { mulberry32 as random } from '/demo/seededRandom.js';
 import { dataTexture, flatScene } from './flatScene.js';
+import { leafScenes } from './leaves.js';
 
 /** A renderer drawing into an offscreen canvas of `width` × `height` device pixels. */
 function createRenderer(width, height, parameters = {}) {
@@ -394,4 +395,5 @@ window.lab = {
   THREE, SSS, EffectComposer, RenderPass, ShaderPass, OutputPass, createRenderer, createComposer, read, dataTexture, run, buildScene, flat, disposeFlatRig, flatScene, DEFAULTS,
   lightDepthCards, cardDepths, cardCosines,
 };
+Object.assign(window.lab, leafScenes(window.lab));
 window.testReady = true;
