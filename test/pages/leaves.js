@@ -10,6 +10,7 @@
 //   uncomposedLeaf: one leaf whose hook inlines a chunk the split goes in at, beside three's own draw
 import * as THREE from 'three';
 import { RenderPass } from 'three/addons/postprocessing/RenderPass.js';
+import { ATTACHMENTS } from '/src/2-scene-split/subsurfaceTarget.js';
 
 /** The leaves' sways: GLSL for the hooks (in their source: two hooks, two sources) and the same on the CPU. */
 const SWAYS = {
@@ -55,7 +56,7 @@ const white = (options = {}) => new THREE.MeshStandardMaterial({ color: 0xffffff
 
 /** The lab's helpers (lab.js) bound to these scenes. */
 export function leafScenes({ SSS, createRenderer, createComposer, read }) {
-  const diffuseOf = (renderer, sss) => read(renderer, sss._scenePass.renderTarget, 1);
+  const diffuseOf = (renderer, sss) => read(renderer, sss._scenePass.renderTarget, ATTACHMENTS.DIFFUSE);
 
   /**
    * Two swaying leaves through the pipeline, hooked (`hooks`: 'before' or 'after' makeSubsurface,
