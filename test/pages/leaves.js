@@ -56,6 +56,10 @@ const white = (options = {}) => new THREE.MeshStandardMaterial({ color: 0xffffff
 
 /** The lab's helpers (lab.js) bound to these scenes. */
 export function leafScenes({ SSS, createRenderer, createComposer, read }) {
+  const release = (...parts) => {
+    for (const part of parts) part.dispose();
+    parts.at(-1).forceContextLoss(); // the renderer, last
+  };
   const diffuseOf = (renderer, sss) => read(renderer, sss._scenePass.renderTarget, ATTACHMENTS.DIFFUSE);
 
   /**
@@ -108,10 +112,7 @@ export function leafScenes({ SSS, createRenderer, createComposer, read }) {
     result.truth = await diffuseOf(renderer, sss);
     result.glError ||= renderer.getContext().getError();
     result.problems = [...sss.problems];
-    sss.dispose();
-    composer.dispose();
-    renderer.dispose();
-    renderer.forceContextLoss();
+    release(sss, composer, renderer);
     return result;
   }
 
@@ -146,10 +147,7 @@ export function leafScenes({ SSS, createRenderer, createComposer, read }) {
     sss.removeSubsurface(original);
     composer.render();
     Object.assign(result, { removed: await diffuseOf(renderer, sss), materialsAfter: sss.materials.size, glError: renderer.getContext().getError() });
-    sss.dispose();
-    composer.dispose();
-    renderer.dispose();
-    renderer.forceContextLoss();
+    release(sss, composer, renderer);
     return result;
   }
 
