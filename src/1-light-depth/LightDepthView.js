@@ -158,10 +158,11 @@ export class LightDepthView {
   /**
    * Whether `material` moves its vertices its own way (a user's shader hook, a position node), so
    * that the light sees the shape the camera sees only through a depth material of its own: the
-   * subclass's answer (here: none), given the material.
+   * subclass's answer (here: none).
+   * @param {import('three').Material} material
    * @returns {boolean}
    */
-  hasOwnVertexStage() {
+  hasOwnVertexStage(material) {
     return false;
   }
 
