@@ -115,23 +115,19 @@ function inject(source, needle, replacement) {
   return source.replace(needle, replacement);
 }
 
-/** Where our GLSL goes in: the shader stage and the point of three's shader. */
-const INJECTION_POINTS = Object.freeze([
-  ['fragmentShader', 'void main() {'], ['fragmentShader', '#include <lights_fragment_end>'],
-  ['fragmentShader', 'vec3 outgoingLight = totalDiffuse + totalSpecular + totalEmissiveRadiance;'],
-  ['fragmentShader', '#include <opaque_fragment>'], ['fragmentShader', '#include <dithering_fragment>'], ['vertexShader', 'void main() {'],
+/** Where our GLSL goes in: the shader stage, the point of three's shader, and what takes its place. */
+const INJECTIONS = Object.freeze([
+  ['fragmentShader', 'void main() {', () => `${declarations}\nvoid main() {`],
+  ['fragmentShader', '#include <lights_fragment_end>', () => `#include <lights_fragment_end>\n${transmittedLightGlsl}`],
+  ['fragmentShader', 'vec3 outgoingLight = totalDiffuse + totalSpecular + totalEmissiveRadiance;', () => splitGlsl],
+  ['fragmentShader', '#include <opaque_fragment>', () => `${clearcoatGlsl}\n#include <opaque_fragment>`],
+  ['fragmentShader', '#include <dithering_fragment>', () => `#include <dithering_fragment>\n${outputGlsl}`],
+  ['vertexShader', 'void main() {', () => `uniform bool sssHidden; // true in the scene split's first call\nvoid main() {\n${hiddenGlsl}`],
 ]);
 
-/** The split, put into three's MeshStandard/MeshPhysical shader at INJECTION_POINTS. */
+/** The split, put into three's MeshStandard/MeshPhysical shader at INJECTIONS. */
 function splitShader(shader) {
-  let fs = shader.fragmentShader;
-  fs = inject(fs, 'void main() {', `${declarations}\nvoid main() {`);
-  fs = inject(fs, '#include <lights_fragment_end>', `#include <lights_fragment_end>\n${transmittedLightGlsl}`);
-  fs = inject(fs, 'vec3 outgoingLight = totalDiffuse + totalSpecular + totalEmissiveRadiance;', splitGlsl);
-  fs = inject(fs, '#include <opaque_fragment>', `${clearcoatGlsl}\n#include <opaque_fragment>`);
-  fs = inject(fs, '#include <dithering_fragment>', `#include <dithering_fragment>\n${outputGlsl}`);
-  shader.fragmentShader = fs;
-  shader.vertexShader = inject(shader.vertexShader, 'void main() {', `uniform bool sssHidden; // true in the scene split's first call\nvoid main() {\n${hiddenGlsl}`);
+  for (const [stage, needle, replacement] of INJECTIONS) shader[stage] = inject(shader[stage], needle, replacement());
 }
 
 /**
@@ -180,7 +176,7 @@ function patch(material) {
       shader.defines = { ...shader.defines, ...defines, SSS_LIGHT_SLOTS: state.lightSlotsCompiled };
       // A point three's shader has and the user's hook took out: drawn as three draws it (a point
       // three's shader lacks is an unsupported three: inject throws).
-      const lost = INJECTION_POINTS.find(([stage, needle]) => before[stage].includes(needle) && !shader[stage].includes(needle));
+      const lost = INJECTIONS.find(([stage, needle]) => before[stage].includes(needle) && !shader[stage].includes(needle));
       state.uncomposed = lost
         ? `${labelOf(material)}: its onBeforeCompile takes "${lost[1]}" out of three's ${lost[0] === 'vertexShader' ? 'vertex' : 'fragment'} shader, where the subsurface split goes in, so it is drawn as three draws it, without scattering or transmittance`
         : null;
