@@ -185,5 +185,27 @@ export function leafScenes({ SSS, createRenderer, createComposer, read }) {
     return result;
   }
 
-  return { swayingLeaves, leafCopies, uncomposedLeaf, leafScene, leaf, white };
+  /**
+   * A leaf whose hook reads a uniform of three's MeshStandardMaterial shader (its `diffuse`), which
+   * the light's depth shader has not: the problems and the GL error of two frames.
+   */
+  async function throwingHookLeaf({ width = 96, height = 54 } = {}) {
+    const renderer = createRenderer(width, height);
+    const composer = createComposer(renderer, { type: THREE.FloatType });
+    const material = white({ name: 'Tinted' });
+    material.onBeforeCompile = (shader) => {
+      shader.uniforms.diffuse.value.multiplyScalar(0.9);
+      shader.vertexShader = shader.vertexShader.replace('#include <begin_vertex>', '#include <begin_vertex>\n\ttransformed.z += 0.1;');
+    };
+    const sss = new SSS.SubsurfaceScattering({ ...leafScene(leaf(material, 0, 0)), worldUnitInMm: 10, type: THREE.FloatType });
+    composer.addPass(sss);
+    sss.makeSubsurface(material);
+    composer.render();
+    composer.render();
+    const result = { problems: [...sss.problems], glError: renderer.getContext().getError(), diffuse: await diffuseOf(renderer, sss) };
+    release(sss, composer, renderer);
+    return result;
+  }
+
+  return { swayingLeaves, leafCopies, uncomposedLeaf, throwingHookLeaf, leafScene, leaf, white };
 }

@@ -94,4 +94,16 @@ describe("a hook that cannot be composed", () => {
     expect(r.problems).toEqual([message]);
     expect(warnings).toEqual([`SubsurfaceScattering: ${message}`]);
   });
+
+  it("a hook that throws on the light's depth shader (it reads a uniform of three's shader): the mesh is drawn, named once, seen by the light unmoved", async () => {
+    warnings.length = 0;
+    const r = await evaluateFloats(page, () => window.lab.throwingHookLeaf());
+    expect(r.glError).toBe(0);
+    const message = 'material "Tinted": its onBeforeCompile throws on the light\'s depth shader (Cannot read properties of undefined (reading \'value\')), so the light sees its mesh unmoved by it';
+    expect(r.problems).toEqual([message]);
+    expect(warnings).toEqual([`SubsurfaceScattering: ${message}`]);
+    let lit = 0;
+    for (let i = 0; i < r.diffuse.length; i += 4) if (r.diffuse[i + 3] !== 0) lit++;
+    expect(lit).toBeGreaterThan(400); // drawn by the camera, its own hook and all
+  });
 });
