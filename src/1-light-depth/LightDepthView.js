@@ -48,8 +48,8 @@ function depthRange(object, view, cube, moves) {
 const nameOf = (object) => (object.name ? `mesh "${object.name}"` : `an unnamed ${object.type}`);
 
 /**
- * Whether a material's own shape matters from the light (a cut-out or clipping planes; its own vertex
- * stage: LightDepthView.hasOwnVertexStage); other materials share one depth material.
+ * Whether a material's own shape matters from the light (a cut-out or clipping planes; besides, a
+ * vertex stage of its own: LightDepthView.hasOwnVertexStage); other materials share one depth material.
  * @param {import('three').Material} material
  */
 export function hasOwnShape(material) {
