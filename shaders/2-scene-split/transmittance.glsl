@@ -25,16 +25,25 @@ float sssLitSideFade( const in float thicknessWorld ) {
 	return sssShrinkWorld > 0.0 ? smoothstep( 0.0, sssShrinkWorld, thicknessWorld ) : 1.0;
 }
 
-// The point's own surface as the light sees it, for the sheet's test below: its tangent plane, from
-// the point and its vertex normal (the side the camera sees) in a light view space (the light's
-// axis −z, depth −z) and that view's projection, as the depth the map would record along the ray
-// of a texel centre at `ndc`: ( plane.num · (1, ndc) ) / ( plane.den · (1, ndc) ) (sssPlaneDepth).
-// `facing`: the cosine between that normal and the direction to the light; positive on the side the
-// light reaches (lit), negative on the far side.
+// The normal of the triangle drawn at this fragment, turned to the camera, from the screen
+// derivatives of its view-space position: the plane the light's map rasterised too, whatever the
+// vertex normals say (a hook that bends a leaf moves its vertices, not its normals). Call it in
+// uniform control flow (derivatives are undefined elsewhere).
+vec3 sssFaceNormal( const in vec3 viewPosition ) {
+	vec3 n = normalize( cross( dFdx( viewPosition ), dFdy( viewPosition ) ) );
+	return dot( n, viewPosition ) > 0.0 ? - n : n;
+}
+
+// The point's own surface as the light sees it, for the sheet's test below: its triangle's plane,
+// from the point and the face normal (sssFaceNormal) in a light view space (the light's axis −z,
+// depth −z) and that view's projection, as the depth the map records along the ray of a texel
+// centre at `ndc`: ( plane.num · (1, ndc) ) / ( plane.den · (1, ndc) ) (sssPlaneDepth). `facing`:
+// the cosine between that normal and the direction to the light; positive on the side the light
+// reaches (lit), negative on the far side.
 struct SssPlane { vec3 num; vec3 den; float facing; };
 
-SssPlane sssTangentPlane( const in vec3 point, const in vec3 vertexNormal, const in mat4 projection ) {
-	vec3 n = normalize( vertexNormal );
+SssPlane sssTangentPlane( const in vec3 point, const in vec3 faceNormal, const in mat4 projection ) {
+	vec3 n = normalize( faceNormal );
 	SssPlane plane;
 	vec2 scale = vec2( projection[ 0 ][ 0 ], projection[ 1 ][ 1 ] );
 	if ( projection[ 2 ][ 3 ] > - 0.5 ) { // orthographic (three's perspective matrices hold −1 there): rays along −z
@@ -61,8 +70,8 @@ float sssPlaneDepth( const in SssPlane plane, const in vec2 ndc ) {
 // beyond its edge is its edge's), for a point at light depth `depth` on the surface `plane`
 // (sssTangentPlane, in the same light view), `texelWorld` a texel's width at that depth.
 // A texel on the point's far side that records the point's own surface, within SSS_SHEET_TEXELS of a
-// texel's width of its tangent plane (the map holds each texel centre's depth, exactly for a plane;
-// the tolerance is for a curved one), is a sheet: a leaf, a card, paper, of no thickness, through
+// texel's width of its triangle's plane (the map holds each texel centre's depth: exact on the same
+// triangle; the tolerance is for a curved sheet's next triangle, a few degrees apart), is a sheet: a leaf, a card, paper, of no thickness, through
 // which T(0) = 1 of what entered comes, at most the sheet's own entry cosine (so that what lies
 // behind a sheet's edge at a grazing light adds no halo). The fade over the first shrink is the lit
 // side's alone.
@@ -103,7 +112,7 @@ vec3 sssTransmittanceAround( sampler2D lightDepthMap, const in vec2 texel, const
 // the thickness is measured from the point itself, so the shrink does not shorten it. A sheet
 // (sssTransmittanceAround) is found wherever the map is read: the shrink does not change its light.
 // The map and the light's matrices are arguments: the material reads one map per light.
-vec3 sssTransmittanceFrom( sampler2D lightDepthMap, const in mat4 viewToLightView, const in mat4 lightProjection, const in vec3 viewPosition, const in vec3 viewVertexNormal ) {
+vec3 sssTransmittanceOfFace( sampler2D lightDepthMap, const in mat4 viewToLightView, const in mat4 lightProjection, const in vec3 viewPosition, const in vec3 viewVertexNormal, const in vec3 viewFaceNormal ) {
 	vec3 shrunk = viewPosition - sssShrinkWorld * viewVertexNormal;
 	vec4 lightView = viewToLightView * vec4( shrunk, 1.0 );
 	vec4 clip = lightProjection * lightView;
@@ -111,18 +120,23 @@ vec3 sssTransmittanceFrom( sampler2D lightDepthMap, const in mat4 viewToLightVie
 	if ( clip.w <= 0.0 || any( greaterThan( abs( ndc.xy ), vec2( 1.0 ) ) ) ) return vec3( 0.0 );
 	vec3 point = ( viewToLightView * vec4( viewPosition, 1.0 ) ).xyz;
 	float depth = - point.z; // the point's own light depth
-	SssPlane plane = sssTangentPlane( point, mat3( viewToLightView ) * viewVertexNormal, lightProjection );
+	SssPlane plane = sssTangentPlane( point, mat3( viewToLightView ) * viewFaceNormal, lightProjection );
 	ivec2 size = textureSize( lightDepthMap, 0 );
 	bool orthographic = lightProjection[ 2 ][ 3 ] > - 0.5;
 	float texelWorld = 2.0 * ( orthographic ? 1.0 : depth ) / ( lightProjection[ 0 ][ 0 ] * float( size.x ) );
 	return sssTransmittanceAround( lightDepthMap, ( ndc.xy * 0.5 + 0.5 ) * vec2( size ) - 0.5, ivec2( 0 ), size, depth, plane, texelWorld );
 }
 
+// The same with the face normal from the position's derivatives: call it in uniform control flow.
+vec3 sssTransmittanceFrom( sampler2D lightDepthMap, const in mat4 viewToLightView, const in mat4 lightProjection, const in vec3 viewPosition, const in vec3 viewVertexNormal ) {
+	return sssTransmittanceOfFace( lightDepthMap, viewToLightView, lightProjection, viewPosition, viewVertexNormal, sssFaceNormal( viewPosition ) );
+}
+
 // A point light's map (LightDepthView's POINT_FACES): six faces side by side, three across and two
 // up, face k = 2 · axis (x, y, z) + (1 where it looks along −axis), its up +y (+z for the ±y
 // faces). `viewToLight` takes view space to the light's place with the world's axes; the face is
 // the one the shrunk point's largest axis falls in, its depth the distance along that axis.
-vec3 sssPointTransmittanceFrom( sampler2D lightDepthMap, const in mat4 viewToLight, const in vec3 viewPosition, const in vec3 viewVertexNormal ) {
+vec3 sssPointTransmittanceFrom( sampler2D lightDepthMap, const in mat4 viewToLight, const in vec3 viewPosition, const in vec3 viewVertexNormal, const in vec3 viewFaceNormal ) {
 	vec3 shrunk = ( viewToLight * vec4( viewPosition - sssShrinkWorld * viewVertexNormal, 1.0 ) ).xyz;
 	vec3 a = abs( shrunk );
 	int axis = a.x >= a.y && a.x >= a.z ? 0 : ( a.y >= a.z ? 1 : 2 );
@@ -135,7 +149,7 @@ vec3 sssPointTransmittanceFrom( sampler2D lightDepthMap, const in mat4 viewToLig
 	mat3 toFace = transpose( mat3( x, y, - forward ) ); // the face's view space: x, y, and −forward as z
 	vec3 point = toFace * ( viewToLight * vec4( viewPosition, 1.0 ) ).xyz;
 	float depth = - point.z; // the point's own, on that face
-	SssPlane plane = sssTangentPlane( point, toFace * mat3( viewToLight ) * viewVertexNormal, mat4( 1.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, - 1.0, - 1.0, 0.0, 0.0, - 1.0, 0.0 ) ); // a 90° face's projection
+	SssPlane plane = sssTangentPlane( point, toFace * mat3( viewToLight ) * viewFaceNormal, mat4( 1.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, - 1.0, - 1.0, 0.0, 0.0, - 1.0, 0.0 ) ); // a 90° face's projection
 	int face = 2 * axis + ( shrunk[ axis ] < 0.0 ? 1 : 0 );
 	ivec2 size = textureSize( lightDepthMap, 0 ) / ivec2( 3, 2 );
 	float texelWorld = 2.0 * depth / float( size.x );
@@ -144,7 +158,7 @@ vec3 sssPointTransmittanceFrom( sampler2D lightDepthMap, const in mat4 viewToLig
 
 // The thickness the light crosses to this point (world units, the map's nearest texel), for the
 // debug view: 0 on a sheet's far side; negative where nothing was recorded or the point is not
-// behind the recorded surface.
+// behind the recorded surface. In uniform control flow (sssFaceNormal).
 float sssThicknessWorldFrom( sampler2D lightDepthMap, const in mat4 viewToLightView, const in mat4 lightProjection, const in vec3 viewPosition, const in vec3 viewVertexNormal ) {
 	vec4 clip = lightProjection * viewToLightView * vec4( viewPosition - sssShrinkWorld * viewVertexNormal, 1.0 );
 	vec3 ndc = clip.xyz / clip.w;
@@ -153,7 +167,7 @@ float sssThicknessWorldFrom( sampler2D lightDepthMap, const in mat4 viewToLightV
 	ivec2 at = clamp( ivec2( floor( ( ndc.xy * 0.5 + 0.5 ) * vec2( size ) ) ), ivec2( 0 ), size - 1 );
 	float nearest = texelFetch( lightDepthMap, at, 0 ).r;
 	vec3 point = ( viewToLightView * vec4( viewPosition, 1.0 ) ).xyz;
-	SssPlane plane = sssTangentPlane( point, mat3( viewToLightView ) * viewVertexNormal, lightProjection );
+	SssPlane plane = sssTangentPlane( point, mat3( viewToLightView ) * sssFaceNormal( viewPosition ), lightProjection );
 	bool orthographic = lightProjection[ 2 ][ 3 ] > - 0.5;
 	float texelWorld = 2.0 * ( orthographic ? 1.0 : - point.z ) / ( lightProjection[ 0 ][ 0 ] * float( size.x ) );
 	if ( nearest <= 0.0 ) return - 1.0;

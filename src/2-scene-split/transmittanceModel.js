@@ -29,10 +29,11 @@ export const TRANSMITTED_LIGHT_DEFINES = Object.freeze(Object.fromEntries(
 /**
  * A sheet, a surface of no thickness (transmittance.glsl's sssTransmittanceAround): a texel on the
  * far side of a point records the point's own surface where its depth lies within TEXELS of a
- * texel's width of the point's tangent plane (exact for a plane: the map holds each texel centre's
- * depth; the tolerance is for a curved sheet, whose surface leaves the plane over the texels read).
+ * texel's width of the plane of the point's triangle (exact on that triangle: the map holds each
+ * texel centre's depth; the tolerance is for a curved sheet's next triangle, over the texel and a
+ * half read: faces up to about 2° apart). A closed part thinner than that reads as a sheet.
  */
-export const SHEET = Object.freeze({ TEXELS: 0.5 });
+export const SHEET = Object.freeze({ TEXELS: 0.05 });
 
 /** SHEET as GLSL define lines (SSS_SHEET_TEXELS, ...), for the chunk that reads them. */
 export const SHEET_DEFINES = Object.entries(SHEET).map(([name, value]) => `#define SSS_SHEET_${name} ${glslFloat(value)}`).join('\n');

@@ -417,12 +417,12 @@ describe('transmittance oracle', () => {
       const depth = -vec3.transformMat4(new Float64Array(3), point, view)[2];
       const far = (mapDepth) => thicknessFromLightDepth({ lightViewMatrix: view, pointWorld: point, normalWorld: [0, 0, 1], shrinkWorld, toLightWorld: toLight, texelWorld, mapDepth });
       expect(far(sheetDepth), `${degrees}°`).toBe(0);
-      // A curved sheet's texel up to half a texel's width off the plane is still the sheet; past it,
-      // behind the point: nothing; in front: material, thickness measured from the point.
-      expect(far((p) => sheetDepth(p) + 0.49 * texelWorld)).toBe(0);
-      expect(far((p) => sheetDepth(p) + 0.51 * texelWorld)).toBe(Infinity);
-      const inFront = far((p) => sheetDepth(p) - 0.51 * texelWorld);
-      const stored = sheetDepth(vec3.transformMat4(new Float64Array(3), vec3.scaleAndAdd(new Float64Array(3), point, [0, 0, 1], -shrinkWorld), view)) - 0.51 * texelWorld;
+      // A curved sheet's next triangle up to a twentieth of a texel's width off the plane is still the
+      // sheet; past it, behind the point: nothing; in front: material, thickness measured from the point.
+      expect(far((p) => sheetDepth(p) + 0.049 * texelWorld)).toBe(0);
+      expect(far((p) => sheetDepth(p) + 0.051 * texelWorld)).toBe(Infinity);
+      const inFront = far((p) => sheetDepth(p) - 0.051 * texelWorld);
+      const stored = sheetDepth(vec3.transformMat4(new Float64Array(3), vec3.scaleAndAdd(new Float64Array(3), point, [0, 0, 1], -shrinkWorld), view)) - 0.051 * texelWorld;
       if (depth - stored > 0) expect(inFront).toBeCloseTo(depth - stored, 12);
       else expect(inFront).toBe(Infinity);
       // Seen from the lit side the shrink reads the sheet shrink · (1/cos a − cos a) in front: a lit surface.

@@ -55,8 +55,9 @@ function tangentPlaneDepth(pointView, normalView, readView, orthographic) {
  * and gives Infinity, as does a projection outside the map. A point not behind the stored surface
  * (thickness ≤ 0) is that surface, lit directly, and gives Infinity (nothing comes through). On the
  * far side of its surface (with `toLightWorld`: the normal facing away from the light) a stored
- * depth within SHEET.TEXELS of a texel's width (`texelWorld`) of the point's own tangent plane along
- * the same ray is the point's own surface, a sheet, and gives 0.
+ * depth within SHEET.TEXELS of a texel's width (`texelWorld`) of the point's own plane along the
+ * same ray (the plane of its triangle: `normalWorld` here, a flat surface) is the point's own
+ * surface, a sheet, and gives 0.
  * @param {object} args
  * @param {ArrayLike<number>} args.lightViewMatrix mat4, world → light view (column-major, gl-matrix/three.js)
  * @param {ArrayLike<number>} [args.lightProjectionMatrix] mat4, light view → clip

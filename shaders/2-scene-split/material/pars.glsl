@@ -44,7 +44,7 @@ uniform bool sssLightCubes[ SSS_MAX_LIGHTS ];           // the map is a point li
 // Light from the camera's side reaches what the camera sees through its lit, visible
 // neighbourhood, which the blur already spreads: counted again it made a bright band along a
 // front light's terminator. The map is read only where some light comes through.
-vec3 sssTransmittedFrom( const in int i, sampler2D lightDepthMap, const in vec3 position, const in vec3 normal ) {
+vec3 sssTransmittedFrom( const in int i, sampler2D lightDepthMap, const in vec3 position, const in vec3 normal, const in vec3 face ) {
 	if ( ! sssLightTransmits[ i ] ) return vec3( 0.0 );
 	vec3 toLight = sssLightDirectionsView[ i ];
 	float attenuation = 1.0;
@@ -59,7 +59,7 @@ vec3 sssTransmittedFrom( const in int i, sampler2D lightDepthMap, const in vec3 
 	float weight = attenuation * wrap;
 	if ( weight <= 0.0 ) return vec3( 0.0 );
 	vec3 through = sssLightCubes[ i ]
-		? sssPointTransmittanceFrom( lightDepthMap, sssViewToLightViews[ i ], position, normal )
-		: sssTransmittanceFrom( lightDepthMap, sssViewToLightViews[ i ], sssLightProjections[ i ], position, normal );
+		? sssPointTransmittanceFrom( lightDepthMap, sssViewToLightViews[ i ], position, normal, face )
+		: sssTransmittanceOfFace( lightDepthMap, sssViewToLightViews[ i ], sssLightProjections[ i ], position, normal, face );
 	return sssLightColors[ i ] * weight * through;
 }

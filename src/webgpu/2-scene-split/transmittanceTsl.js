@@ -1,13 +1,13 @@
 // Transmittance for the WebGPU node's materials, in TSL: a port of
 // shaders/2-scene-split/transmittance.glsl (sssProfileTransmittance, sssLitSideFade,
-// sssTangentPlane, sssPlaneDepth, sssTransmittance, sssThicknessWorld) and of shaders/2-scene-split/material/transmittedLight.glsl, function by
+// sssFaceNormal, sssTangentPlane, sssPlaneDepth, sssTransmittance, sssThicknessWorld) and of shaders/2-scene-split/material/transmittedLight.glsl, function by
 // function under the same names, so a change to one GLSL function has one place to follow here.
 // The uniforms have the WebGL chunk's names and are written by the same functions
 // (src/2-scene-split/transmittanceModel.js's writeTransmittedLight: a TSL uniform holds `.value`
 // as three's uniform objects do); the shading's constants come from its TRANSMITTED_LIGHT.
 // Lengths in world units unless named Mm; positions and normals in the camera's view space.
 import {
-  BRDF_Lambert, Fn, If, abs, clamp, dot, float, floor, getDistanceAttenuation, ivec2, saturate, select, smoothstep,
+  BRDF_Lambert, Fn, If, abs, clamp, dFdx, dFdy, dot, float, floor, getDistanceAttenuation, ivec2, saturate, select, smoothstep,
   texture, textureLoad, textureSize, uniform, vec2, vec3, vec4,
 } from 'three/tsl';
 import {
@@ -48,13 +48,13 @@ function transmittanceFunctions(u) {
   /** sssLitSideFade: the lit side's fade-in over the first shrink. */
   const litSideFade = (thicknessWorld) => select(u.sssShrinkWorld.greaterThan(0), smoothstep(0, u.sssShrinkWorld, thicknessWorld), float(1));
   /**
-   * sssTangentPlane: the point's own surface as the map would record it, in the light's view:
-   * { depthAt(ndc), facing, depth, texelWorld } (facing < 0: the far side; texelWorld: a map
-   * texel's width at the point's light depth `depth`).
+   * sssTangentPlane: the point's own triangle as the map records it, in the light's view, from the
+   * face normal (sssFaceNormal): { depthAt(ndc), facing, depth, texelWorld } (facing < 0: the far
+   * side; texelWorld: a map texel's width at the point's light depth `depth`).
    */
-  const tangentPlane = (viewPosition, viewVertexNormal, size) => {
+  const tangentPlane = (viewPosition, viewFaceNormal, size) => {
     const point = u.sssViewToLightView.mul(vec4(viewPosition, 1)).xyz.toVar();
-    const n = u.sssViewToLightView.mul(vec4(viewVertexNormal, 0)).xyz.normalize().toVar();
+    const n = u.sssViewToLightView.mul(vec4(viewFaceNormal, 0)).xyz.normalize().toVar();
     const projection = u.sssLightProjection;
     const orthographic = projection.element(2).w.greaterThan(-0.5); // three's perspective matrices hold −1 there
     const scale = vec2(projection.element(0).x, projection.element(1).y).toVar();
@@ -87,10 +87,10 @@ function transmittanceFunctions(u) {
    * the four map texels around it with their bilinear weights (sssTransmittanceAround: a texel on
    * the far side recording the point's own tangent plane is a sheet, of no thickness).
    */
-  const transmittance = (viewPosition, viewVertexNormal) => {
+  const transmittance = (viewPosition, viewVertexNormal, viewFaceNormal) => {
     const size = ivec2(textureSize(u.sssLightDepthMap, 0)).toVar();
     const { inside, texel } = mapPosition(viewPosition, viewVertexNormal, size);
-    const plane = tangentPlane(viewPosition, viewVertexNormal, size);
+    const plane = tangentPlane(viewPosition, viewFaceNormal, size);
     const farSide = plane.facing.lessThan(0);
     const tolerance = plane.texelWorld.mul(SHEET.TEXELS).toVar();
     const corner = texel.sub(0.5).toVar();
@@ -111,10 +111,10 @@ function transmittanceFunctions(u) {
     return select(inside, light, vec3(0));
   };
   /** sssThicknessWorld: the thickness at the map's nearest texel, 0 on a sheet, −1 where nothing comes through (the debug view). */
-  const thicknessWorld = (viewPosition, viewVertexNormal) => {
+  const thicknessWorld = (viewPosition, viewVertexNormal, viewFaceNormal) => {
     const size = ivec2(textureSize(u.sssLightDepthMap, 0)).toVar();
     const { inside, texel } = mapPosition(viewPosition, viewVertexNormal, size);
-    const plane = tangentPlane(viewPosition, viewVertexNormal, size);
+    const plane = tangentPlane(viewPosition, viewFaceNormal, size);
     const at = clamp(ivec2(floor(texel)), ivec2(0), size.sub(1)).toVar();
     const nearest = textureLoad(u.sssLightDepthMap, at).r.toVar();
     const thickness = plane.depth.sub(nearest).toVar();
@@ -137,6 +137,10 @@ function transmittanceFunctions(u) {
 export function transmittedLight(u, { position, normal, albedo }) {
   const { transmittance, thicknessWorld } = transmittanceFunctions(u);
   const result = Fn(() => {
+    // sssFaceNormal: the triangle's normal turned to the camera, from the position's derivatives,
+    // here in uniform control flow (WGSL refuses derivatives under a branch on a varying value).
+    const faceDerivative = dFdx(position).cross(dFdy(position)).normalize().toVar();
+    const face = select(dot(faceDerivative, position).greaterThan(0), faceDerivative.negate(), faceDerivative).toVar();
     const transmitted = vec3(0).toVar();
     const thicknessMm = float(0).toVar();
     If(u.sssTransmits.greaterThan(0.5), () => {
@@ -155,12 +159,12 @@ export function transmittedLight(u, { position, normal, albedo }) {
       const weight = attenuation.mul(wrap).toVar();
       // Most of a front-lit surface gets none: the map and the profile are read only where some light comes through.
       If(weight.greaterThan(0), () => {
-        const light = u.sssLightColor.mul(weight).mul(transmittance(position, normal)).mul(BRDF_Lambert({ diffuseColor: albedo })).toVar();
+        const light = u.sssLightColor.mul(weight).mul(transmittance(position, normal, face)).mul(BRDF_Lambert({ diffuseColor: albedo })).toVar();
         // A degenerate light set-up must not turn the whole material NaN.
         transmitted.assign(select(finite3(light), light, vec3(0)));
       });
       If(u.sssDebugOutput.equal(MATERIAL_OUTPUTS.indexOf('thickness')), () => {
-        thicknessMm.assign(thicknessWorld(position, normal).mul(u.sssThicknessToProfileMm));
+        thicknessMm.assign(thicknessWorld(position, normal, face).mul(u.sssThicknessToProfileMm));
       });
     });
     return vec4(transmitted, thicknessMm);
