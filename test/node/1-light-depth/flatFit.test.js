@@ -5,6 +5,7 @@ import { describe, it, expect } from 'vitest';
 import * as THREE from 'three';
 import { LightDepthTarget } from '../../../src/1-light-depth/LightDepthTarget.js';
 import { FIT } from '../../../src/1-light-depth/LightDepthView.js';
+import { FrameMeshes } from '../../../src/frameMeshes.js';
 
 /** A 0.2 × 0.1 leaf at the origin, facing +z, and `light` at `distance` along +z aimed at it. */
 function leafFacing(light, distance) {
@@ -20,6 +21,16 @@ function leafFacing(light, distance) {
 
 const transmits = (material) => material.isMeshStandardMaterial === true;
 
+/** What a frame covers (src/frameMeshes.js) for a camera on the leaf's far side, looking at it. */
+function frameOf(scene) {
+  scene.updateMatrixWorld();
+  const camera = new THREE.PerspectiveCamera(40, 1, 0.1, 10);
+  camera.position.set(0, 0, -1);
+  camera.lookAt(0, 0, 0);
+  camera.updateMatrixWorld();
+  return new FrameMeshes().update(scene, camera, transmits);
+}
+
 describe("a flat mesh face-on to the light has a fit around it", () => {
   for (const [kind, make] of [
     ['directional', () => new THREE.DirectionalLight()],
@@ -30,7 +41,7 @@ describe("a flat mesh face-on to the light has a fit around it", () => {
       const distance = 0.5;
       const target = new LightDepthTarget(make(), { size: 16 });
       const { scene } = leafFacing(target.light, distance);
-      expect(target.fit(scene, transmits)).toBe(null);
+      expect(target.fit(frameOf(scene), transmits)).toBe(null);
       expect(target.frustumProblem()).toBe(null);
       const { near, far } = target.camera;
       // The leaf's corners all lie at `distance` along the light's view axis (a plane square to it).
@@ -45,8 +56,7 @@ describe("a flat mesh face-on to the light has a fit around it", () => {
     const target = new LightDepthTarget(new THREE.DirectionalLight(), { size: 16 });
     const { scene, leaf } = leafFacing(target.light, 0.5);
     leaf.position.z = 0.5; // the light's plane
-    scene.updateMatrixWorld();
-    target.fit(scene, transmits);
+    target.fit(frameOf(scene), transmits);
     expect(target.frustumProblem()).toBe(null);
     expect([target.camera.near, target.camera.far]).toEqual([-FIT.MARGIN, FIT.MARGIN]);
     target.dispose();
