@@ -428,6 +428,7 @@ export class SubsurfaceScattering extends PassWithSettings {
    */
   _renderPlain(renderer, target) {
     const { scene, camera } = this;
+    if (!this.clear) this._composePass.releaseDepth(); // drawn over what the target holds: its own depth
     preservingRendererState(renderer, scene, () => {
       renderer.autoClear = false;
       renderer.setRenderTarget(target);

@@ -61,7 +61,8 @@ class CameraFrusta {
  *   (`isSubsurface`), visible: the meshes whose pixels the frame scatters;
  * - `solids`: every drawable object visible with its ancestors, any layers (a light's pass takes
  *   those on its layers: LightDepthView.layersOf);
- * - `lods`: the LODs visible with their ancestors (holdingLevels).
+ * - `lods`: the LODs visible with their ancestors (holdingLevels);
+ * - `lights`: the lights three lights the frame with (visible, on the camera's layers), in its order.
  */
 export class FrameMeshes {
   constructor() {
@@ -73,6 +74,8 @@ export class FrameMeshes {
     this.solids = [];
     /** @type {import('three').LOD[]} */
     this.lods = [];
+    /** @type {import('three').Light[]} */
+    this.lights = [];
     /** The scene and the camera the lists were made for. @type {import('three').Object3D|null} */
     this.scene = null;
     /** @type {import('three').Camera|null} */
@@ -95,6 +98,7 @@ export class FrameMeshes {
     this.onScreen.length = 0;
     this.solids.length = 0;
     this.lods.length = 0;
+    this.lights.length = 0;
     this.scene = scene;
     this.camera = camera;
     this._isSubsurface = isSubsurface;
@@ -110,6 +114,8 @@ export class FrameMeshes {
     if (object.isLOD === true) {
       this.lods.push(object);
       if (onLayers && object.autoUpdate === true) object.update(this.camera);
+    } else if (object.isLight === true) {
+      if (onLayers) this.lights.push(object);
     } else if (isDrawable(object)) {
       this.solids.push(object);
       if (onLayers) {
@@ -156,5 +162,34 @@ export function holdingLevels(lods, draw) {
     return draw();
   } finally {
     for (const lod of held) lod.autoUpdate = true;
+  }
+}
+
+/**
+ * Runs `draw` (a render of `scene`) with the scene's children taken to be `objects` alone: three's
+ * renderer then visits those (and what hangs below them) instead of the whole graph, where a stage
+ * draws a few of its objects (the split's subsurface meshes, a light's view). The objects keep
+ * their parents and world matrices (held: holdingMatrices); one below another in the list is
+ * reached through it, not listed again.
+ * @template T
+ * @param {import('three').Object3D} scene
+ * @param {Iterable<import('three').Object3D>} objects
+ * @param {() => T} draw
+ * @returns {T}
+ */
+export function renderingOnly(scene, objects, draw) {
+  const listed = new Set(objects);
+  const roots = [];
+  for (const object of listed) {
+    let above = object.parent;
+    while (above && above !== scene && !listed.has(above)) above = above.parent;
+    if (!above || above === scene) roots.push(object);
+  }
+  const { children } = scene;
+  scene.children = roots;
+  try {
+    return draw();
+  } finally {
+    scene.children = children;
   }
 }

@@ -10,7 +10,7 @@ import { assertFloatRenderTargets, describe } from '../support/rendererSupport.j
 import { userProgramKeyOf, userShaderHook } from '../support/userHooks.js';
 import { preservingRendererState } from '../support/rendererState.js';
 import { LightDepthView, boundsNoVolume } from './LightDepthView.js';
-import { holdingLevels, isDrawable } from '../frameMeshes.js';
+import { holdingLevels, isDrawable, renderingOnly } from '../frameMeshes.js';
 import { nameClass } from '../support/className.js';
 
 /** The drawable objects of `scene` visible with their ancestors (a LightDepthTarget used alone). */
@@ -223,10 +223,12 @@ export class LightDepthTarget extends LightDepthView {
         renderer.setClearColor(0x000000, 0); // 0 = no surface
         renderer.autoClear = false;
         renderer.clear(true, true, false);
-        holdingLevels(frame ? frame.lods : [], () => {
-          if (this.isCube) this._renderFaces(renderer, scene);
-          else renderer.render(scene, camera);
-        });
+        // Three visits what the light sees alone (with the frame's lists), the LODs held at the
+        // camera's levels; the frame's lights too, though the depth material reads none: three
+        // keys its light state by them, and a state without them would recompile nothing but make
+        // every material check its program again on the next render.
+        const render = () => (this.isCube ? this._renderFaces(renderer, scene) : renderer.render(scene, camera));
+        holdingLevels(frame ? frame.lods : [], () => (frame ? renderingOnly(scene, [...frame.lights, ...drawn], render) : render()));
         this.valid = true;
       } finally {
         for (const [object, material] of swapped) object.material = material;

@@ -18,13 +18,13 @@
 import { Color, FloatType, HalfFloatType } from 'three';
 import { Pass } from 'three/addons/postprocessing/Pass.js';
 import { followCopy, getSubsurface } from './subsurfaceMaterial.js';
-import { FrameMeshes, materialsOf } from '../frameMeshes.js';
+import { FrameMeshes, materialsOf, renderingOnly } from '../frameMeshes.js';
 import { subsurfaceScreenBox } from './subsurfaceScreenBox.js';
 import { ATTACHMENTS, DRAW_BUFFERS, DRAW_PHASES, createSubsurfaceTarget, diffuseCarriesDepth, drawingInto, setDiffuseCarriesDepth, setSurfaceChannels } from './subsurfaceTarget.js';
 import { assertFloatRenderTargets, describe } from '../support/rendererSupport.js';
 import { checkOptions } from '../support/parameterChecks.js';
 import { PASS_BOOLEANS, booleanFields } from '../support/booleanFields.js';
-import { preservingRendererState } from '../support/rendererState.js';
+import { holdingMatrices, preservingRendererState } from '../support/rendererState.js';
 import { checkThreeRevision } from '../support/threeVersion.js';
 import { nameClass } from '../support/className.js';
 
@@ -85,6 +85,7 @@ export class SubsurfaceScenePass extends Pass {
     /** Whether a material is subsurface, a copy of one made so first (_subsurfaceOf): what the frame's lists are sorted by. */
     this._isSubsurface = (material) => this._subsurfaceOf(material) !== undefined;
     this._collected = false;
+    this._splitObjects = [];
     /** The meshes with an opaque subsurface material on the screen in the last render (the plan, the box). */
     this.subsurfaceMeshes = [];
     /**
@@ -244,7 +245,15 @@ export class SubsurfaceScenePass extends Pass {
     drawingInto(this.renderTarget, phase, this.owner, () => {
       renderer.getContext().drawBuffers(drawBuffers);
       this._show(phase, category);
-      renderer.render(this.scene, this.camera);
+      if (phase !== DRAW_PHASES.SPLIT) {
+        renderer.render(this.scene, this.camera);
+        return;
+      }
+      // The split draws the subsurface meshes on the screen, lit by the frame's lights: three
+      // visits those alone, not the whole scene again (its matrices are call 1's).
+      this._splitObjects.length = 0;
+      this._splitObjects.push(...this.frame.lights, ...this.subsurfaceMeshes);
+      holdingMatrices(this.scene, () => renderingOnly(this.scene, this._splitObjects, () => renderer.render(this.scene, this.camera)));
     });
   }
 

@@ -138,8 +138,7 @@ export class SubsurfaceComposePass extends ShaderPass {
     if (this._clear && this._depthTarget) {
       this.depthHandOff = this._depthShare.share(renderer, this._depthTarget, target);
     } else {
-      this._depthShare.release();
-      this.depthHandOff = false;
+      this.releaseDepth();
     }
     const shared = this.depthHandOff === true;
     setDefines(this.material, { WRITE_DEPTH: shared ? 0 : 1 });
@@ -192,6 +191,12 @@ export class SubsurfaceComposePass extends ShaderPass {
   setSize(width) {
     this._width = width;
     this.uniforms.splitX.value = this.split * width;
+  }
+
+  /** Gives an output that took the scene split's depth its own back (a frame drawn without the compose over what it holds). */
+  releaseDepth() {
+    this._depthShare.release();
+    this.depthHandOff = false;
   }
 
   /** Frees the pass; an output that took the scene split's depth gets its own back. */
