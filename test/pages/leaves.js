@@ -92,9 +92,13 @@ export function leafScenes({ SSS, createRenderer, createComposer, read }) {
       frame();
       result.remade = await diffuseOf(renderer, sss);
     }
-    // The truth: the same bends made in the geometry (its normals as they were, as the hooks leave them).
+    // The truth: the same bends made in the geometry (its normals as they were, as the hooks leave
+    // them). A hooked mesh is fitted into the light's view by its bounding sphere (its hook may move
+    // it anywhere): the truth keeps the unbent sphere and a hook that moves nothing, so both fall on
+    // the same light texels.
     const bent = (name, x) => {
       const mesh = leaf(white(), x, 0);
+      mesh.geometry.computeBoundingSphere();
       const position = mesh.geometry.attributes.position;
       const p = new THREE.Vector3();
       for (let i = 0; i < position.count; i++) {
@@ -102,7 +106,7 @@ export function leafScenes({ SSS, createRenderer, createComposer, read }) {
         position.setXYZ(i, p.x, p.y, p.z);
       }
       mesh.geometry.computeBoundingBox();
-      mesh.geometry.computeBoundingSphere();
+      mesh.material.onBeforeCompile = () => {};
       sss.makeSubsurface(mesh.material);
       return mesh;
     };

@@ -637,11 +637,14 @@ async function swayingLeaves({ backend = 'webgpu', width = 96, height = 54, time
   right.color.setScalar(0.5);
   const hooked = leafScene(leaf(left, -1.1, 0), leaf(right, 1.1, 0));
   const bent = (x, color) => {
+    // Fitted into the light's view as the hooked leaves are (their unbent bounding sphere: a
+    // position node may move them anywhere), through a position node that moves nothing.
     const mesh = leaf(NODE.subsurfaceMaterial(white({ color: new THREE.Color().setScalar(color) }), { widthMm: 1 }), x, 0);
+    mesh.material.positionNode = positionLocal;
+    mesh.geometry.computeBoundingSphere();
     const position = mesh.geometry.attributes.position;
     for (let i = 0; i < position.count; i++) position.setZ(i, position.getZ(i) + sway(position.getX(i)));
     mesh.geometry.computeBoundingBox();
-    mesh.geometry.computeBoundingSphere();
     return mesh;
   };
   const truth = leafScene(bent(-1.1, 1), bent(1.1, 0.5));
