@@ -240,7 +240,7 @@ export const PIPELINE_SCHEMA = Object.freeze({
   },
   kernelGroups: {
     default: 1, type: "number|'auto'",
-    doc: `method 'footprint': 1, one separable kernel (exact along the screen axes; the fast blur); 'auto' or 2..${MAX_KERNEL_GROUPS}: the profile's Gaussians in groups, the same in every direction, slower ('auto': one group for a far head)`,
+    doc: `method 'footprint': 1, one separable kernel (the fast blur); 'auto' or 2..${MAX_KERNEL_GROUPS}: the profile's Gaussians in groups, the same in every direction, slower`,
     check: (value, name) => checkKernelGroups(value, name),
   },
   strength: {
@@ -465,7 +465,7 @@ export function checkMaterialOptions(options = {}, previous = MATERIAL_DEFAULTS)
  * @property {ProfileName|object} [profile='skin'] a preset's name ('skin', 'skinBurley', 'marble', 'milk') or a profile object (burleyProfile, dipoleProfile, gaussianSumProfile)
  * @property {Method} [method='footprint'] how the blur weighs its taps: 'footprint' (each pixel's footprint, exactly), 'marginal' or 'reference' (fixed taps; Jimenez 2012's kernel); a switch to or from 'footprint' recompiles
  * @property {number|'auto'} [samples='auto'] taps per direction, odd, 3..63 (a budget for 'footprint'); 'auto': as few as the on-screen scale needs
- * @property {number|'auto'} [kernelGroups=1] method 'footprint': 1, one separable kernel (exact along the screen axes; the fast blur); 'auto' or 2..4: the profile's Gaussians in groups, the same in every direction, slower ('auto': one group for a far head)
+ * @property {number|'auto'} [kernelGroups=1] method 'footprint': 1, one separable kernel (the fast blur); 'auto' or 2..4: the profile's Gaussians in groups, the same in every direction, slower
  * @property {number[]|import('three').Color} [strength] [r, g, b] or a THREE.Color, 0..1: mix with no scattering (the reference model)
  * @property {number[]} [falloff] RGB, (0, 10]: method 'reference' only, its kernel's shape
  * @property {FollowSurfaceMode} [followSurface='drop'] a tap on another surface: 'drop' (renormalise), 'lerp' (to the centre) or 'off'
@@ -490,7 +490,7 @@ export function checkMaterialOptions(options = {}, previous = MATERIAL_DEFAULTS)
  * @property {ProfileName|object} [profile='skin'] a preset's name ('skin', 'skinBurley', 'marble', 'milk') or a profile object (burleyProfile, dipoleProfile, gaussianSumProfile)
  * @property {Method} [method='footprint'] how the blur weighs its taps: 'footprint' (each pixel's footprint, exactly), 'marginal' or 'reference' (fixed taps; Jimenez 2012's kernel); a switch to or from 'footprint' recompiles
  * @property {number|'auto'} [samples='auto'] taps per direction, odd, 3..63 (a budget for 'footprint'); 'auto': as few as the on-screen scale needs
- * @property {number|'auto'} [kernelGroups=1] method 'footprint': 1, one separable kernel (exact along the screen axes; the fast blur); 'auto' or 2..4: the profile's Gaussians in groups, the same in every direction, slower ('auto': one group for a far head)
+ * @property {number|'auto'} [kernelGroups=1] method 'footprint': 1, one separable kernel (the fast blur); 'auto' or 2..4: the profile's Gaussians in groups, the same in every direction, slower
  * @property {number[]|import('three').Color} [strength] [r, g, b] or a THREE.Color, 0..1: mix with no scattering (the reference model)
  * @property {FollowSurfaceMode} [followSurface='drop'] a tap on another surface: 'drop' (renormalise), 'lerp' (to the centre) or 'off'
  * @property {number} [depthThresholdMm=6] mm of depth step taken for another surface
@@ -512,7 +512,7 @@ export function checkMaterialOptions(options = {}, previous = MATERIAL_DEFAULTS)
  * @property {number} worldUnitInMm millimetres per world unit (three.js: metres, 1000)
  * @property {Method} method how the blur weighs its taps: 'footprint' (each pixel's footprint, exactly), 'marginal' or 'reference' (fixed taps; Jimenez 2012's kernel); a switch to or from 'footprint' recompiles
  * @property {number|'auto'} samples taps per direction, odd, 3..63 (a budget for 'footprint'); 'auto': as few as the on-screen scale needs
- * @property {number|'auto'} kernelGroups method 'footprint': 1, one separable kernel (exact along the screen axes; the fast blur); 'auto' or 2..4: the profile's Gaussians in groups, the same in every direction, slower ('auto': one group for a far head)
+ * @property {number|'auto'} kernelGroups method 'footprint': 1, one separable kernel (the fast blur); 'auto' or 2..4: the profile's Gaussians in groups, the same in every direction, slower
  * @property {number[]|import('three').Color|undefined} strength [r, g, b] or a THREE.Color, 0..1: mix with no scattering (the reference model)
  * @property {number[]|undefined} falloff RGB, (0, 10]: method 'reference' only, its kernel's shape
  * @property {FollowSurfaceMode} followSurface a tap on another surface: 'drop' (renormalise), 'lerp' (to the centre) or 'off'
@@ -535,7 +535,7 @@ export function checkMaterialOptions(options = {}, previous = MATERIAL_DEFAULTS)
  * @property {number} worldUnitInMm millimetres per world unit (three.js: metres, 1000)
  * @property {Method} method how the blur weighs its taps: 'footprint' (each pixel's footprint, exactly), 'marginal' or 'reference' (fixed taps; Jimenez 2012's kernel); a switch to or from 'footprint' recompiles
  * @property {number|'auto'} samples taps per direction, odd, 3..63 (a budget for 'footprint'); 'auto': as few as the on-screen scale needs
- * @property {number|'auto'} kernelGroups method 'footprint': 1, one separable kernel (exact along the screen axes; the fast blur); 'auto' or 2..4: the profile's Gaussians in groups, the same in every direction, slower ('auto': one group for a far head)
+ * @property {number|'auto'} kernelGroups method 'footprint': 1, one separable kernel (the fast blur); 'auto' or 2..4: the profile's Gaussians in groups, the same in every direction, slower
  * @property {number[]|import('three').Color|undefined} strength [r, g, b] or a THREE.Color, 0..1: mix with no scattering (the reference model)
  * @property {FollowSurfaceMode} followSurface a tap on another surface: 'drop' (renormalise), 'lerp' (to the centre) or 'off'
  * @property {number} depthThresholdMm mm of depth step taken for another surface
