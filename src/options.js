@@ -336,7 +336,7 @@ export const MATERIAL_SCHEMA = Object.freeze({
   },
   profile: {
     default: undefined, type: "import('./options.js').ProfileName|object|null",
-    doc: `this material's diffusion profile, as the pipeline's \`profile\` (left out: as before, at first the pipeline's; null: back to the pipeline's); up to ${MAX_PROFILES} per pipeline`,
+    doc: `this material's diffusion profile, as the pipeline's \`profile\` (null: the pipeline's); up to ${MAX_PROFILES} per pipeline`,
     // null: the pipeline's again (a rebind keeps what it leaves out, so undefined cannot say it).
     check: (value) => (value === null ? undefined : (checkProfile(value), value)), // kept as given: a material's options read back as written
   },
@@ -556,6 +556,6 @@ export function checkMaterialOptions(options = {}, previous = MATERIAL_DEFAULTS)
  * @property {boolean} [transmittance=true] light through thin parts (with the pipeline's light)
  * @property {number} [translucency=0] 0..1 (exclusive): light through regardless of thickness
  * @property {number} [shrinkMm=0.6] how far the light depth lookup moves inwards, mm (0..1000)
- * @property {ProfileName|object|null} [profile] this material's diffusion profile, as the pipeline's `profile` (left out: as before, at first the pipeline's; null: back to the pipeline's); up to 8 per pipeline
+ * @property {ProfileName|object|null} [profile] this material's diffusion profile, as the pipeline's `profile` (null: the pipeline's); up to 8 per pipeline
  */
 // </options-typedef>
