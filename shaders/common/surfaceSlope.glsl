@@ -6,16 +6,16 @@
 //   of depth per world unit across: one plane, the central difference;
 // - otherwise each neighbour on the surface counts unless it is steeper than SSS_MAX_SLOPE (another
 //   surface: a depth edge): the mean of the one-sided slopes that count, 0 when none does.
-// Each of the three limits fades linearly from limit / SSS_SLOPE_FADE to limit * SSS_SLOPE_FADE
-// (sssFadeBelow) rather than switching, so the slope moves continuously with the depths: a
-// neighbour's weight, and the plane's share of the result against the one-sided rule's.
+// Each of the three limits fades linearly from limit / SSS_SLOPE_FADE to the limit (sssFadeBelow)
+// rather than switching, so the slope moves continuously with the depths: a neighbour's weight,
+// and the plane's share of the result against the one-sided rule's.
 // Needs `resolution` and `viewOrigin` (vec2, pixels: the view's size and first pixel; neighbours
 // outside the view are not on the surface) and shaders/common/surfaceSample.glsl.
 
-// 1 up to limit / SSS_SLOPE_FADE, 0 from limit * SSS_SLOPE_FADE, linear between (a limit of 0: 1 at 0 only).
+// 1 up to limit / SSS_SLOPE_FADE, 0 from the limit, linear between (a limit of 0: 1 at 0 only).
 float sssFadeBelow( const in float value, const in float limit ) {
-	float band = limit * ( SSS_SLOPE_FADE - 1.0 / SSS_SLOPE_FADE );
-	return band > 0.0 ? clamp( ( limit * SSS_SLOPE_FADE - value ) / band, 0.0, 1.0 ) : ( value > 0.0 ? 0.0 : 1.0 );
+	float band = limit * ( 1.0 - 1.0 / SSS_SLOPE_FADE );
+	return band > 0.0 ? clamp( ( limit - value ) / band, 0.0, 1.0 ) : ( value > 0.0 ? 0.0 : 1.0 );
 }
 
 float sssSurfaceSlope( const in ivec2 pixel, const in int axis, const in vec2 surface, const in float pixelWorld ) {

@@ -69,10 +69,10 @@ export function surfaceSlopeOracle({ width, height, depth, widthWorld }, i, j, a
   return plane * 0.5 * (before.slope + after.slope) + (1 - plane) * oneSided;
 }
 
-/** The slope rule's fade (item 3): 1 up to limit / SLOPE_FADE, 0 from limit · SLOPE_FADE, linear between; a limit of 0 is 1 at 0 only. */
+/** The slope rule's fade (item 3): 1 up to limit / SLOPE_FADE, 0 from the limit, linear between; a limit of 0 is 1 at 0 only. */
 function fadeBelow(value, limit) {
   const lo = limit / SLOPE_FADE;
-  const hi = limit * SLOPE_FADE;
+  const hi = limit;
   if (hi <= lo) return value > 0 ? 0 : 1;
   return Math.min(Math.max((hi - value) / (hi - lo), 0), 1);
 }

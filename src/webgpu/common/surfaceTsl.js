@@ -72,12 +72,12 @@ export function surfaceSample({ diffuse, surface, coverage }) {
 }
 
 /**
- * surfaceSlope.glsl's sssFadeBelow: 1 up to limit / SLOPE_FADE, 0 from limit * SLOPE_FADE, linear
- * between (a limit of 0: 1 at 0 only).
+ * surfaceSlope.glsl's sssFadeBelow: 1 up to limit / SLOPE_FADE, 0 from the limit, linear between
+ * (a limit of 0: 1 at 0 only).
  */
 export function fadeBelow(value, limit) {
-  const band = limit.mul(SLOPE_FADE - 1 / SLOPE_FADE);
-  return select(band.greaterThan(0), clamp(limit.mul(SLOPE_FADE).sub(value).div(band), 0, 1), select(value.greaterThan(0), float(0), float(1)));
+  const band = limit.mul(1 - 1 / SLOPE_FADE);
+  return select(band.greaterThan(0), clamp(limit.sub(value).div(band), 0, 1), select(value.greaterThan(0), float(0), float(1)));
 }
 
 /**
