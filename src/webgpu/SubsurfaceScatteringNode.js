@@ -3,9 +3,9 @@
 // subsurface node materials write the diffuse light and the surface there); the node runs stage 3,
 // the two separable blur passes (with kernelGroups, the isotropic blur's groups: the horizontal
 // pass writes each to an attachment of its own, the vertical one sums them), before the frame
-// (updateBefore), and is itself stage 4, the compose. With a `light` it runs stage 1 too (./1-light-depth/LightStageNode.js): the light
-// depth pass for transmittance, and the subsurface materials' transmittance uniforms, before the
-// scene pass draws them. What the WebGL path's orchestrator does per frame
+// (updateBefore), and is itself stage 4, the compose. With a `light` (or several) it runs stage 1
+// too (./1-light-depth/LightStageNode.js): a light depth pass per light for transmittance, and the
+// subsurface materials' transmittance uniforms, before the scene pass draws them. What the WebGL path's orchestrator does per frame
 // (src/SubsurfaceScattering.js, steps 0 to 5) happens here in the same order, with the same CPU
 // side: the profile tables, the footprint tables, the frame plan, the light's checks and the
 // parameter checks are imported from src/, not copied.
@@ -28,7 +28,7 @@ import { describe } from '../support/rendererSupport.js';
 import { LightStageNode } from './1-light-depth/LightStageNode.js';
 import { subsurfaceMeshesOf } from './2-scene-split/subsurfaceNodeMaterial.js';
 import {
-  CAST_SHADOW, NODE_SCHEMA, checkNeedsLight, checkNodeOptions, lightsOf, propertiesOf,
+  NODE_SCHEMA, checkNeedsLight, checkNodeOptions, lightsOf, propertiesOf,
 } from '../options.js';
 import { withSettings } from '../support/settings.js';
 import { WEBGPU_THREE, checkThreeRevision } from '../support/threeVersion.js';
@@ -41,15 +41,6 @@ import { DEBUG_VIEWS } from '../4-compose/debugViews.js';
 
 /** The methods the node has: the WebGL pipeline's default (the fixed-tap ones are the WebGL pipeline's only). */
 export const NODE_METHODS = Object.freeze(['footprint']);
-
-/** The node's one light (or none): a list of more is the WebGL pipeline's, refused naming it. */
-function nodeLight(light) {
-  if (light === CAST_SHADOW) throw new RangeError(`light: the WebGPU node takes one light, got '${CAST_SHADOW}' (the WebGL pipeline's)`);
-  const lights = lightsOf(light);
-  if (lights.length > 1) throw new RangeError(`light: the WebGPU node takes one light, got a list of ${lights.length} (several lights are the WebGL pipeline's)`);
-  if (lights[0]?.isPointLight) throw new TypeError('light: the WebGPU node takes a SpotLight or DirectionalLight, got a PointLight (the WebGL pipeline takes point lights)');
-  return lights[0] ?? null;
-}
 
 /** A method of the schema the node lacks is refused, naming the pipeline that has it. */
 function checkNodeMethod(method) {
@@ -91,7 +82,6 @@ export class SubsurfaceScatteringNode extends NodeWithSettings {
     if (!scenePass || scenePass.isPassNode !== true) throw new TypeError(`subsurfaceScattering: scenePass must be a PassNode (pass(scene, camera)), got ${describe(scenePass)}`);
     const o = checkNodeOptions(options); // every option checked here, once, against the schema
     checkNodeMethod(o.method);
-    nodeLight(o.light);
     /** @internal The settings' values (read and assigned through their properties). */
     this._settings = Object.fromEntries(propertiesOf(NODE_SCHEMA).map(({ name }) => [name, o[name]]));
     if (Object.hasOwn(options ?? {}, 'transmittance')) checkNeedsLight('transmittance', o.transmittance, o.light);
@@ -108,7 +98,7 @@ export class SubsurfaceScatteringNode extends NodeWithSettings {
       marginalRangeMm: uniform(1), debugView: debugViewUniform(), debugDepthRange: uniform(1), debugThicknessRangeMm: uniform(1), scatteredShare: uniform(1),
     };
     /** Stage 1 and the materials' transmittance uniforms, before the scene pass (built with or without a light: `light` is assignable). */
-    this._lightStage = new LightStageNode(this, nodeLight(o.light), o.lightDepthSize);
+    this._lightStage = new LightStageNode(this, o.lightDepthSize);
     for (const name of ['worldUnitInMm', 'samples', 'strength', 'debugView', 'debugDepthRange', 'debugThicknessRangeMm']) this._applySetting(name, o[name]);
     /** What the last frame ran: { samples, kernelPixels, blur, passes, groups, groupings } (see src/3-blur/blurPlan.js). */
     this.plan = { samples: 0, tapBlend: null, kernelPixels: 0, blur: false, fade: 0, passes: 'separable', groups: 1, groupings: null };
@@ -170,7 +160,7 @@ export class SubsurfaceScatteringNode extends NodeWithSettings {
       case 'light': // as the WebGL pipeline: a light after none turns transmittance on (unless set off), null off
         if (value === previous) return;
         if (value === null) checkNeedsLight('debugView', this.debugView, null);
-        this._lightStage.setLight(nodeLight(value));
+        this._lightStage.setLights(lightsOf(value)); // 'castShadow': found each frame
         if (value === null || previous === null) this._settings.transmittance = value !== null && this._transmittanceWanted;
         return;
       case 'debugView':
@@ -181,7 +171,7 @@ export class SubsurfaceScatteringNode extends NodeWithSettings {
         u[name].value = value;
         return;
       case 'lightDepthSize':
-        this._lightStage?.lightDepth?.setSize(value); // kept while the light is null, for the next one
+        for (const lightDepth of this._lightStage?.lightDepths ?? []) lightDepth.setSize(value); // kept while the light is null, for the next one
         return;
       default:
     }
@@ -197,11 +187,18 @@ export class SubsurfaceScatteringNode extends NodeWithSettings {
   /** @param {import('../options.js').ProfileName|object} profile */
   set profile(profile) { super.profile = profile; }
 
-  /** What the last frame found wrong with the light, one message each (empty when all is well). @type {readonly string[]} */
+  /** What the last frame found wrong with the lights, one message each (empty when all is well). @type {readonly string[]} */
   get problems() { return this._lightStage.checks.current; }
 
-  /** Stage 1: the light depth map for transmittance, or null without a light. @type {import('./1-light-depth/LightDepthNodeTarget.js').LightDepthNodeTarget|null} */
-  get lightDepth() { return this.light === null ? null : this._lightStage.lightDepth; }
+  /**
+   * Stage 1: the light depth maps for transmittance, one per light (with `'castShadow'`: the last
+   * frame's casters), empty without a light.
+   * @type {readonly import('./1-light-depth/LightDepthNodeTarget.js').LightDepthNodeTarget[]}
+   */
+  get lightDepths() { return this._lightStage.lightDepths.slice(0, this._lightStage.count); }
+
+  /** The first light's map (the one the thickness view shows), or null without a light. @type {import('./1-light-depth/LightDepthNodeTarget.js').LightDepthNodeTarget|null} */
+  get lightDepth() { return this.lightDepths[0] ?? null; }
 
   /** @returns {import('three/webgpu').TextureNode} the scattered diffuse light, premultiplied by its coverage */
   getTextureNode() {

@@ -530,8 +530,168 @@ async function sameFrame({ backend = 'webgpu', width = 96, height = 54 }) {
   return { blurred, onAgain, unblurred };
 }
 
+/**
+ * The lights of issue 43 on the node, the WebGL lights test's scene (test/browser/1-light-depth/
+ * lights.test.js): a white slab `thicknessMm` thick (metres, 0.2 m wide) seen from the front at
+ * 0.3 m, lit from behind only, `size` pixels square. `lights(THREE)` names the lights (added to the
+ * scene), `steps(node, lights, parts)` the [label, action] pairs, each followed by a frame (an
+ * animation frame apart: the scene pass draws once a frame) whose diffuse attachment (float) is
+ * returned under its label with `node.light` (a light's name, 'castShadow', null or 'a list') and
+ * the frame's problems. With `webgl`, the labels it lists are drawn by the WebGL pipeline too,
+ * with the node's `light` of that step, into `webgl[label]`.
+ */
+async function slabLightFrames({ backend = 'webgpu', thicknessMm = 1, size = 48, lights: makeLights, steps, webgl = [] }) {
+  const renderer = await sharedRenderer(backend, size, size);
+  const scene = new THREE.Scene();
+  const camera = new THREE.PerspectiveCamera(30, 1, 0.01, 10);
+  camera.position.set(0, 0, 0.3);
+  const plain = new THREE.MeshStandardMaterial({ color: 0xffffff, roughness: 1, metalness: 0 });
+  const skin = NODE.subsurfaceMaterial(plain, { widthMm: 1, shrinkMm: 0.6 });
+  const slab = new THREE.Mesh(new THREE.BoxGeometry(0.2, 0.2, thicknessMm / 1000), skin);
+  slab.name = 'slab';
+  scene.add(slab);
+  const lights = makeLights(THREE);
+  for (const light of Object.values(lights)) scene.add(light, ...(light.target ? [light.target] : []));
+  const { scenePass, node, pipeline } = subsurfacePipeline(renderer, scene, camera, { type: THREE.FloatType, sss: { worldUnitInMm: 1000 } });
+  const nameOf = (light) => Object.entries(lights).find(([, l]) => l === light)?.[0] ?? (light === null || typeof light === 'string' ? light : 'a list');
+  const out = { webgl: {} };
+  for (const [label, action] of steps(node, lights, { scene, camera, slab, skin })) {
+    await new Promise((resolve) => { requestAnimationFrame(() => resolve()); });
+    action();
+    pipeline.render();
+    out[label] = { diffuse: await readFloats(renderer, scenePass.renderTarget, 'diffuse'), light: nameOf(node.light), problems: [...node.problems], cubes: node.lightDepths.map((map) => map.isCube) };
+    if (webgl.includes(label)) out.webgl[label] = await webglSlabFrame(scene, camera, slab, plain, node.light, size);
+  }
+  node.dispose();
+  pipeline.dispose();
+  scenePass.dispose();
+  skin.dispose();
+  plain.dispose();
+  slab.geometry.dispose();
+  return out;
+}
+
+/** The WebGL pipeline's diffuse attachment (float) of the same scene with `light`, `plain` (three's material) on the slab. */
+async function webglSlabFrame(scene, camera, slab, plain, light, size) {
+  const L = window.lab;
+  const skin = slab.material;
+  slab.material = plain;
+  const gl = L.createRenderer(size, size);
+  const sss = new L.SSS.SubsurfaceScattering({ scene, camera, light, worldUnitInMm: 1000, type: THREE.FloatType });
+  sss.makeSubsurface(plain, { widthMm: 1, shrinkMm: 0.6 });
+  const composer = L.createComposer(gl, { type: THREE.FloatType });
+  composer.addPass(sss);
+  composer.render();
+  const diffuse = await L.read(gl, sss._scenePass.renderTarget, 1);
+  sss.dispose();
+  composer.dispose();
+  gl.dispose();
+  gl.forceContextLoss();
+  slab.material = skin;
+  return diffuse;
+}
+
+/** The four lights of the list test: two directional, a spot, a point light aimed at the slab (its bounds fit 120°). */
+const FOUR_LIGHTS = (T) => {
+  const behind = new T.DirectionalLight(0xffffff, Math.PI);
+  behind.position.set(0, 0, -2);
+  const oblique = new T.DirectionalLight(0xffccaa, 2);
+  oblique.position.set(1.2, 0.3, -1.5);
+  const spot = new T.SpotLight(0xaaccff, 6 * Math.PI, 0, Math.PI / 10, 0.3, 2);
+  spot.position.set(-0.1, 0.05, -1.2);
+  const bulb = new T.PointLight(0xffeecc, 3 * Math.PI, 0, 2);
+  bulb.position.set(0.05, -0.3, -0.8);
+  for (const light of [behind, oblique]) Object.assign(light.shadow.camera, { left: -0.15, right: 0.15, bottom: -0.15, top: 0.15 });
+  return { behind, oblique, spot, bulb };
+};
+
+/** Each of FOUR_LIGHTS alone, all four, two, then a list read back; 'all' also through the WebGL pipeline. */
+const nodeLightList = ({ backend }) => slabLightFrames({
+  backend, thicknessMm: 1.5, lights: FOUR_LIGHTS, webgl: ['all'],
+  steps: (node, l) => [
+    ['behind', () => { node.light = l.behind; }], ['oblique', () => { node.light = [l.oblique]; }],
+    ['spot', () => { node.light = l.spot; }], ['bulb', () => { node.light = l.bulb; }],
+    ['all', () => { node.light = [l.behind, l.oblique, l.spot, l.bulb]; }],
+    ['two', () => { node.light = [l.spot, l.behind]; }],
+  ],
+});
+
+/**
+ * A spot light straight behind the 1 mm slab, 2 m away (intensity 4π, decay 2: irradiance π; the
+ * slab well inside its cone); a point light there, among transmitting meshes (a box beyond it:
+ * its map takes six faces), the slab turned to face +z, +x, −y and −z in turn (the camera before
+ * it); then aimed (the box gone): the slab turned 45° to it, and a spot light in its place.
+ */
+const nodePointLight = ({ backend }) => slabLightFrames({
+  backend, thicknessMm: 1,
+  lights: (T) => {
+    const bulb = new T.PointLight(0xffffff, Math.PI * 4, 0, 2);
+    const spot = new T.SpotLight(0xffffff, Math.PI * 4, 0, Math.PI / 8, 0, 2);
+    spot.position.set(0, 0, -2);
+    bulb.visible = false;
+    return { bulb, spot };
+  },
+  steps: (node, { bulb, spot }, { scene, camera, slab, skin }) => {
+    const beyond = new THREE.Mesh(new THREE.BoxGeometry(0.1, 0.1, 0.1), skin);
+    beyond.position.set(0, 0, -4); // behind the spot light
+    scene.add(beyond);
+    const facing = (n) => () => {
+      const normal = new THREE.Vector3(...n);
+      slab.quaternion.setFromUnitVectors(new THREE.Vector3(0, 0, 1), normal);
+      camera.up.set(0, n[1] === 0 ? 1 : 0, n[1] === 0 ? 0 : 1);
+      camera.position.copy(normal).multiplyScalar(0.3);
+      camera.lookAt(0, 0, 0);
+      bulb.position.copy(normal).multiplyScalar(-2);
+      beyond.position.copy(normal).multiplyScalar(-4);
+    };
+    const aimed = () => {
+      scene.remove(beyond);
+      slab.quaternion.identity();
+      slab.rotation.y = Math.PI / 4;
+      camera.up.set(0, 1, 0);
+      camera.position.set(0, 0, 0.3);
+      camera.lookAt(0, 0, 0);
+      bulb.position.set(-0.5, 0, -0.5);
+      bulb.intensity = 2;
+    };
+    return [
+      ['spot behind', () => { node.light = spot; }],
+      ['+z', () => { spot.visible = false; bulb.visible = true; node.light = bulb; facing([0, 0, 1])(); }], ['+x', facing([1, 0, 0])], ['-y', facing([0, -1, 0])], ['-z', facing([0, 0, -1])],
+      ['aimed', aimed],
+      ['spot', () => { // its cone edge outside the slab
+        Object.assign(spot, { visible: true, intensity: 2, angle: Math.PI / 4 });
+        spot.position.copy(bulb.position);
+        bulb.visible = false;
+        node.light = spot;
+      }],
+    ];
+  },
+});
+
+/** `light: 'castShadow'` on the node: the casters listed, found, one fewer, five. */
+const nodeCastShadow = ({ backend }) => slabLightFrames({
+  backend, thicknessMm: 1.5,
+  lights: (T) => {
+    const { behind: sun, spot, bulb } = FOUR_LIGHTS(T);
+    sun.castShadow = spot.castShadow = true; // the bulb casts none
+    return { sun, spot, bulb };
+  },
+  steps: (node, l, { scene }) => {
+    const extra = Array.from({ length: 3 }, () => Object.assign(new THREE.SpotLight(0xffffff, 0), { castShadow: true }));
+    return [
+      ['listed', () => { node.light = [l.sun, l.spot]; }],
+      ['castShadow', () => { node.light = 'castShadow'; }],
+      ['one casts', () => { l.spot.castShadow = false; }],
+      ['sun', () => { node.light = l.sun; }],
+      ['bulb casts', () => { l.bulb.castShadow = true; node.light = 'castShadow'; }],
+      ['six cast', () => { l.spot.castShadow = true; scene.add(...extra); }],
+      ['none cast', () => { for (const light of [l.sun, l.spot, l.bulb, ...extra]) light.castShadow = false; }],
+    ];
+  },
+});
+
 window.wgpu = {
   THREE, NODE, pass, createRenderer, readFloats, subsurfacePipeline, flat, disposeFlatRig, head, disposal, plainDraw, debugViews, labScene, labScenePlain, lightDepthCards,
-  dollyOpen, dollyFrames, dollyClose, lightAssigned, sameFrame, nearLight,
+  dollyOpen, dollyFrames, dollyClose, lightAssigned, sameFrame, nearLight, nodeLightList, nodePointLight, nodeCastShadow,
 };
 window.testReady = true;
