@@ -14,7 +14,7 @@
 //   scenePass.setMRT(subsurfaceMRT());
 //   pipeline.outputNode = subsurfaceScattering(scenePass, { worldUnitInMm: 1000, light });
 import { Node, NodeMaterial, NodeUpdateType, QuadMesh, RenderTarget, RendererUtils } from 'three/webgpu';
-import { FloatType, HalfFloatType, Vector2, Vector3 } from 'three';
+import { FloatType, HalfFloatType, Vector2, Vector3, Vector4 } from 'three';
 import { passTexture, texture, uniform } from 'three/tsl';
 import { MAX_KERNEL_GROUPS } from '../3-blur/kernelGroups.js';
 import { ProfileLookup } from '../profiles/ProfileLookup.js';
@@ -22,6 +22,7 @@ import { FootprintTable } from '../profiles/FootprintTable.js';
 import { AUTO_MAX_SAMPLES } from '../profiles/footprints.js';
 import { computeKernel } from '../profiles/kernel.js';
 import { estimatePixelsPerMm } from '../framePlan.js';
+import { subsurfaceScreenBox } from '../2-scene-split/subsurfaceScreenBox.js';
 import { planBlur } from '../3-blur/blurPlan.js';
 import { isPerspective } from '../support/screenScale.js';
 import { describe } from '../support/rendererSupport.js';
@@ -96,6 +97,7 @@ export class SubsurfaceScatteringNode extends NodeWithSettings {
       kernelRadiusMm: uniform(0), strength: uniform(new Vector3()), projectionScale: uniform(new Vector2(1, 1)),
       resolution: uniform(new Vector2(1, 1)), depthFalloff: uniform(1), perspective: uniform(1), mmToWorld: uniform(1e-3),
       marginalRangeMm: uniform(1), debugView: debugViewUniform(), debugDepthRange: uniform(1), debugThicknessRangeMm: uniform(1), scatteredShare: uniform(1),
+      subsurfaceBox: uniform(new Vector4(0, 0, 1, 1)), // the subsurface pixels' box: x0, y0, x1, y1, pixels from the top left
     };
     /** Stage 1 and the materials' transmittance uniforms, before the scene pass (built with or without a light: `light` is assignable). */
     this._lightStage = new LightStageNode(this, o.lightDepthSize);
@@ -305,11 +307,18 @@ export class SubsurfaceScatteringNode extends NodeWithSettings {
     renderer.getDrawingBufferSize(_size);
     scenePass.setSize(_size.width, _size.height);
     const { width, height } = scenePass.renderTarget;
-    this.plan = this._planFrame(subsurfaceMeshesOf(scene).meshes, camera, width, height);
+    const { meshes } = subsurfaceMeshesOf(scene);
+    this.plan = this._planFrame(meshes, camera, width, height);
     this._uniforms.scatteredShare.value = this.plan.blur ? this.plan.fade : 1; // the blur fading in (blurPlan.js)
     if (this.kernelGroups === 1) this._freeGroupTarget(); // back to one kernel: its 8 B per pixel and group go
+    // Where the subsurface pixels can be (the meshes' bounds; null: anywhere): the blur runs there
+    // only, and the compose reads the scattered light there only.
+    const box = subsurfaceScreenBox(meshes, camera, width, height);
+    const { x, y, width: w, height: h } = box ?? { x: 0, y: 0, width, height };
+    const top = height - y - h; // WebGPURenderer's scissors and the shaders' pixels count from the top left
+    this._uniforms.subsurfaceBox.value.set(x, top, x + w, top + h);
     const diffuse = scenePass.getTexture(ATTACHMENT_NAMES.DIFFUSE);
-    if (!this.plan.blur) {
+    if (!this.plan.blur || box?.width === 0) {
       this._scatteredNode.value = diffuse; // the compose reads the unblurred light: the output equals no SSS
       return undefined;
     }
@@ -327,6 +336,12 @@ export class SubsurfaceScatteringNode extends NodeWithSettings {
     if (groups > 1) this._groupFrame(this.plan.groupings[0], width, height);
     else this._horizontalTarget.setSize(width, height);
     this._scatteredTarget.setSize(width, height);
+    // The passes run in the box alone; their clear stays the whole target's (a render pass clears
+    // its whole attachment), so the vertical pass's taps beyond the box find 0 there, off the mask.
+    for (const target of [groups > 1 ? this._groupTarget : this._horizontalTarget, this._scatteredTarget]) {
+      target.scissor.set(x, top, w, h);
+      target.scissorTest = box !== null;
+    }
     const [horizontal, vertical] = this._blurMaterials(this.plan.samples, coverage, groups);
 
     _rendererState = RendererUtils.resetRendererState(renderer, _rendererState);
@@ -360,6 +375,7 @@ export class SubsurfaceScatteringNode extends NodeWithSettings {
       depthRange: this._uniforms.debugDepthRange,
       thicknessRangeMm: this._uniforms.debugThicknessRangeMm,
       share: this._uniforms.scatteredShare,
+      box: this._uniforms.subsurfaceBox,
     });
   }
 
