@@ -15,7 +15,7 @@
 //   pipeline.outputNode = subsurfaceScattering(scenePass, { worldUnitInMm: 1000, light });
 import { Node, NodeMaterial, NodeUpdateType, QuadMesh, RenderTarget, RendererUtils } from 'three/webgpu';
 import { FloatType, HalfFloatType, Vector2, Vector3, Vector4 } from 'three';
-import { passTexture, texture, uniform } from 'three/tsl';
+import { passTexture, uniform } from 'three/tsl';
 import { MAX_KERNEL_GROUPS } from '../3-blur/kernelGroups.js';
 import { ProfileLookup } from '../profiles/ProfileLookup.js';
 import { FootprintTable } from '../profiles/FootprintTable.js';
@@ -35,6 +35,7 @@ import { withSettings } from '../support/settings.js';
 import { WEBGPU_THREE, checkThreeRevision } from '../support/threeVersion.js';
 import { ATTACHMENT_NAMES } from './2-scene-split/attachments.js';
 import { subsurfaceBlurNode } from './3-blur/subsurfaceBlurTsl.js';
+import { texelTexture } from './common/surfaceTsl.js';
 import { GroupFractionTexture } from './3-blur/GroupFractionTexture.js';
 
 import { composeNode, debugViewUniform } from './4-compose/composeTsl.js';
@@ -50,7 +51,7 @@ function checkNodeMethod(method) {
   }
 }
 
-const _quadMesh = /*@__PURE__*/ new QuadMesh();
+const _quadMesh = /*@__PURE__*/ new QuadMesh(); globalThis.QUAD = _quadMesh;
 const _size = /*@__PURE__*/ new Vector2();
 let _rendererState;
 
@@ -123,8 +124,8 @@ export class SubsurfaceScatteringNode extends NodeWithSettings {
     this._groupFractions = new GroupFractionTexture();
     this._groupFractionNode = null;
     this._groupEnergies = Array.from({ length: MAX_KERNEL_GROUPS }, () => uniform(new Vector3()));
-    this._profileNode = texture(this.profileLookup.texture);
-    this._footprintNode = texture(this.footprintTable.update(this.samples === 'auto' ? 'auto' : this.samples));
+    this._profileNode = texelTexture(this.profileLookup.texture);
+    this._footprintNode = texelTexture(this.footprintTable.update(this.samples === 'auto' ? 'auto' : this.samples));
     // Planned per render, not per frame: a setting changed between two renders of one animation
     // frame (scattering, samples) is this render's (the scene pass still draws once a frame).
     this.updateBeforeType = NodeUpdateType.RENDER;
@@ -240,12 +241,12 @@ export class SubsurfaceScatteringNode extends NodeWithSettings {
     if (groups === 1) {
       materials = [
         material(subsurfaceBlurNode({ ...common, axis: 0, diffuse }), 'SubsurfaceBlur(horizontal)'),
-        material(subsurfaceBlurNode({ ...common, axis: 1, diffuse: texture(this._horizontalTarget.texture) }), 'SubsurfaceBlur(vertical)'),
+        material(subsurfaceBlurNode({ ...common, axis: 1, diffuse: texelTexture(this._horizontalTarget.texture) }), 'SubsurfaceBlur(vertical)'),
       ];
     } else {
-      this._groupFractionNode ??= texture(this._groupFractions.texture);
+      this._groupFractionNode ??= texelTexture(this._groupFractions.texture);
       const { textures } = this._groupTarget;
-      const lights = textures.map((t) => texture(t));
+      const lights = textures.map((t) => texelTexture(t));
       const split = { count: groups, fractions: this._groupFractionNode };
       materials = [
         material(subsurfaceBlurNode({ ...common, axis: 0, diffuse, groups: { ...split, names: textures.map((t) => t.name), energies: this._groupEnergies } }), `SubsurfaceBlur(horizontal, ${groups} groups)`),
@@ -352,7 +353,7 @@ export class SubsurfaceScatteringNode extends NodeWithSettings {
     _quadMesh.material = vertical;
     _quadMesh.name = 'Subsurface blur [ vertical ]';
     renderer.setRenderTarget(this._scatteredTarget);
-    _quadMesh.render(renderer);
+    if (!globalThis.SKIP_V) _quadMesh.render(renderer);
     RendererUtils.restoreRendererState(renderer, _rendererState);
   }
 

@@ -11,14 +11,14 @@
 // camera's view space.
 import {
   BRDF_Lambert, Fn, If, abs, clamp, cross, dot, float, floor, getDistanceAttenuation, int, ivec2, normalize, saturate, select, smoothstep,
-  texture, textureLoad, textureSize, uniform, vec2, vec3, vec4,
+  textureLoad, textureSize, uniform, vec2, vec3, vec4,
 } from 'three/tsl';
 import {
   LIGHT_TYPES, TRANSMITTED_LIGHT, lightUniformSlots, transmittanceUniformSlots,
 } from '../../2-scene-split/transmittanceModel.js';
 import { POINT_FACES } from '../../1-light-depth/LightDepthView.js';
 import { MATERIAL_OUTPUTS } from '../../4-compose/debugViews.js';
-import { finite3, readProfile } from '../common/surfaceTsl.js';
+import { finite3, readProfile, texelTexture } from '../common/surfaceTsl.js';
 
 /** The slots' uniforms each light has of its own (the rest, the material's settings, all lights share). */
 const PER_LIGHT = Object.freeze([
@@ -46,7 +46,7 @@ function uniformsOf(names) {
 export function transmittanceUniformNodes({ lightDepthMaps, profileLookup }) {
   const shared = {
     ...uniformsOf(Object.keys(freshSlots()).filter((name) => !PER_LIGHT.includes(name))),
-    sssProfileLookup: texture(profileLookup),
+    sssProfileLookup: texelTexture(profileLookup),
     sssTransmits: uniform(0),
     sssDebugOutput: uniform(0, 'int'),
     profileSize: profileLookup.image.width, // texels per row, fixed by ProfileLookup
@@ -54,7 +54,7 @@ export function transmittanceUniformNodes({ lightDepthMaps, profileLookup }) {
   const lights = lightDepthMaps.map((map) => ({
     ...shared,
     ...uniformsOf(PER_LIGHT), // each light its own vectors and matrices
-    sssLightDepthMap: texture(map),
+    sssLightDepthMap: texelTexture(map),
     sssTransmits: uniform(0),
     sssLightType: uniform(0, 'int'),
   }));

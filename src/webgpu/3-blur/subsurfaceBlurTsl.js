@@ -92,7 +92,7 @@ export function subsurfaceBlurNode(o) {
     // Not a subsurface pixel: pass through so the next pass sees the same mask.
     const results = unsplit.map((light) => vec4(light, 0).toVar());
     If(coverage.greaterThan(0), () => {
-      const surface = centre.surface;
+      const surface = centre.surface();
       const { stepPx, slope } = stepAt(pixel, surface); // slope: depth change per pixel along the axis, world units
       results.forEach((result, k) => result.assign(sample.covered(unsplit[k], coverage)));
       // Below half a pixel the kernel cannot move light to another pixel: no work.

@@ -5,11 +5,18 @@
 // Each builder takes the pass's inputs ({ diffuse, surface }: texture nodes read with
 // textureLoad), its uniforms and its compile-time switches (axis, followSurface, coverage).
 import {
-  abs, all, bitAnd, clamp, float, floatBitsToUint, int, ivec2, max, min, mix, notEqual, select, sqrt, textureLoad, uvec3, vec2, vec3, vec4,
+  abs, all, bitAnd, clamp, float, floatBitsToUint, int, ivec2, max, min, mix, notEqual, select, sqrt, texture as textureNode, textureLoad, uvec3, vec2, vec3, vec4,
 } from 'three/tsl';
 import { MAX_PLANE_SLOPE, MAX_SLOPE, PLANE_SLOPE_AGREEMENT } from '../../3-blur/samplingModel.js';
 
 const EXPONENT = 0x7f800000;
+
+/**
+ * A texture node for textureLoad alone: without the uv transform three applies to a texture node
+ * made without uvs (a mat3 product and two conversions per fetch, for coordinates that are texels).
+ * @param {import('three').Texture} texture
+ */
+export const texelTexture = (texture) => textureNode(texture).setUpdateMatrix(false);
 
 /**
  * finite.glsl's sssFinite: no component NaN or Inf. WGSL has no isnan and compilers may fold
@@ -60,11 +67,15 @@ export function surfaceSample({ diffuse, surface, coverage }) {
     const colour = select(finite3(rgb), rgb, vec3(0));
     return (coverage ? select(cover.greaterThan(0), colour.div(cover), colour) : colour).toVar();
   };
-  /** The pixel a surface pass shades: { colour, coverage, surface } (see SssCentre), and its texel's `rgb` as read. */
+  /**
+   * The pixel a surface pass shades: { colour, coverage, surface() } (see SssCentre), and its
+   * texel's `rgb` as read; `surface()` reads the surface where it is called (on the mask only: a
+   * pixel off it needs none).
+   */
   const centreAt = (pixel) => {
     const light = textureLoad(diffuse, pixel).toVar();
     const cover = select(light.a.greaterThan(0), light.a, float(0)).toVar();
-    return { colour: colourOf(light.rgb, cover), coverage: cover, surface: uncovered(textureLoad(surface, pixel).xy, cover).toVar(), rgb: light.rgb };
+    return { colour: colourOf(light.rgb, cover), coverage: cover, surface: () => uncovered(textureLoad(surface, pixel).xy, cover).toVar(), rgb: light.rgb };
   };
   /** A surface pass's output: premultiplied by the centre's coverage, as its input was. */
   const covered = (colour, c) => vec4(vec3(colour).mul(c), c);
