@@ -32,7 +32,7 @@ import { buildScene } from '../scenes.js';
 const THIS = { ...LIBRARY, ...NODE };
 const BASE = { ...BASE_LIBRARY, ...BASE_NODE };
 
-async function composerRow(width, height, { sss = true, kernelGroups = 1, lib = THIS } = {}) {
+async function composerRow(width, height, { sss = true, kernelGroups = 1, lib = THIS, scattering = true } = {}) {
   const built = await buildScene('head', { aspect: width / height });
   const renderer = new WebGLRenderer({ antialias: false });
   renderer.setSize(width, height, false);
@@ -41,7 +41,7 @@ async function composerRow(width, height, { sss = true, kernelGroups = 1, lib = 
   composer.renderToScreen = false;
   let pipeline = null;
   if (sss) {
-    pipeline = new lib.SubsurfaceScattering({ scene: built.scene, camera: built.camera, worldUnitInMm: built.worldUnitInMm, light: null, kernelGroups });
+    pipeline = new lib.SubsurfaceScattering({ scene: built.scene, camera: built.camera, worldUnitInMm: built.worldUnitInMm, light: null, kernelGroups, scattering });
     for (const m of built.subsurface) pipeline.makeSubsurface(m, { widthMm: built.widthMm });
     composer.addPass(pipeline);
   } else {
@@ -59,7 +59,7 @@ async function composerRow(width, height, { sss = true, kernelGroups = 1, lib = 
 }
 
 /** `stage`: 'plain', 'split' (the split's colour output), 'noBlur' (the node, scattering off) or 'node'. */
-async function webgpuRow(width, height, { backend, stage, kernelGroups = 1, lib = THIS }) {
+async function webgpuRow(width, height, { backend, stage, kernelGroups = 1, lib = THIS, extra = {} }) {
   const { subsurfaceMaterial, subsurfaceMRT, subsurfaceScattering, ATTACHMENT_NAMES } = lib;
   const built = await buildScene('head', { aspect: width / height });
   const renderer = new THREE.WebGPURenderer({ antialias: false, forceWebGL: backend === 'webgl' });
@@ -77,7 +77,7 @@ async function webgpuRow(width, height, { backend, stage, kernelGroups = 1, lib 
     if (stage === 'split') {
       pipeline.outputNode = scenePass.getTextureNode(ATTACHMENT_NAMES.COLOR);
     } else {
-      sss = subsurfaceScattering(scenePass, { worldUnitInMm: built.worldUnitInMm, kernelGroups, scattering: stage === 'node' });
+      sss = subsurfaceScattering(scenePass, { worldUnitInMm: built.worldUnitInMm, kernelGroups, scattering: stage === 'node', ...extra });
       pipeline.outputNode = sss;
     }
   }
@@ -96,6 +96,7 @@ async function webgpuRow(width, height, { backend, stage, kernelGroups = 1, lib 
 const ROWS = {
   composerPlain: (w, h) => composerRow(w, h, { sss: false }),
   composer: (w, h) => composerRow(w, h),
+  composerNoBlur: (w, h) => composerRow(w, h, { scattering: false }),
   webgpuPlain: (w, h) => webgpuRow(w, h, { backend: 'webgpu', stage: 'plain' }),
   webgpuSplit: (w, h) => webgpuRow(w, h, { backend: 'webgpu', stage: 'split' }),
   webgpuNoBlur: (w, h) => webgpuRow(w, h, { backend: 'webgpu', stage: 'noBlur' }),

@@ -337,8 +337,9 @@ export class SubsurfaceScatteringNode extends NodeWithSettings {
     if (groups > 1) this._groupFrame(this.plan.groupings[0], width, height);
     else this._horizontalTarget.setSize(width, height);
     this._scatteredTarget.setSize(width, height);
-    // The passes run in the box alone; their clear stays the whole target's (a render pass clears
-    // its whole attachment), so the vertical pass's taps beyond the box find 0 there, off the mask.
+    // The passes run in the box alone, their targets not cleared: a render pass's clear is its
+    // whole attachment's, whatever the scissor (on SwiftShader it cost more than a pass over the
+    // head). Every pixel of the box is written; outside it the taps and the compose read nothing.
     for (const target of [groups > 1 ? this._groupTarget : this._horizontalTarget, this._scatteredTarget]) {
       target.scissor.set(x, top, w, h);
       target.scissorTest = box !== null;
@@ -346,6 +347,7 @@ export class SubsurfaceScatteringNode extends NodeWithSettings {
     const [horizontal, vertical] = this._blurMaterials(this.plan.samples, coverage, groups);
 
     _rendererState = RendererUtils.resetRendererState(renderer, _rendererState);
+    renderer.autoClear = false;
     _quadMesh.material = horizontal;
     _quadMesh.name = 'Subsurface blur [ horizontal ]';
     renderer.setRenderTarget(groups > 1 ? this._groupTarget : this._horizontalTarget);
@@ -353,7 +355,7 @@ export class SubsurfaceScatteringNode extends NodeWithSettings {
     _quadMesh.material = vertical;
     _quadMesh.name = 'Subsurface blur [ vertical ]';
     renderer.setRenderTarget(this._scatteredTarget);
-    if (!globalThis.SKIP_V) _quadMesh.render(renderer);
+    _quadMesh.render(renderer);
     RendererUtils.restoreRendererState(renderer, _rendererState);
   }
 

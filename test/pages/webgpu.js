@@ -531,6 +531,79 @@ async function sameFrame({ backend = 'webgpu', width = 96, height = 54 }) {
 }
 
 /**
+ * The WebGL pipeline frame test's scene (test/browser/pipelineFrame.test.js) through the node: a
+ * subsurface sphere (noise albedo) over an ordinary floor, a second one half hidden behind it, an
+ * ordinary box in front; a directional light casting shadows; 192 × 108, float. Each variant is a
+ * fresh node (`sss`: its options; `samples`: the scene pass's MSAA); `moved`: one frame with the
+ * spheres higher and to the right first, so the subsurface box moves between frames (the blur's targets are not
+ * cleared outside it). Returns each variant's output, its scattered light inside the box, the box
+ * (x0, y0, x1, y1 from the top left), the plan, and the diffuse attachment's alpha of the first.
+ */
+async function boxFrames({ backend = 'webgpu', variants }) {
+  const width = 192;
+  const height = 108;
+  const renderer = await sharedRenderer(backend, width, height);
+  renderer.shadowMap.enabled = true;
+  const scene = new THREE.Scene();
+  const camera = new THREE.PerspectiveCamera(30, width / height, 0.5, 50);
+  camera.position.set(0, 0.6, 8);
+  camera.lookAt(0, 0, 0);
+  const map = window.lab.dataTexture(32, 32, (x, y) => { const v = 0.1 + 0.9 * (((x * 7 + y * 13) % 17) / 16); return [v, 0.8 * v, 0.6 * v]; });
+  const skin = NODE.subsurfaceMaterial(new THREE.MeshStandardMaterial({ color: 0xffffff, roughness: 0.6, map }));
+  const skinBehind = NODE.subsurfaceMaterial(new THREE.MeshStandardMaterial({ color: 0xffccaa, roughness: 0.8 }));
+  const front = new THREE.Mesh(new THREE.SphereGeometry(0.9, 48, 32), skin);
+  const behind = new THREE.Mesh(new THREE.SphereGeometry(0.7, 32, 24), skinBehind);
+  behind.position.set(0.9, 0.3, -1.2);
+  const box = new THREE.Mesh(new THREE.BoxGeometry(0.5, 0.5, 0.5), new THREE.MeshStandardMaterial({ color: 0x3366cc }));
+  box.position.set(-0.7, -0.3, 1.2);
+  const floor = new THREE.Mesh(new THREE.PlaneGeometry(12, 12), new THREE.MeshStandardMaterial({ color: 0x999999 }));
+  floor.rotation.x = -Math.PI / 2;
+  floor.position.y = -1;
+  for (const m of [front, behind, box]) m.castShadow = m.receiveShadow = true;
+  floor.receiveShadow = true;
+  const light = new THREE.DirectionalLight(0xffffff, 3);
+  light.position.set(-3, 5, 4);
+  light.castShadow = true;
+  Object.assign(light.shadow.camera, { left: -4, right: 4, top: 4, bottom: -4, near: 0.5, far: 20 });
+  scene.add(front, behind, box, floor, light, light.target, new THREE.AmbientLight(0xffffff, 0.2));
+  const spheres = [front, behind];
+  const home = spheres.map((m) => m.position.clone());
+  const target = new THREE.RenderTarget(width, height, { type: THREE.FloatType });
+  const render = (pipeline) => {
+    renderer.setRenderTarget(target);
+    pipeline.render();
+    renderer.setRenderTarget(null);
+  };
+  const out = {};
+  for (const [name, { sss = {}, samples = 0, moved = false }] of Object.entries(variants)) {
+    const built = subsurfacePipeline(renderer, scene, camera, { type: THREE.FloatType, samples, sss: { worldUnitInMm: 100, light, ...sss } });
+    if (moved) {
+      spheres.forEach((m) => { m.position.x += 0.4; m.position.y += 0.6; }); // up: the vertical pass's taps reach the rows left behind
+      render(built.pipeline);
+      spheres.forEach((m, i) => m.position.copy(home[i]));
+      await new Promise((resolve) => { requestAnimationFrame(() => resolve()); }); // the light stage runs once a frame
+    }
+    render(built.pipeline);
+    const [x0, y0, x1, y1] = built.node._uniforms.subsurfaceBox.value.toArray();
+    const scattered = await readFloats(renderer, built.node._scatteredTarget);
+    // Rows bottom-up (readFloats): the box's rows from the top are height − 1 − y.
+    const inBox = scattered.map((v, i) => { const x = (i >> 2) % width; const y = height - 1 - Math.floor((i >> 2) / width); return x >= x0 && x < x1 && y >= y0 && y < y1 ? v : 0; });
+    const { groupings, ...plan } = built.node.plan;
+    out[name] = { output: await readFloats(renderer, target), scattered: inBox, box: [x0, y0, x1, y1], plan };
+    if (name === Object.keys(variants)[0] && samples === 0) out[name].mask = (await readFloats(renderer, built.scenePass.renderTarget, 'diffuse')).filter((_, i) => i % 4 === 3);
+    built.node.dispose();
+    built.pipeline.dispose();
+    built.scenePass.dispose();
+    await new Promise((resolve) => { requestAnimationFrame(() => resolve()); });
+  }
+  renderer.shadowMap.enabled = false;
+  target.dispose();
+  for (const m of [skin, skinBehind, box.material, floor.material]) m.dispose();
+  map.dispose();
+  return { width, height, ...out };
+}
+
+/**
  * The lights of issue 43 on the node, the WebGL lights test's scene (test/browser/1-light-depth/
  * lights.test.js): a white slab `thicknessMm` thick (metres, 0.2 m wide) seen from the front at
  * 0.3 m, lit from behind only, `size` pixels square. `lights(THREE)` names the lights (added to the
@@ -692,6 +765,6 @@ const nodeCastShadow = ({ backend }) => slabLightFrames({
 
 window.wgpu = {
   THREE, NODE, pass, createRenderer, readFloats, subsurfacePipeline, flat, disposeFlatRig, head, disposal, plainDraw, debugViews, labScene, labScenePlain, lightDepthCards,
-  dollyOpen, dollyFrames, dollyClose, lightAssigned, sameFrame, nearLight, nodeLightList, nodePointLight, nodeCastShadow,
+  dollyOpen, dollyFrames, dollyClose, lightAssigned, sameFrame, nearLight, nodeLightList, nodePointLight, nodeCastShadow, boxFrames,
 };
 window.testReady = true;

@@ -44,7 +44,8 @@ const normalised = (sum, weightSum, fallback) => vec3(
  * @param {object} o.profile texture node of ProfileLookup.texture
  * @param {number} o.profileSize its texels per row
  * @param {object} o.footprints texture node of FootprintTable.texture
- * @param {object} o.uniforms { kernelRadiusMm, strength, projectionScale, resolution, depthFalloff, perspective, mmToWorld, marginalRangeMm }
+ * @param {object} o.uniforms { kernelRadiusMm, strength, projectionScale, resolution, depthFalloff, perspective, mmToWorld, marginalRangeMm,
+ *   subsurfaceBox (x0, y0, x1, y1: the subsurface pixels' box, from the top left; the passes run in it) }
  * @param {object} [o.groups] the isotropic blur (absent: one kernel): { count, fractions: texture
  *   node of GroupFractionTexture; horizontal: names (the multi-target's attachment of each group,
  *   its light times the group's planned share) and energies (uniform vec3s: each group's share of
@@ -70,7 +71,8 @@ export function subsurfaceBlurNode(o) {
   const partsOf = (weight, column, row) => sumGroups.map((g) => (g === null ? weight
     : weight.mul(textureLoad(groups.fractions, ivec2(column, row.add(g * FOOTPRINT_ROWS))).rgb)));
 
-  const addTap = tapAdder({ axis, lights, lightOf, tapWeight, resolutionAlong });
+  const boxAlong = axis === 0 ? [u.subsurfaceBox.x, u.subsurfaceBox.z] : [u.subsurfaceBox.y, u.subsurfaceBox.w];
+  const addTap = tapAdder({ axis, lights, lightOf, tapWeight, resolutionAlong, boxAlong });
   const stepAt = axisStep({ axis, scale, slopeAt, foreshorten: o.foreshorten });
   const footprintAt = footprintStep({ footprints: o.footprints, profileAt, marginalRangeMm: u.marginalRangeMm, blocks });
 

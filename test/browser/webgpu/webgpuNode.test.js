@@ -11,6 +11,9 @@
 //   kernel and with the isotropic blur's two, three and four groups; on WebGPU
 //   (its surface attachment in half float: WebGPU multisamples no 32-bit float format) as close
 //   to it as WebGPU's own MSAA frame is to WebGLRenderer's;
+// - the subsurface box (the blur runs there only, its targets not cleared outside it): every
+//   subsurface pixel inside it, and a box that moved between frames leaves the same floats, with
+//   one kernel, four groups and MSAA (the WebGL pipeline's test/browser/pipelineFrame.test.js);
 // - dispose, after frames with one kernel, with scattering off, in four, three and two groups and
 //   in one kernel again (each count's target and materials built, the previous freed), returns the
 //   renderer to its baseline (renderer.info.memory: geometries, textures, render targets, programs; one attribute stays, the full-screen quad's geometry that the node,
@@ -40,8 +43,36 @@ const run = (name, options) => page.evaluate(async (n, o) => {
   return Object.fromEntries(Object.entries(r).map(([k, v]) => [k, v instanceof Uint8Array ? Array.from(v) : v]));
 }, name, options).then(bytes);
 
+const maxDifference = (a, b) => a.reduce((worst, v, i) => Math.max(worst, Math.abs(v - b[i])), 0);
+
 for (const backend of BACKENDS) {
   describe(`the node on ${backend}`, () => {
+    it('blurs in the subsurface box alone: every subsurface pixel in it, and a box that moved between frames leaves the same floats (one kernel, four groups, MSAA)', async () => {
+      const r = await evaluateFloats(page, (o) => window.wgpu.boxFrames(o), {
+        backend,
+        variants: {
+          base: {}, moved: { moved: true }, isotropic: { sss: { kernelGroups: 4 } }, isotropicMoved: { sss: { kernelGroups: 4 }, moved: true },
+          msaa: { samples: 4 }, msaaMoved: { samples: 4, moved: true },
+        },
+      });
+      const [x0, y0, x1, y1] = r.base.box;
+      expect(r.base.plan).toMatchObject({ blur: true, groups: 1 });
+      expect(r.isotropic.plan.groups).toBe(4);
+      // A box smaller than the frame (the whole frame would test nothing), holding every subsurface pixel.
+      expect((x1 - x0) * (y1 - y0)).toBeLessThan(0.6 * r.width * r.height);
+      expect((x1 - x0) * (y1 - y0)).toBeGreaterThan(0.05 * r.width * r.height);
+      r.base.mask.forEach((alpha, i) => {
+        const x = i % r.width;
+        const y = r.height - 1 - Math.floor(i / r.width); // rows bottom-up; the box's from the top
+        if (alpha !== 0) expect(x >= x0 && x < x1 && y >= y0 && y < y1, `pixel ${x}, ${y}`).toBe(true);
+      });
+      for (const [moved, base] of [['moved', 'base'], ['isotropicMoved', 'isotropic'], ['msaaMoved', 'msaa']]) {
+        expect(maxDifference(r[moved].output, r[base].output), moved).toBe(0);
+        expect(maxDifference(r[moved].scattered, r[base].scattered), moved).toBe(0);
+      }
+    });
+
+
     it('draws the head as the EffectComposer path does: mean |difference| ≤ 1/255, 99th percentile ≤ 4/255', async () => {
       // The demo's framing, and a close-up (8°: about 3 px per mm) where the scattering shows.
       for (const fovDeg of [25, 8]) {
