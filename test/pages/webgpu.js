@@ -8,6 +8,7 @@ import * as NODE from '/src/webgpu/index.js';
 import { flatScene } from './flatScene.js';
 import { HEAD_WORLD_UNIT_IN_MM, setLightDirection } from '/demo/headScene.js';
 import { headRig } from './headRig.js';
+import { ATTACHMENTS } from '/src/2-scene-split/subsurfaceTarget.js';
 import './lab.js'; // window.lab: the WebGL pipeline's side of the comparisons
 import { estimatePixelsPerMm } from '/src/framePlan.js';
 import { distanceForScale, dollyDirection, placeOnDolly, scatteringSignal, dollyDepartures } from './dolly.js';
@@ -284,6 +285,50 @@ async function debugViews({ backend = 'webgpu', width = 96, height = 54 }) {
 }
 
 /**
+ * The box through the node with an ArrayCamera of two views (fov 20 and 40) and with scattering
+ * off (issue 40: the node blurs one view, so it draws an ArrayCamera's views unscattered, said once):
+ * the output of each (linear float) and the node's problems.
+ */
+async function arrayCamera({ backend = 'webgpu', width = 96, height = 54 }) {
+  const renderer = await createRenderer(width, height, { backend });
+  const material = new THREE.MeshStandardMaterial({ color: 0xffccaa, roughness: 0.6 });
+  const { scene, camera, mesh } = boxScene(material);
+  mesh.material = NODE.subsurfaceMaterial(material, { widthMm: 5 });
+  const views = [20, 40].map((fov, i) => {
+    const view = new THREE.PerspectiveCamera(fov, width / 2 / height, 0.1, 50);
+    view.position.copy(camera.position);
+    view.updateMatrixWorld();
+    view.viewport = new THREE.Vector4(i * width / 2, 0, width / 2, height);
+    return view;
+  });
+  const array = new THREE.ArrayCamera(views);
+  array.position.copy(camera.position);
+  const target = new THREE.RenderTarget(width, height, { type: THREE.FloatType });
+  const out = {};
+  for (const scattering of [true, false]) {
+    const { scenePass, node, pipeline } = subsurfacePipeline(renderer, scene, array, { sss: { worldUnitInMm: 100, scattering } });
+    renderer.setRenderTarget(target);
+    pipeline.render();
+    renderer.setRenderTarget(null);
+    out[scattering ? 'asked' : 'off'] = { image: await readFloats(renderer, target), problems: [...node.problems], blur: node.plan.blur };
+    node.dispose();
+    pipeline.dispose();
+    scenePass.dispose();
+  }
+  // three's own frame of the views: the box's own material, no pipeline.
+  const subsurface = mesh.material;
+  mesh.material = material;
+  renderer.setRenderTarget(target);
+  renderer.render(scene, array);
+  renderer.setRenderTarget(null);
+  out.three = await readFloats(renderer, target);
+  target.dispose();
+  subsurface.dispose();
+  renderer.dispose();
+  return out;
+}
+
+/**
  * One of the WebGL lab's scenes (lab.js's SCENES, its defaults: 10 mm per unit) through the node,
  * its subsurface materials as node materials, the scene pass multisampled with `samples`, and the
  * scene's light for transmittance where `transmittance`: the diffuse attachment (float, before
@@ -465,6 +510,52 @@ async function lightAssigned({ backend = 'webgpu', width = 96, height = 54 }) {
   skin.dispose();
   built.subsurface[0].dispose();
   return { made, assigned };
+}
+
+/**
+ * The settings a light needs, set at once in either key order (issue 40): the lab's back-lit slab
+ * through a node made without a light; `order` 'forward' or 'backward' assigns each step's settings
+ * in that key order. Per step: the diffuse attachment, the node's output (linear float) and problems;
+ * `made`: the diffuse attachment of a node made with the light.
+ */
+async function lightKeyOrder({ backend = 'webgpu', width = 48, height = 27, order = 'forward' }) {
+  const renderer = await sharedRenderer(backend, width, height);
+  const built = window.lab.buildScene('backlit', { width, height, thicknessMm: 1 });
+  const sun = built.light;
+  built.scene.add(new THREE.AmbientLight(0xffffff, 1)); // diffuse light in front: what a thickness view must not show
+  const skin = NODE.subsurfaceMaterial(built.subsurface[0], { widthMm: 1, shrinkMm: 0.6 });
+  built.scene.traverse((object) => { if (object.material === built.subsurface[0]) object.material = skin; });
+  const target = new THREE.RenderTarget(width, height, { type: THREE.FloatType });
+  const frames = async (light, steps) => {
+    const { scenePass, node, pipeline } = subsurfacePipeline(renderer, built.scene, built.camera, { type: THREE.FloatType, sss: { worldUnitInMm: 10, light } });
+    const out = {};
+    for (const [label, settings] of steps) {
+      await new Promise((resolve) => { requestAnimationFrame(() => resolve()); }); // a frame each: the scene pass draws once a frame
+      const entries = Object.entries(settings);
+      Object.assign(node, Object.fromEntries(order === 'forward' ? entries : entries.reverse()));
+      renderer.setRenderTarget(target);
+      pipeline.render();
+      renderer.setRenderTarget(null);
+      out[label] = {
+        diffuse: await readFloats(renderer, scenePass.renderTarget, 'diffuse'), output: await readFloats(renderer, target),
+        problems: [...node.problems], transmittance: node.transmittance, debugView: node.debugView,
+      };
+    }
+    node.dispose();
+    pipeline.dispose();
+    scenePass.dispose();
+    return out;
+  };
+  const made = (await frames(sun, [['made', {}]])).made;
+  const steps = await frames(null, [
+    ['transmittance and the light', { transmittance: true, light: sun }],
+    ['no light and the thickness view', { light: null, debugView: 'thickness' }],
+    ['the light again', { light: sun }],
+  ]);
+  target.dispose();
+  skin.dispose();
+  built.subsurface[0].dispose();
+  return { made, steps };
 }
 
 /**
@@ -655,7 +746,7 @@ async function webglSlabFrame(scene, camera, slab, plain, light, size) {
   const composer = L.createComposer(gl, { type: THREE.FloatType });
   composer.addPass(sss);
   composer.render();
-  const diffuse = await L.read(gl, sss._scenePass.renderTarget, 1);
+  const diffuse = await L.read(gl, sss._scenePass.renderTarget, ATTACHMENTS.DIFFUSE);
   sss.dispose();
   composer.dispose();
   gl.dispose();
@@ -765,6 +856,6 @@ const nodeCastShadow = ({ backend }) => slabLightFrames({
 
 window.wgpu = {
   THREE, NODE, pass, createRenderer, readFloats, subsurfacePipeline, flat, disposeFlatRig, head, disposal, plainDraw, debugViews, labScene, labScenePlain, lightDepthCards,
-  dollyOpen, dollyFrames, dollyClose, lightAssigned, sameFrame, nearLight, nodeLightList, nodePointLight, nodeCastShadow, boxFrames,
+  dollyOpen, dollyFrames, dollyClose, lightAssigned, lightKeyOrder, sameFrame, nearLight, arrayCamera, nodeLightList, nodePointLight, nodeCastShadow, boxFrames,
 };
 window.testReady = true;

@@ -14,7 +14,7 @@ import { CAST_SHADOW, MAX_LIGHTS, lightsOf } from '../../options.js';
 import {
   isShining, lightReachesFromBehind, transmittanceSettings, writeTransmittedLight,
 } from '../../2-scene-split/transmittanceModel.js';
-import { subsurfaceMeshesOf } from '../2-scene-split/subsurfaceNodeMaterial.js';
+import { isSubsurfaceNodeMaterial, subsurfaceMaterialsOf } from '../2-scene-split/subsurfaceNodeMaterial.js';
 import { LightDepthNodeTarget } from './LightDepthNodeTarget.js';
 
 const transmits = (material) => material.isSubsurfaceNodeMaterial === true && material.transmittance;
@@ -55,20 +55,22 @@ export class LightStageNode extends Node {
    */
   updateBefore({ renderer }) {
     const { scene, camera } = this.owner.scenePass;
+    // The matrices as the scene pass's render will see them (three updates them the same way),
+    // then what the frame covers (src/frameMeshes.js), for the lights' maps and the node's plan.
+    if (scene.matrixWorldAutoUpdate === true) scene.updateMatrixWorld();
+    if (camera.parent === null && camera.matrixWorldAutoUpdate === true) camera.updateMatrixWorld();
+    const frame = this.owner.frame.update(scene, camera, isSubsurfaceNodeMaterial);
     const checks = this.checks.begin();
     // 'castShadow': the scene's lights that cast shadows now, more than MAX_LIGHTS said once.
     if (this.owner.light === CAST_SHADOW) this._castShadowLights(scene, checks);
     const maps = this.lightDepths.slice(0, this.count);
-    if (maps.length > 0) {
-      // The matrices as the scene pass's render will see them (three updates them the same way).
-      if (scene.matrixWorldAutoUpdate === true) scene.updateMatrixWorld();
-      if (camera.parent === null && camera.matrixWorldAutoUpdate === true) camera.updateMatrixWorld();
-    }
-    const works = maps.map((lightDepth) => checks.light(lightDepth, scene, this.owner.transmittance, transmits));
+    if (maps.length === 0) checks.withoutLight(this.owner._transmittanceAsked, this.owner.debugView);
+    // The lights' checks fit their maps to the transmitting meshes on the screen.
+    const works = maps.map((lightDepth) => checks.light(lightDepth, frame, this.owner.transmittance, transmits));
     checks.end();
-    maps.forEach((lightDepth, i) => this._renderLightDepth(lightDepth, works[i], renderer, scene, camera));
+    maps.forEach((lightDepth, i) => this._renderLightDepth(lightDepth, works[i], renderer, frame, camera));
     // Without a light (any more) the materials keep a set for the map kept, sending nothing.
-    if (this.lightDepths.length > 0) this._writeUniforms(maps, subsurfaceMeshesOf(scene).materials, scene, camera);
+    if (this.lightDepths.length > 0) this._writeUniforms(maps, subsurfaceMaterialsOf(frame.onScreen), scene, camera);
   }
 
   /**
@@ -89,6 +91,7 @@ export class LightStageNode extends Node {
     for (const extra of maps.splice(Math.max(used.length, 1))) extra.dispose(); // the first stays, for the next light
     maps[0]?.invalidate(); // transmittance from it comes again once it is drawn for its light
     this.count = used.length;
+    this.owner._uniforms.lightShown.value = this.count > 0 ? 1 : 0;
   }
 
   /** The maps of the scene's shadow-casting lights (`light` 'castShadow'), this frame's. */
@@ -103,9 +106,10 @@ export class LightStageNode extends Node {
   }
 
   /** A light's map, or marked out of date (nothing is transmitted from it) when it would go unread or the light does not work. */
-  _renderLightDepth(lightDepth, works, renderer, scene, camera) {
-    const read = materialOutputOf(this.owner.debugView) === 'thickness' || lightReachesFromBehind(lightDepth.light, scene, camera, transmits);
-    if (works && isShining(lightDepth.light, scene, camera) && read) lightDepth.render(renderer, scene);
+  _renderLightDepth(lightDepth, works, renderer, frame, camera) {
+    const { scene } = frame;
+    const read = materialOutputOf(this.owner.debugView) === 'thickness' || lightReachesFromBehind(lightDepth.light, frame.onScreen, camera, transmits);
+    if (works && isShining(lightDepth.light, scene, camera) && read) lightDepth.render(renderer, scene, frame);
     else lightDepth.invalidate();
   }
 

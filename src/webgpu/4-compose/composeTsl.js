@@ -31,8 +31,10 @@ const is = (u, view) => u.equal(DEBUG_VIEWS.indexOf(view));
  *   the top left): outside it only the colour is read, and inside it the mask comes from the
  *   scattered light's alpha (the unblurred light is read only where it is shown: the blur fading
  *   in, the thickness and transmittance views), as compose.frag.glsl's maskBox
+ * @param {object} o.lightShown 1 with a light, 0 without (a float uniform): the thickness and
+ *   transmittance views then show none, as on the WebGL pipeline, whose materials write 0 there
  */
-export function composeNode({ colour, unscattered, scattered, surface, view, depthRange, thicknessRangeMm, share, box }) {
+export function composeNode({ colour, unscattered, scattered, surface, view, depthRange, thicknessRangeMm, share, box, lightShown }) {
   return Fn(() => {
     const pixel = ivec2(screenCoordinate.xy).toVar();
     const light = textureLoad(colour, pixel).toVar();
@@ -59,8 +61,8 @@ export function composeNode({ colour, unscattered, scattered, surface, view, dep
       const viewDepth = textureLoad(surface, pixel).r;
       result.assign(vec3(select(viewDepth.greaterThan(0), viewDepth.div(depthRange).oneMinus(), float(0))));
     });
-    If(is(view, DEBUG_VIEW.THICKNESS), () => { result.assign(vec3(before.r.div(thicknessRangeMm))); });
-    If(is(view, DEBUG_VIEW.TRANSMITTANCE), () => { result.assign(before); });
+    If(is(view, DEBUG_VIEW.THICKNESS), () => { result.assign(vec3(before.r.div(thicknessRangeMm)).mul(lightShown)); });
+    If(is(view, DEBUG_VIEW.TRANSMITTANCE), () => { result.assign(before.mul(lightShown)); });
     // Never hand NaN or Inf to tone mapping.
     return vec4(select(finite3(result), result, vec3(0)), light.a);
   })();
