@@ -18,6 +18,7 @@ export function webgpuOverheads(m) {
   for (const backend of ['webgpu', 'webgl']) {
     put(overOwnPlain, backend, ratio(m[`${backend}Node`], m[`${backend}Plain`]));
     put(overOwnPlain, `${backend}Base`, ratio(m[`${backend}NodeBase`], m[`${backend}Plain`]));
+    put(overOwnPlain, `${backend}Away`, ratio(m[`${backend}NodeAway`], m[`${backend}PlainAway`])); // nothing subsurface on the screen
   }
   const nodeStagesMs = {};
   for (const backend of ['webgpu', 'webgl']) {

@@ -3,12 +3,15 @@
 // by frame in interleaved rounds:
 //   composerPlain   WebGLRenderer, EffectComposer with RenderPass and OutputPass
 //   composer        the same with SubsurfaceScattering in place of RenderPass
+//   composerNoBlur  the same with `scattering: false`
 //   webgpuPlain     WebGPURenderer (WebGPU), RenderPipeline over pass(scene, camera)
 //   webgpuSplit     the same pass with subsurfaceMRT() and the subsurface materials, showing its
 //                   colour output: the scene split alone
 //   webgpuNoBlur    the node with `scattering: false`: the split and the compose
 //   webgpuNode      the node
-//   webgl…          the same four on WebGPURenderer's WebGL 2 backend (forceWebGL)
+//   webgpuPlainAway, webgpuNodeAway  plain and the node with the camera turned to the head's side:
+//                   nothing subsurface on the screen
+//   webgl…          the same six on WebGPURenderer's WebGL 2 backend (forceWebGL)
 //   …Isotropic      composer, webgpuNode and webglNode with kernelGroups 'auto' (the isotropic blur)
 //   …Base           composer, webgpuNode and webglNode with the base checkout's library
 //                   (bench/webgpu/run.js --base): before and after in the same rounds
@@ -58,10 +61,15 @@ async function composerRow(width, height, { sss = true, kernelGroups = 1, lib = 
   };
 }
 
-/** `stage`: 'plain', 'split' (the split's colour output), 'noBlur' (the node, scattering off) or 'node'. */
-async function webgpuRow(width, height, { backend, stage, kernelGroups = 1, lib = THIS, extra = {} }) {
+/**
+ * `stage`: 'plain', 'split' (the split's colour output), 'noBlur' (the node, scattering off) or
+ * 'node'; `away`: the camera turned to the head's side (bench/sceneGraphPage.js's offScreen view),
+ * nothing subsurface on the screen.
+ */
+async function webgpuRow(width, height, { backend, stage, kernelGroups = 1, lib = THIS, away = false }) {
   const { subsurfaceMaterial, subsurfaceMRT, subsurfaceScattering, ATTACHMENT_NAMES } = lib;
   const built = await buildScene('head', { aspect: width / height });
+  if (away) built.camera.lookAt(built.camera.position.clone().add(new THREE.Vector3(-1, 0, -0.3)));
   const renderer = new THREE.WebGPURenderer({ antialias: false, forceWebGL: backend === 'webgl' });
   renderer.setSize(width, height, false);
   renderer.toneMapping = THREE.ACESFilmicToneMapping;
@@ -77,7 +85,7 @@ async function webgpuRow(width, height, { backend, stage, kernelGroups = 1, lib 
     if (stage === 'split') {
       pipeline.outputNode = scenePass.getTextureNode(ATTACHMENT_NAMES.COLOR);
     } else {
-      sss = subsurfaceScattering(scenePass, { worldUnitInMm: built.worldUnitInMm, kernelGroups, scattering: stage === 'node', ...extra });
+      sss = subsurfaceScattering(scenePass, { worldUnitInMm: built.worldUnitInMm, kernelGroups, scattering: stage === 'node' });
       pipeline.outputNode = sss;
     }
   }
@@ -101,10 +109,14 @@ const ROWS = {
   webgpuSplit: (w, h) => webgpuRow(w, h, { backend: 'webgpu', stage: 'split' }),
   webgpuNoBlur: (w, h) => webgpuRow(w, h, { backend: 'webgpu', stage: 'noBlur' }),
   webgpuNode: (w, h) => webgpuRow(w, h, { backend: 'webgpu', stage: 'node' }),
+  webgpuPlainAway: (w, h) => webgpuRow(w, h, { backend: 'webgpu', stage: 'plain', away: true }),
+  webgpuNodeAway: (w, h) => webgpuRow(w, h, { backend: 'webgpu', stage: 'node', away: true }),
   webglPlain: (w, h) => webgpuRow(w, h, { backend: 'webgl', stage: 'plain' }),
   webglSplit: (w, h) => webgpuRow(w, h, { backend: 'webgl', stage: 'split' }),
   webglNoBlur: (w, h) => webgpuRow(w, h, { backend: 'webgl', stage: 'noBlur' }),
   webglNode: (w, h) => webgpuRow(w, h, { backend: 'webgl', stage: 'node' }),
+  webglPlainAway: (w, h) => webgpuRow(w, h, { backend: 'webgl', stage: 'plain', away: true }),
+  webglNodeAway: (w, h) => webgpuRow(w, h, { backend: 'webgl', stage: 'node', away: true }),
   composerIsotropic: (w, h) => composerRow(w, h, { kernelGroups: 'auto' }),
   webgpuNodeIsotropic: (w, h) => webgpuRow(w, h, { backend: 'webgpu', stage: 'node', kernelGroups: 'auto' }),
   webglNodeIsotropic: (w, h) => webgpuRow(w, h, { backend: 'webgl', stage: 'node', kernelGroups: 'auto' }),

@@ -9,6 +9,7 @@ import { flatScene } from './flatScene.js';
 import { HEAD_WORLD_UNIT_IN_MM, setLightDirection } from '/demo/headScene.js';
 import { headRig } from './headRig.js';
 import { ATTACHMENTS } from '/src/2-scene-split/subsurfaceTarget.js';
+import { ROWS as SCENE_GRAPH_ROWS, WIDTH as SCENE_GRAPH_WIDTH, HEIGHT as SCENE_GRAPH_HEIGHT, WIDTH_MM as SCENE_GRAPH_WIDTH_MM, compare } from './sceneGraph.js';
 import './lab.js'; // window.lab: the WebGL pipeline's side of the comparisons
 import { estimatePixelsPerMm } from '/src/framePlan.js';
 import { distanceForScale, dollyDirection, placeOnDolly, scatteringSignal, dollyDepartures } from './dolly.js';
@@ -854,8 +855,68 @@ const nodeCastShadow = ({ backend }) => slabLightFrames({
   },
 });
 
+/**
+ * A row of the WebGL scene graph matrix through the node: test/pages/sceneGraph.js's scenes (the
+ * feature, and where the row has one the same picture drawn without it), drawn by three's own
+ * RenderPipeline ('plain': the scene pass alone) and by the node with scattering and transmittance
+ * off and on (its materials: the scene's 'skin' ones made subsurface), each the second of two
+ * frames, read as floats. Returns the comparisons (sceneGraph.js's compare) and each frame's render
+ * and draw calls, the light maps drawn, the node's plan, its meshes on the screen and problems.
+ */
+async function sceneGraphRow({ backend = 'webgpu', name }) {
+  const [width, height] = [SCENE_GRAPH_WIDTH, SCENE_GRAPH_HEIGHT];
+  const renderer = await sharedRenderer(backend, width, height);
+  const target = new THREE.RenderTarget(width, height, { type: THREE.FloatType });
+  const { feature, reference, referenceOptions } = SCENE_GRAPH_ROWS[name];
+  const frame = async ({ scene, camera, light }, mode, options = {}) => {
+    const made = new Map(); // one subsurface material per 'skin' material (clones keep sharing theirs)
+    scene.traverse((object) => {
+      if (object.material?.name !== 'skin') return;
+      if (!made.has(object.material)) made.set(object.material, NODE.subsurfaceMaterial(object.material, { widthMm: SCENE_GRAPH_WIDTH_MM }));
+      object.material = made.get(object.material);
+    });
+    const on = mode === 'on';
+    const built = mode === 'plain' ? { scenePass: pass(scene, camera, { type: THREE.HalfFloatType }), pipeline: new THREE.RenderPipeline(renderer), node: null }
+      : subsurfacePipeline(renderer, scene, camera, { sss: { light, worldUnitInMm: 1000, lightDepthSize: 256, scattering: on, transmittance: on, ...options.pipelineOptions } });
+    const { scenePass, pipeline, node } = built;
+    if (!node) Object.assign(pipeline, { outputColorTransform: false, outputNode: scenePass });
+    let counts;
+    for (let i = 0; i < 2; i++) {
+      renderer.info.reset();
+      renderer.setRenderTarget(target);
+      pipeline.render();
+      renderer.setRenderTarget(null);
+      counts = { calls: renderer.info.render.frameCalls, draws: renderer.info.render.drawCalls };
+      await new Promise((resolve) => { requestAnimationFrame(() => resolve()); }); // the light stage runs once a frame
+    }
+    const result = {
+      pixels: await readFloats(renderer, target), ...counts,
+      lightMaps: node ? node.lightDepths.filter((d) => d.valid).length : 0,
+      plan: node ? { blur: node.plan.blur, samples: node.plan.samples } : null,
+      onScreen: node ? node.frame.onScreen.length : 0,
+      problems: node ? [...node.problems] : [],
+    };
+    node?.dispose();
+    pipeline.dispose();
+    scenePass.dispose();
+    scene.traverse((object) => { object.geometry?.dispose(); object.material?.dispose?.(); object.material?.map?.dispose(); });
+    for (const [material, subsurface] of made) { material.dispose(); subsurface.dispose(); }
+    return result;
+  };
+  const plain = await frame(feature(), 'plain');
+  const off = await frame(feature(), 'off');
+  const on = await frame(feature(), 'on');
+  const ref = reference ? await frame(reference(), 'on', referenceOptions) : null;
+  target.dispose();
+  const strip = ({ pixels, ...rest }) => rest;
+  return {
+    offVsPlain: compare(off.pixels, plain.pixels), onVsOff: compare(on.pixels, off.pixels), onVsReference: ref ? compare(on.pixels, ref.pixels) : null,
+    plain: strip(plain), off: strip(off), on: strip(on), reference: ref ? strip(ref) : null,
+  };
+}
+
 window.wgpu = {
   THREE, NODE, pass, createRenderer, readFloats, subsurfacePipeline, flat, disposeFlatRig, head, disposal, plainDraw, debugViews, labScene, labScenePlain, lightDepthCards,
-  dollyOpen, dollyFrames, dollyClose, lightAssigned, lightKeyOrder, sameFrame, nearLight, arrayCamera, nodeLightList, nodePointLight, nodeCastShadow, boxFrames,
+  dollyOpen, dollyFrames, dollyClose, lightAssigned, lightKeyOrder, sameFrame, nearLight, arrayCamera, nodeLightList, nodePointLight, nodeCastShadow, boxFrames, sceneGraphRow,
 };
 window.testReady = true;

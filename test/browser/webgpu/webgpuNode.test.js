@@ -185,3 +185,57 @@ for (const backend of BACKENDS) {
     });
   });
 }
+
+// The rows of the WebGL scene graph matrix (test/browser/sceneGraph.test.js, its scenes
+// test/pages/sceneGraph.js) that the node's renderer has, with the same oracles: off (no
+// scattering, no transmittance), three's own RenderPipeline frame; on, the same picture drawn
+// without the feature; its cost what is on the screen (render and draw calls, light maps drawn).
+const sceneGraphRow = (backend, name) => page.evaluate((o) => window.wgpu.sceneGraphRow(o), { backend, name });
+/** Within half-float rounding of the reference's largest value (as the WebGL matrix). */
+const within = (comparison, relative = 2e-3) => comparison.worst <= relative * Math.max(1, comparison.level);
+
+/** What every row holds: no NaN, and off equal to three's frame. */
+function expectOffAsThree(r) {
+  expect(r.offVsPlain.nonFinite + r.onVsOff.nonFinite).toBe(0);
+  expect(within(r.offVsPlain), JSON.stringify(r.offVsPlain)).toBe(true);
+}
+
+for (const backend of BACKENDS) {
+  describe(`the node on ${backend} and three's scene graph: off, as three; on, as the same picture without the feature; costs what is on the screen`, () => {
+    for (const name of ['visible', 'behindCamera']) {
+      it(`${name}: no subsurface mesh on the screen, so the frame is three's own, render and draw call for call, with no light map`, async () => {
+        const r = await sceneGraphRow(backend, name);
+        expectOffAsThree(r);
+        expect(r.on.onScreen).toBe(0);
+        expect(r.onVsOff.worst).toBe(0);
+        expect([r.on.calls, r.on.draws]).toEqual([r.plain.calls, r.plain.draws]);
+        expect(r.on.lightMaps).toBe(0);
+        expect(r.on.plan.blur).toBe(false);
+      });
+    }
+
+    const equivalent = {
+      cameraLayers: 'the subsurface mesh on layer 1 of a camera seeing 0 and 1: as on layer 0, transmittance included',
+      instancedMesh: 'an InstancedMesh with a colour per instance: as separate meshes',
+    };
+    for (const [name, title] of Object.entries(equivalent)) {
+      it(title, async () => {
+        const r = await sceneGraphRow(backend, name);
+        expectOffAsThree(r);
+        expect(within(r.onVsReference), JSON.stringify(r.onVsReference)).toBe(true);
+        expect(r.on.onScreen).toBeGreaterThan(0);
+        expect(r.onVsOff.differing).toBeGreaterThan(100); // scattered and transmitted: hundreds of the slab's pixels
+        expect(r.on.lightMaps).toBe(1);
+        expect(r.on.problems).toEqual([]);
+      });
+    }
+
+    it("the light's shadow camera on layer 2 only: its pass leaves the mesh on layer 0 out (three's shadow rule), so it scatters without transmittance", async () => {
+      const r = await sceneGraphRow(backend, 'lightLayers');
+      expectOffAsThree(r);
+      expect(within(r.onVsReference), JSON.stringify(r.onVsReference)).toBe(true); // the reference: transmittance off
+      expect(r.on.lightMaps).toBe(0);
+      expect(r.onVsOff.differing).toBeGreaterThan(100); // scattered
+    });
+  });
+}
