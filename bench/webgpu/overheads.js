@@ -19,6 +19,7 @@ export function webgpuOverheads(m) {
     put(overOwnPlain, backend, ratio(m[`${backend}Node`], m[`${backend}Plain`]));
     put(overOwnPlain, `${backend}Base`, ratio(m[`${backend}NodeBase`], m[`${backend}Plain`]));
     put(overOwnPlain, `${backend}Away`, ratio(m[`${backend}NodeAway`], m[`${backend}PlainAway`])); // nothing subsurface on the screen
+    put(overOwnPlain, `${backend}AwayBase`, ratio(m[`${backend}NodeAwayBase`], m[`${backend}PlainAway`]));
   }
   const nodeStagesMs = {};
   for (const backend of ['webgpu', 'webgl']) {

@@ -123,6 +123,8 @@ const ROWS = {
   composerBase: (w, h) => composerRow(w, h, { lib: BASE }),
   webgpuNodeBase: (w, h) => webgpuRow(w, h, { backend: 'webgpu', stage: 'node', lib: BASE }),
   webglNodeBase: (w, h) => webgpuRow(w, h, { backend: 'webgl', stage: 'node', lib: BASE }),
+  webgpuNodeAwayBase: (w, h) => webgpuRow(w, h, { backend: 'webgpu', stage: 'node', lib: BASE, away: true }),
+  webglNodeAwayBase: (w, h) => webgpuRow(w, h, { backend: 'webgl', stage: 'node', lib: BASE, away: true }),
 };
 
 const median = (values) => {

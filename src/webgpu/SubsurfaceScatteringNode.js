@@ -112,7 +112,8 @@ export class SubsurfaceScatteringNode extends NodeWithSettings {
     // The surface needs the 32-bit mantissa (mm differences at metres); the light is half float.
     scenePass.getTexture(ATTACHMENT_NAMES.SURFACE).type = FloatType;
     scenePass.getTexture(ATTACHMENT_NAMES.DIFFUSE).type = HalfFloatType;
-    this._horizontalTarget = new RenderTarget(1, 1, { type: HalfFloatType, depthBuffer: false });
+    // 32 bits: without MSAA it carries the depth to the vertical pass (the WebGL blur's target too).
+    this._horizontalTarget = new RenderTarget(1, 1, { type: FloatType, depthBuffer: false });
     this._horizontalTarget.texture.name = 'subsurface.horizontal';
     this._scatteredTarget = new RenderTarget(1, 1, { type: HalfFloatType, depthBuffer: false });
     this._scatteredTarget.texture.name = 'subsurface.scattered';
@@ -241,9 +242,12 @@ export class SubsurfaceScatteringNode extends NodeWithSettings {
     const material = (fragmentNode, name) => Object.assign(new NodeMaterial(), { fragmentNode, name });
     let materials;
     if (groups === 1) {
+      // Without MSAA the horizontal pass hands the depth on in its alpha (the coverage is 1 on the
+      // mask): the vertical pass's taps fetch one texel each, not two (carriedDepth.glsl).
+      const carried = !coverage;
       materials = [
-        material(subsurfaceBlurNode({ ...common, axis: 0, diffuse }), 'SubsurfaceBlur(horizontal)'),
-        material(subsurfaceBlurNode({ ...common, axis: 1, diffuse: texelTexture(this._horizontalTarget.texture) }), 'SubsurfaceBlur(vertical)'),
+        material(subsurfaceBlurNode({ ...common, axis: 0, diffuse, carryDepth: carried }), 'SubsurfaceBlur(horizontal)'),
+        material(subsurfaceBlurNode({ ...common, axis: 1, diffuse: texelTexture(this._horizontalTarget.texture), carriesDepth: carried }), 'SubsurfaceBlur(vertical)'),
       ];
     } else {
       this._groupFractionNode ??= texelTexture(this._groupFractions.texture);

@@ -21,6 +21,9 @@ import {
 } from '../common/surfaceTsl.js';
 import { axisStep, footprintRow, footprintStep, tapAdder } from './blurTapsTsl.js';
 
+/** shaders/common/carriedDepth.glsl's SSS_DEPTH_ZERO: a carried depth of 0, normal and far below any threshold, so not off the mask. */
+const DEPTH_ZERO = 1e-30;
+
 /**
  * Each channel of `sum` over its weight, `fallback` where nothing was kept (kernelGroupsBlur.frag.glsl's
  * sssNormalised; scalar selects: GLSL has no ternary over a bvec3).
@@ -39,7 +42,11 @@ const normalised = (sum, weightSum, fallback) => vec3(
  * @param {'off'|'drop'|'lerp'} o.followSurface
  * @param {boolean} o.foreshorten the grazing-angle correction
  * @param {boolean} o.coverage the inputs were resolved from MSAA
- * @param {object} o.diffuse texture node: the light to blur (a: the mask)
+ * @param {object} o.diffuse texture node: the light to blur (a: the mask, or the depth with `carriesDepth`)
+ * @param {boolean} [o.carriesDepth] `diffuse` carries the surface's depth in its alpha (the
+ *   horizontal pass's output with `carryDepth`): the taps read no surface (carriedDepth.glsl)
+ * @param {boolean} [o.carryDepth] the output carries the centre's depth in its alpha, not the
+ *   coverage (one kernel without MSAA: the coverage is 1 on the mask)
  * @param {object} o.surface texture node: r linear view depth, g widthMm
  * @param {object} o.profile texture node of ProfileLookup.texture
  * @param {number} o.profileSize its texels per row
@@ -95,8 +102,10 @@ export function subsurfaceBlurNode(o) {
     const results = unsplit.map((light) => vec4(light, 0).toVar());
     If(coverage.greaterThan(0), () => {
       const surface = centre.surface();
+      // The output, premultiplied by the coverage, or carrying the depth (SSS_DEPTH_ZERO for 0: still on the mask).
+      const out = o.carryDepth ? (light) => vec4(light, select(surface.x.equal(0), float(DEPTH_ZERO), surface.x)) : (light) => sample.covered(light, coverage);
       const { stepPx, slope } = stepAt(pixel, surface); // slope: depth change per pixel along the axis, world units
-      results.forEach((result, k) => result.assign(sample.covered(unsplit[k], coverage)));
+      results.forEach((result, k) => result.assign(out(unsplit[k])));
       // Below half a pixel the kernel cannot move light to another pixel: no work.
       If(stepPx.mul(u.kernelRadiusMm).greaterThanEqual(MIN_KERNEL_PIXELS), () => {
         const row = footprintRow(stepPx);
@@ -135,7 +144,7 @@ export function subsurfaceBlurNode(o) {
         // Not finite: the light unblurred (every group's share of it at once, so the groups still sum to the light).
         const values = blurred.map((light) => vec3(light).toVar());
         const finite = finite3(values.slice(1).reduce((sum, v) => sum.add(v), values[0])).toVar();
-        values.forEach((value, k) => results[k].assign(sample.covered(select(finite, value, unsplit[k]), coverage)));
+        values.forEach((value, k) => results[k].assign(out(select(finite, value, unsplit[k]))));
       });
     });
     // The horizontal group pass's outputs as a matrix's columns (one value out of a TSL function).

@@ -56,7 +56,7 @@ export function screenScale(u) {
  * surfaceSample.glsl: reading the surface and the diffuse light at a texel, coverage divided out
  * when the inputs were resolved from MSAA (`coverage`).
  */
-export function surfaceSample({ diffuse, surface, coverage }) {
+export function surfaceSample({ diffuse, surface, coverage, carriesDepth = false }) {
   const uncovered = (value, c) => (coverage ? select(c.greaterThan(0), value.div(c), vec2(0)) : value);
   const surfaceAt = (texel) => {
     const s = textureLoad(surface, texel).xy;
@@ -74,7 +74,8 @@ export function surfaceSample({ diffuse, surface, coverage }) {
    */
   const centreAt = (pixel) => {
     const light = textureLoad(diffuse, pixel).toVar();
-    const cover = select(light.a.greaterThan(0), light.a, float(0)).toVar();
+    // A carried depth (carriedDepth.glsl) marks the mask by being non-zero; the coverage is 1 there.
+    const cover = (carriesDepth ? select(light.a.notEqual(0), float(1), float(0)) : select(light.a.greaterThan(0), light.a, float(0))).toVar();
     return { colour: colourOf(light.rgb, cover), coverage: cover, surface: () => uncovered(textureLoad(surface, pixel).xy, cover).toVar(), rgb: light.rgb };
   };
   /** A surface pass's output: premultiplied by the centre's coverage, as its input was. */
@@ -121,15 +122,16 @@ export function surfaceSlope(sample, u, axis) {
  * @param {{ lights: object[], surface, followSurface: 'off'|'drop'|'lerp', coverage: boolean }} inputs
  *   lights: texture nodes of the light to blur (a: the mask, the same in each)
  */
-export function surfaceTap(sample, u, { lights, surface, followSurface, coverage }) {
+export function surfaceTap(sample, u, { lights, surface, followSurface, coverage, carriesDepth = false }) {
   return (texel, expectedDepth, centres) => {
     const texels = lights.map((light) => textureLoad(light, texel).toVar());
     const alpha = texels[0].a;
-    const kept = alpha.greaterThan(0).and(finite3(texels.slice(1).reduce((sum, t) => sum.add(t.rgb), texels[0].rgb)));
+    const kept = (carriesDepth ? alpha.notEqual(0) : alpha.greaterThan(0)).and(finite3(texels.slice(1).reduce((sum, t) => sum.add(t.rgb), texels[0].rgb)));
     let weight = coverage ? alpha : float(1);
     let farness = null;
     if (followSurface !== 'off') {
-      const depth = sample.uncovered(textureLoad(surface, texel).xy, alpha).x;
+      // The light carrying the depth in its alpha: one fetch a texel, not two (carriedDepth.glsl).
+      const depth = carriesDepth ? alpha : sample.uncovered(textureLoad(surface, texel).xy, alpha).x;
       farness = clamp(abs(depth.sub(expectedDepth)).mul(u.depthFalloff), 0, 1);
       if (followSurface === 'drop') weight = weight.mul(farness.oneMinus());
     }
