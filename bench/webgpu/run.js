@@ -5,19 +5,22 @@
 // frame and the WebGL pipeline's over a plain composer frame, from the same interleaved rounds,
 // and where the node's time goes (the split, the compose, the blur). `--base <dir>`: another
 // checkout's library (its src/, e.g. the commit before a change) beside this one's, its rows
-// (…Base) in the same rounds: before and after. Writes bench/results/webgpu.json (quick, --only
-// or --base: bench/results/tmp/webgpu.json).
-import { mkdir, writeFile } from 'node:fs/promises';
+// (…Base) in the same rounds: before and after (`--base-name`: what the base is, for the record).
+// Writes bench/results/webgpu.json and docs/BENCH.md's section (quick or --only:
+// bench/results/tmp/webgpu.json alone).
+import { execFileSync } from 'node:child_process';
+import { mkdir, readFile, writeFile } from 'node:fs/promises';
 import { dirname, join, resolve } from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { parseArgs } from 'node:util';
 import { openReadyPage, startBrowser } from '../../dev/browser.js';
 import { webgpuOverheads } from './overheads.js';
+import { WEBGPU_HEADING, webgpuSection, withBenchSection } from '../report.js';
 
 const root = join(dirname(fileURLToPath(import.meta.url)), '../..');
 const { values } = parseArgs({
   options: {
-    quick: { type: 'boolean' }, base: { type: 'string' }, only: { type: 'string' }, rounds: { type: 'string' }, frames: { type: 'string' },
+    quick: { type: 'boolean' }, base: { type: 'string' }, 'base-name': { type: 'string' }, only: { type: 'string' }, rounds: { type: 'string' }, frames: { type: 'string' },
   },
 });
 const options = values.quick ? { width: 320, height: 180, rounds: 3, frames: 3 } : { width: 640, height: 360, rounds: 5, frames: 5 };
@@ -32,14 +35,21 @@ try {
   const all = await page.evaluate(() => window.bench.rows);
   const only = values.only ? values.only.split(',') : all.filter((row) => values.base || !row.endsWith('Base'));
   const result = await page.evaluate((o) => window.bench.run(o), { ...options, only });
-  const summary = { ...result, date: new Date().toISOString(), flags: session.flags, base: values.base ?? null, ...webgpuOverheads(result.medianMs) };
-  const partial = values.quick || values.only || values.base;
+  const commit = execFileSync('git', ['rev-parse', '--short', 'HEAD'], { cwd: root, encoding: 'utf8' }).trim();
+  const baseName = values.base ? values['base-name'] ?? values.base : null;
+  const summary = { ...result, date: new Date().toISOString(), commit, flags: session.flags, baseName, ...webgpuOverheads(result.medianMs) };
+  const partial = values.quick || values.only;
   const file = join(root, partial ? 'bench/results/tmp/webgpu.json' : 'bench/results/webgpu.json');
   await mkdir(dirname(file), { recursive: true });
   await writeFile(file, `${JSON.stringify(summary, null, 1)}\n`);
   const { times, flags, ...shown } = summary;
   console.log(JSON.stringify(shown, null, 1));
   console.log(`wrote ${file}`);
+  if (!partial) {
+    const docs = join(root, 'docs/BENCH.md');
+    await writeFile(docs, withBenchSection(await readFile(docs, 'utf8'), WEBGPU_HEADING, webgpuSection(summary)));
+    console.log(`wrote ${docs}`);
+  }
 } finally {
   await session.close();
 }
