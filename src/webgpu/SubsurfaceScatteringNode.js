@@ -14,7 +14,7 @@
 //   scenePass.setMRT(subsurfaceMRT());
 //   pipeline.outputNode = subsurfaceScattering(scenePass, { worldUnitInMm: 1000, light });
 import { Node, NodeMaterial, NodeUpdateType, QuadMesh, RenderTarget, RendererUtils } from 'three/webgpu';
-import { FloatType, HalfFloatType, Vector2, Vector3, Vector4 } from 'three';
+import { FloatType, HalfFloatType, RGFormat, Vector2, Vector3, Vector4 } from 'three';
 import { passTexture, uniform } from 'three/tsl';
 import { MAX_KERNEL_GROUPS } from '../3-blur/kernelGroups.js';
 import { ProfileLookup } from '../profiles/ProfileLookup.js';
@@ -109,8 +109,9 @@ export class SubsurfaceScatteringNode extends NodeWithSettings {
     /** What the last frame ran: { samples, kernelPixels, blur, passes, groups, groupings } (see src/3-blur/blurPlan.js). */
     this.plan = { samples: 0, tapBlend: null, kernelPixels: 0, blur: false, fade: 0, passes: 'separable', groups: 1, groupings: null };
 
-    // The surface needs the 32-bit mantissa (mm differences at metres); the light is half float.
-    scenePass.getTexture(ATTACHMENT_NAMES.SURFACE).type = FloatType;
+    // The surface needs the 32-bit mantissa (mm differences at metres), two channels of it (every
+    // draw of the pass writes it: 8 B a pixel, not 16); the light is half float.
+    Object.assign(scenePass.getTexture(ATTACHMENT_NAMES.SURFACE), { type: FloatType, format: RGFormat });
     scenePass.getTexture(ATTACHMENT_NAMES.DIFFUSE).type = HalfFloatType;
     // 32 bits: without MSAA it carries the depth to the vertical pass (the WebGL blur's target too).
     this._horizontalTarget = new RenderTarget(1, 1, { type: FloatType, depthBuffer: false });

@@ -17,12 +17,9 @@ import {
 import { FOOTPRINT_ROWS } from '../../profiles/footprints.js';
 import { ENERGY_LEFT, MIN_KERNEL_PIXELS } from '../../3-blur/samplingModel.js';
 import {
-  along, finite3, readProfile, screenScale, surfaceSample, surfaceSlope, surfaceTap,
+  along, carriedDepth, finite3, readProfile, screenScale, surfaceSample, surfaceSlope, surfaceTap,
 } from '../common/surfaceTsl.js';
 import { axisStep, footprintRow, footprintStep, tapAdder } from './blurTapsTsl.js';
-
-/** shaders/common/carriedDepth.glsl's SSS_DEPTH_ZERO: a carried depth of 0, normal and far below any threshold, so not off the mask. */
-const DEPTH_ZERO = 1e-30;
 
 /**
  * Each channel of `sum` over its weight, `fallback` where nothing was kept (kernelGroupsBlur.frag.glsl's
@@ -103,7 +100,7 @@ export function subsurfaceBlurNode(o) {
     If(coverage.greaterThan(0), () => {
       const surface = centre.surface();
       // The output, premultiplied by the coverage, or carrying the depth (SSS_DEPTH_ZERO for 0: still on the mask).
-      const out = o.carryDepth ? (light) => vec4(light, select(surface.x.equal(0), float(DEPTH_ZERO), surface.x)) : (light) => sample.covered(light, coverage);
+      const out = o.carryDepth ? (light) => vec4(light, carriedDepth(surface.x)) : (light) => sample.covered(light, coverage);
       const { stepPx, slope } = stepAt(pixel, surface); // slope: depth change per pixel along the axis, world units
       results.forEach((result, k) => result.assign(out(unsplit[k])));
       // Below half a pixel the kernel cannot move light to another pixel: no work.

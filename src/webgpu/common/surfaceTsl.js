@@ -12,6 +12,15 @@ import { MAX_PLANE_SLOPE, MAX_SLOPE, PLANE_SLOPE_AGREEMENT } from '../../3-blur/
 const EXPONENT = 0x7f800000;
 
 /**
+ * shaders/common/carriedDepth.glsl's SSS_DEPTH_ZERO: the alpha carrying a depth of 0 (normal, far
+ * below any threshold), so a carried depth marks the mask by being non-zero whatever its sign.
+ */
+export const DEPTH_ZERO = 1e-30;
+
+/** carriedDepth.glsl's sssCarriedDepth: the alpha that carries `depth` on the mask. */
+export const carriedDepth = (depth) => select(depth.equal(0), float(DEPTH_ZERO), depth);
+
+/**
  * A texture node for textureLoad alone: without the uv transform three applies to a texture node
  * made without uvs (a mat3 product and two conversions per fetch, for coordinates that are texels).
  * @param {import('three').Texture} texture
