@@ -5,7 +5,7 @@
 import * as THREE from 'three/webgpu';
 import { cos, pass, positionLocal, uniform, vec3 } from 'three/tsl';
 import * as NODE from '/src/webgpu/index.js';
-import { flatScene } from './flatScene.js';
+import { flatScene, spheresScene } from './flatScene.js';
 import { HEAD_WORLD_UNIT_IN_MM, setLightDirection } from '/demo/headScene.js';
 import { headRig } from './headRig.js';
 import { ATTACHMENTS } from '/src/2-scene-split/subsurfaceTarget.js';
@@ -636,29 +636,9 @@ async function boxFrames({ backend = 'webgpu', variants }) {
   const height = 108;
   const renderer = await sharedRenderer(backend, width, height);
   renderer.shadowMap.enabled = true;
-  const scene = new THREE.Scene();
-  const camera = new THREE.PerspectiveCamera(30, width / height, 0.5, 50);
-  camera.position.set(0, 0.6, 8);
-  camera.lookAt(0, 0, 0);
-  const map = window.lab.dataTexture(32, 32, (x, y) => { const v = 0.1 + 0.9 * (((x * 7 + y * 13) % 17) / 16); return [v, 0.8 * v, 0.6 * v]; });
-  const skin = NODE.subsurfaceMaterial(new THREE.MeshStandardMaterial({ color: 0xffffff, roughness: 0.6, map }));
-  const skinBehind = NODE.subsurfaceMaterial(new THREE.MeshStandardMaterial({ color: 0xffccaa, roughness: 0.8 }));
-  const front = new THREE.Mesh(new THREE.SphereGeometry(0.9, 48, 32), skin);
-  const behind = new THREE.Mesh(new THREE.SphereGeometry(0.7, 32, 24), skinBehind);
-  behind.position.set(0.9, 0.3, -1.2);
-  const box = new THREE.Mesh(new THREE.BoxGeometry(0.5, 0.5, 0.5), new THREE.MeshStandardMaterial({ color: 0x3366cc }));
-  box.position.set(-0.7, -0.3, 1.2);
-  const floor = new THREE.Mesh(new THREE.PlaneGeometry(12, 12), new THREE.MeshStandardMaterial({ color: 0x999999 }));
-  floor.rotation.x = -Math.PI / 2;
-  floor.position.y = -1;
-  for (const m of [front, behind, box]) m.castShadow = m.receiveShadow = true;
-  floor.receiveShadow = true;
-  const light = new THREE.DirectionalLight(0xffffff, 3);
-  light.position.set(-3, 5, 4);
-  light.castShadow = true;
-  Object.assign(light.shadow.camera, { left: -4, right: 4, top: 4, bottom: -4, near: 0.5, far: 20 });
-  scene.add(front, behind, box, floor, light, light.target, new THREE.AmbientLight(0xffffff, 0.2));
-  const spheres = [front, behind];
+  const { scene, camera, light, subsurface: spheres, map } = spheresScene(width / height);
+  const three = spheres.map((m) => m.material);
+  for (const m of spheres) m.material = NODE.subsurfaceMaterial(m.material);
   const home = spheres.map((m) => m.position.clone());
   const target = new THREE.RenderTarget(width, height, { type: THREE.FloatType });
   const render = (pipeline) => {
@@ -690,7 +670,8 @@ async function boxFrames({ backend = 'webgpu', variants }) {
   }
   renderer.shadowMap.enabled = false;
   target.dispose();
-  for (const m of [skin, skinBehind, box.material, floor.material]) m.dispose();
+  scene.traverse((object) => object.material?.dispose());
+  for (const m of three) m.dispose();
   map.dispose();
   return { width, height, ...out };
 }

@@ -9,6 +9,7 @@ import { describe, it, expect, beforeAll, afterAll } from 'vitest';
 import { evaluateFloats } from '../../harness/page.js';
 import { BACKENDS, openWebgpuPage } from '../../harness/webgpuBrowser.js';
 import { transmittedFractionOracle } from '../../oracle/transmittance.js';
+import { middle } from '../../harness/images.js';
 
 let page;
 beforeAll(async () => { page = await openWebgpuPage('/test/pages/webgpu.html'); });
@@ -16,15 +17,6 @@ afterAll(async () => {
   expect(page.problems).toEqual([]);
   await page.close();
 });
-
-/** Mean RGB over the middle `share` of a square image's width and height. */
-function middle(rgba, size, share = 0.3) {
-  const lo = Math.round(size * (0.5 - share / 2));
-  const hi = Math.round(size * (0.5 + share / 2));
-  const sum = [0, 0, 0];
-  for (let y = lo; y < hi; y++) for (let x = lo; x < hi; x++) for (let c = 0; c < 3; c++) sum[c] += rgba[(y * size + x) * 4 + c];
-  return sum.map((v) => v / (hi - lo) ** 2);
-}
 
 /** The largest RGB difference over the value, each value's floor 1e-3 (the node's diffuse light is half float: a step is 2^-11 of it). */
 const relative = (a, b) => a.reduce((m, v, i) => (i % 4 === 3 ? m : Math.max(m, Math.abs(v - b[i]) / Math.max(1e-3, Math.abs(b[i])))), 0);
