@@ -52,7 +52,7 @@ function checkNodeMethod(method) {
   }
 }
 
-const _quadMesh = /*@__PURE__*/ new QuadMesh(); globalThis.QUAD = _quadMesh;
+const _quadMesh = /*@__PURE__*/ new QuadMesh();
 const _size = /*@__PURE__*/ new Vector2();
 let _rendererState;
 
