@@ -7,20 +7,11 @@ import { mkdir, readFile, writeFile } from 'node:fs/promises';
 import { dirname, join } from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { openReadyPage, startBrowser } from '../dev/browser.js';
-import { LIGHTS_HEADING, lightsSection } from './report.js';
+import { LIGHTS_HEADING, lightsSection, withBenchSection } from './report.js';
 
 const root = join(dirname(fileURLToPath(import.meta.url)), '..');
 const quick = process.argv.includes('--quick');
 const options = quick ? { width: 320, height: 180, rounds: 2, frames: 3 } : { width: 640, height: 360, rounds: 4, frames: 5 };
-
-/** docs/BENCH.md with the section replaced, or added after the WebGPU node's (the place `npm run bench` writes it). */
-function withSection(markdown, section) {
-  const start = markdown.indexOf(LIGHTS_HEADING);
-  const from = start >= 0 ? start : markdown.indexOf('\n## ', markdown.indexOf('## The WebGPURenderer node')) + 1;
-  const next = markdown.indexOf('\n## ', start + 1);
-  const end = start < 0 ? from : next < 0 ? markdown.length : next + 1;
-  return `${markdown.slice(0, from)}${section}\n\n${markdown.slice(end)}`;
-}
 
 const session = await startBrowser({ protocolTimeout: 900_000 });
 try {
@@ -38,7 +29,7 @@ try {
   console.log(`wrote ${file}`);
   if (!quick) {
     const docs = join(root, 'docs/BENCH.md');
-    await writeFile(docs, withSection(await readFile(docs, 'utf8'), lightsSection(summary)));
+    await writeFile(docs, withBenchSection(await readFile(docs, 'utf8'), LIGHTS_HEADING, lightsSection(summary)));
     console.log(`wrote ${docs}`);
   }
 } finally {

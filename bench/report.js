@@ -352,9 +352,50 @@ export function lightsSection(lights) {
     `Per light, over these three: our map adds ${perLight('ours3', 'ours0', 3)} ms, three's shadow maps ${perLight('three3', 'ours0', 3)} ms; with three's shadows on, our maps add ×${(m.both3 / m.three3).toFixed(2)} to the frame (3 lights), ×${(m.both1 / m.three1).toFixed(2)} (the spot).`].join('\n');
 }
 
+export const SCENE_GRAPH_HEADING = '## What is on the screen: frames without subsurface pixels, and a large scene';
+
+/**
+ * The pipeline's frame against three's plain frame (bench/sceneGraph.js's results): nothing
+ * subsurface on the screen, the head in view, the head among 2,000 ordinary meshes; before and
+ * after where the file has both.
+ * @param {object|null} graph bench/results/scene-graph.json
+ */
+export function sceneGraphSection(graph) {
+  const runs = ['before', 'after'].filter((label) => graph?.[label]?.medianMs);
+  if (runs.length === 0) return '';
+  const last = graph[runs[runs.length - 1]];
+  const cells = (run, scene) => {
+    const ours = `${scene}Ours`;
+    const plain = `${scene}Plain`;
+    return `${run.medianMs[ours].toFixed(1)} / ${run.medianMs[plain].toFixed(1)} (×${(run.medianMs[ours] / run.medianMs[plain]).toFixed(2)}) | ${run.medianJsMs[ours].toFixed(2)} / ${run.medianJsMs[plain].toFixed(2)} (×${(run.medianJsMs[ours] / run.medianJsMs[plain]).toFixed(2)}) | ${run.drawCalls[ours]} / ${run.drawCalls[plain]}`;
+  };
+  const scenes = [
+    ['offScreen', 'the head among 2,000 ordinary meshes, off the screen (the camera turned to its side), its light behind it'],
+    ['inView', 'the head at the first view, the same light'],
+    ['crowd', 'the head in view among 2,000 ordinary meshes, one transmitting light'],
+  ];
+  return [`${SCENE_GRAPH_HEADING} (\`${graph.command}\`, ${last.date.slice(0, 10)})`, '',
+    `The pipeline's frame (ours) against three's RenderPass frame (plain) of the same scene at ${last.width}×${last.height}, one renderer each, in ${last.rounds} interleaved rounds of ${last.frames} frames (bench/sceneGraphPage.js), on SwiftShader: CPU times, to compare as ratios within a run only. Frame ms: wall time closed by a 1-pixel read-back; JS ms: the time \`composer.render()\` takes to return; draw calls: three's \`renderer.info\`.${runs.length > 1 ? ` Before: ${graph.before.commit}; after: ${graph.after.commit}, each its own run.` : ''}`, '',
+    `| scene | run | frame ms ours / plain | JS ms ours / plain | draw calls ours / plain |`, '|---|---|---|---|---|',
+    ...scenes.flatMap(([scene, label]) => runs.map((run) => `| ${label} | ${run} | ${cells(graph[run], scene)} |`))].join('\n');
+}
+
+/**
+ * `markdown` (docs/BENCH.md) with the section under `heading` replaced, or added before the
+ * section after the WebGPU node's where it has none yet.
+ * @param {string} markdown @param {string} heading @param {string} section
+ */
+export function withBenchSection(markdown, heading, section) {
+  const start = markdown.indexOf(heading);
+  const from = start >= 0 ? start : markdown.indexOf('\n## ', markdown.indexOf('## The WebGPURenderer node')) + 1;
+  const next = markdown.indexOf('\n## ', start + 1);
+  const end = start < 0 ? from : next < 0 ? markdown.length : next + 1;
+  return `${markdown.slice(0, from)}${section}\n\n${markdown.slice(end)}`;
+}
+
 /**
  * @param {object} json bench/results/<name>.json
- * @param {{ transfer?: object, surfaceTruth?: object, webgpu?: object, lights?: object }} [beyond] the other runs' results (see beyondDenseSection, webgpuSection, lightsSection)
+ * @param {{ transfer?: object, surfaceTruth?: object, webgpu?: object, lights?: object, sceneGraph?: object }} [beyond] the other runs' results (see beyondDenseSection, webgpuSection, lightsSection, sceneGraphSection)
  */
 export function benchMarkdown(json, beyond = {}) {
   const { results } = json;
@@ -415,6 +456,8 @@ ${peersSection(json)}
 ${webgpuSection(beyond.webgpu)}
 
 ${lightsSection(beyond.lights)}
+
+${sceneGraphSection(beyond.sceneGraph)}
 
 ${issueTableSection(json)}
 

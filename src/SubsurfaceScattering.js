@@ -19,21 +19,24 @@
 //
 // The settings are properties made from the options' schema (src/options.js,
 // src/support/settings.js); _applySetting says what each does to the stages.
+import { Color } from 'three';
 import { Pass } from 'three/addons/postprocessing/Pass.js';
 import { getProfile } from './profiles/presets.js';
 import { ProfileLookup } from './profiles/ProfileLookup.js';
 import { profileSlots } from './profiles/profileSlots.js';
 import { checkNumber } from './support/parameterChecks.js';
-import { describe } from './support/rendererSupport.js';
+import { assertFloatRenderTargets, describe } from './support/rendererSupport.js';
 import { checkThreeRevision } from './support/threeVersion.js';
 import { withSettings } from './support/settings.js';
 import { stopWatching, warnWhenDisabledFreezes, watchRendered } from './support/frozenFrameWatch.js';
 import { PASS_BOOLEANS, booleanFields } from './support/booleanFields.js';
 import { FrameChecks, checkTargetSize, checkTargetLimits } from './support/frameChecks.js';
 import {
-  CAST_SHADOW, MAX_LIGHTS, PIPELINE_SCHEMA, checkNeedsLight, checkPipelineOptions, lightsOf, propertiesOf,
+  CAST_SHADOW, MAX_LIGHTS, PIPELINE_SCHEMA, checkPipelineOptions, lightsOf, propertiesOf,
 } from './options.js';
 import { estimatePixelsPerMm } from './framePlan.js';
+import { boxInTarget, cameraViews, unionBox } from './support/cameraViews.js';
+import { subsurfaceScreenBox } from './2-scene-split/subsurfaceScreenBox.js';
 import { LightDepthTarget } from './1-light-depth/LightDepthTarget.js';
 import { PipelineMaterials } from './2-scene-split/PipelineMaterials.js';
 import { isShining, lightReachesFromBehind } from './2-scene-split/transmittanceModel.js';
@@ -41,6 +44,10 @@ import { SubsurfaceScenePass } from './2-scene-split/SubsurfaceScenePass.js';
 import { BlurStage } from './3-blur/BlurStage.js';
 import { SubsurfaceComposePass } from './4-compose/SubsurfaceComposePass.js';
 import { materialOutputOf } from './4-compose/debugViews.js';
+import { holdingMatrices, preservingRendererState } from './support/rendererState.js';
+import { nameClass } from './support/className.js';
+
+const _clearColor = new Color();
 
 /**
  * A stage of one frame, as stageTimer sees it.
@@ -69,11 +76,12 @@ export class SubsurfaceScattering extends PassWithSettings {
     const o = checkPipelineOptions(options); // every option checked here, once, against the schema
     /** @internal The settings' values (read and assigned through their properties). */
     this._settings = Object.fromEntries(propertiesOf(PIPELINE_SCHEMA).map(({ name }) => [name, o[name]]));
-    if (Object.hasOwn(options, 'transmittance')) checkNeedsLight('transmittance', o.transmittance, o.light);
-    checkNeedsLight('debugView', o.debugView, o.light);
-    this._settings.transmittance = o.transmittance && o.light !== null; // the default: on where there is a light
-    /** @internal Whether transmittance is asked for: kept across lights, so a light arriving does not undo an `off`. */
-    this._transmittanceWanted = o.transmittance;
+    /**
+     * @internal Whether the user set `transmittance` true (not the default), for the frame's word
+     * when there is no light: the settings a light needs are kept as set, whatever the order they
+     * came in, and take effect with a light.
+     */
+    this._transmittanceAsked = Object.hasOwn(options, 'transmittance') && o.transmittance;
 
     this.needsSwap = false; // like RenderPass: it draws into the read buffer
     /** As RenderPass: first in renderer.setEffects([...]) (three r182+), the renderer leaves the scene's draw to it. */
@@ -97,6 +105,8 @@ export class SubsurfaceScattering extends PassWithSettings {
     this._size = { width: 1, height: 1 };
     /** @internal The GPU's render target limits, known from the first frame on. */
     this._limits = undefined;
+    /** @internal Whether `depthTexture` was read: the scene split then runs on every frame (_drawsPlain). */
+    this._depthTextureRead = false;
     /** @internal The frame's checks of the camera and the light, each warned about once (see `problems`). */
     this._checks = new FrameChecks('SubsurfaceScattering');
 
@@ -119,6 +129,7 @@ export class SubsurfaceScattering extends PassWithSettings {
       diffuseTexture: this._scenePass.diffuseTexture,
       scatteredTexture: this._blur.scatteredTarget.texture,
       depthTexture: this._scenePass.depthTexture,
+      depthTarget: this._scenePass.renderTarget, // its depth handed on per sample under MSAA (src/4-compose/multisampledDepth.js)
     });
     this._composePass.setDebugView(o.debugView, { depthRange: o.debugDepthRange, thicknessRangeMm: o.debugThicknessRangeMm });
     this._composePass.setSplit(o.split);
@@ -136,6 +147,8 @@ export class SubsurfaceScattering extends PassWithSettings {
      * @type {ReturnType<BlurStage['plan']>}
      */
     this.plan = this._blur.lastPlan;
+    /** @internal The last frame's views (src/support/cameraViews.js), each with its plan and subsurface box. */
+    this._views = [];
   }
 
   /**
@@ -170,12 +183,10 @@ export class SubsurfaceScattering extends PassWithSettings {
         this._blur.setForeshortening(value);
         return;
       case 'transmittance':
-        checkNeedsLight(name, value, this.light);
-        this._transmittanceWanted = value;
+        this._transmittanceAsked = value;
         this._subsurfaceMaterials.rebindAll();
         return;
       case 'debugView': case 'debugDepthRange': case 'debugThicknessRangeMm':
-        checkNeedsLight('debugView', this.debugView, this.light);
         this._composePass.setDebugView(this.debugView, { depthRange: this.debugDepthRange, thicknessRangeMm: this.debugThicknessRangeMm });
         this._subsurfaceMaterials.setDebugOutput(materialOutputOf(this.debugView));
         return;
@@ -194,16 +205,13 @@ export class SubsurfaceScattering extends PassWithSettings {
 
   /**
    * Other lights, or none: each map follows its light from the next frame (kept where there was
-   * one at its place, so its materials read it on); from none to a light transmittance turns on
-   * unless it was set off, to none off.
+   * one at its place, so its materials read it on). `transmittance` and `debugView` stay as set:
+   * they act through the lights there are.
    * @private
    */
   _setLight(light, previous) {
     if (light === previous) return;
-    if (light === null) checkNeedsLight('debugView', this.debugView, null); // a light's view stays: refused
-    const switches = previous === null || light === null;
-    if (switches) this._settings.transmittance = light !== null && this._transmittanceWanted;
-    if (!this._useLights(lightsOf(light, this.scene)) && switches) this._subsurfaceMaterials.rebindAll();
+    this._useLights(lightsOf(light, this.scene));
   }
 
   /**
@@ -292,8 +300,15 @@ export class SubsurfaceScattering extends PassWithSettings {
    */
   get problems() { return this._checks.current; }
 
-  /** The scene's depth from the last frame (its opaque part), a DepthTexture, for passes of your own. */
-  get depthTexture() { return this._scenePass.depthTexture; }
+  /**
+   * The scene's depth from the last frame (its opaque part), a DepthTexture, for passes of your
+   * own. Once read, the pipeline splits the scene on every frame to keep it, also where no
+   * subsurface mesh is on the screen (elsewhere such a frame is three's own draw, as cheap).
+   */
+  get depthTexture() {
+    this._depthTextureRead = true;
+    return this._scenePass.depthTexture;
+  }
 
   // ---- The frame.
 
@@ -308,49 +323,82 @@ export class SubsurfaceScattering extends PassWithSettings {
     const target = this.renderToScreen ? null : readBuffer;
     watchRendered(this, renderer); // for the warning when disabled with nothing else drawing the scene
     // 0. Checks: the size against the GPU's limits (a RangeError), the camera, the light and the
-    //    scene (a warning, once each; the frame is drawn as three would draw it).
+    //    scene (a warning, once each; the frame is drawn as three would draw it). What the frame
+    //    covers, decided once (src/frameMeshes.js: visible, layers, LOD levels, the frustum): the
+    //    lights' maps, the plan and the box read it.
+    assertFloatRenderTargets(renderer, 'SubsurfaceScattering');
     this._limits = checkTargetLimits(renderer, this._size, 'SubsurfaceScattering');
     const checks = this._checks.begin();
     checks.camera(camera);
     checks.scene(scene);
+    checks.depthHandOff(this._composePass.depthHandOff); // the last frame's: the output's MSAA unlike the split's
     // 'castShadow': the scene's lights that cast shadows now, more than MAX_LIGHTS said once.
     if (this.light === CAST_SHADOW) this._castShadowLights(scene, checks);
-    // The lights' checks fit their maps to the meshes, as the scene split's render will place them.
-    if (this._lightDepths.length > 0 && scene.matrixWorldAutoUpdate === true) scene.updateMatrixWorld();
-    const works = this._lightDepths.map((lightDepth) => checks.light(lightDepth, scene, this.transmittance, this._transmitsThrough));
+    if (this._lightDepths.length === 0) checks.withoutLight(this._transmittanceAsked, this.debugView);
+    Object.assign(this._scenePass, { scene, camera, clearColor: this.clearColor, clearAlpha: this.clearAlpha });
+    const frame = this._scenePass.collect();
+    // The lights' checks fit their maps to the transmitting meshes on the screen.
+    const works = this._lightDepths.map((lightDepth) => checks.light(lightDepth, frame, this.transmittance, this._transmitsThrough));
     checks.end();
+    // No subsurface mesh on the screen: the frame is three's own, as a RenderPass draws it.
+    if (this._drawsPlain()) {
+      for (const lightDepth of this._lightDepths) lightDepth.invalidate();
+      this.plan = this._blur.plan(0);
+      this._stage('scene', () => this._renderPlain(renderer, target));
+      return;
+    }
+    // The stages render the scene several times: its matrices were updated once, by collect.
+    holdingMatrices(scene, () => this._renderStages(renderer, readBuffer, target, works));
+  }
+
+  /**
+   * Steps 1 to 6 of a frame whose checks (step 0) found subsurface meshes on the screen.
+   * @private
+   */
+  _renderStages(renderer, readBuffer, target, works) {
+    const { scene, camera } = this;
+    const { frame } = this._scenePass;
     // 1. Light depth: linear depth seen from each light, for transmittance (not for a light that
     //    is off, nor one that reaches no subsurface mesh from behind: its map would go unread).
     this._lightDepths.forEach((lightDepth, i) => {
-      if (works[i] && isShining(lightDepth.light, scene, camera) && this._transmits(lightDepth.light, scene, camera)) {
-        this._stage('lightDepth', () => lightDepth.render(renderer, scene));
+      if (works[i] && isShining(lightDepth.light, scene, camera) && this._transmits(lightDepth.light, camera)) {
+        this._stage('lightDepth', () => lightDepth.render(renderer, scene, frame));
       } else {
         lightDepth.invalidate();
       }
     });
     // 2. Scene split: the opaque scene into the multi-target (colour | diffuse | surface | depth),
     //    multisampled as asked (or as the composer's buffer is).
-    Object.assign(this._scenePass, { scene, camera, clearColor: this.clearColor, clearAlpha: this.clearAlpha });
     const msaaSamples = this.multisampling === 'auto' ? (readBuffer?.samples ?? 0) : this.multisampling;
     if (this._scenePass.setSamples(msaaSamples)) this._blur.setMultisampled(msaaSamples > 0);
     this._stage('scene', () => this._scenePass.render(renderer));
     // 3. Plan: the blur plans itself (src/3-blur/blurPlan.js) from the on-screen size of a profile
-    //    millimetre: its taps for 'auto', no blur under half a pixel.
-    this.plan = this._blur.plan(this._pixelsPerMm());
+    //    millimetre: its taps for 'auto', no blur under half a pixel. An ArrayCamera's views are
+    //    planned apart, each at its own camera's scale.
+    this._views = this._planViews(camera);
+    // The frame's plan: its view's, or the one reaching furthest of an ArrayCamera's (none: no blur).
+    this.plan = this._views.length === 0 ? this._blur.plan(0)
+      : this._views.map((view) => view.plan).reduce((most, plan) => (plan.kernelPixels > most.kernelPixels ? plan : most));
+    const blurred = this._views.filter((view) => view.plan.blur);
     // 4. Blur: the diffuse light, horizontally then vertically (or densely), into scatteredTarget.
-    if (this.plan.blur) this._renderScattering(renderer);
+    if (blurred.length > 0) this._renderScattering(renderer);
     // 5. Compose: colour + the scattered (without blur: the unblurred) diffuse light, and the
     //    scene's depth, into the target: every pixel (clear), or over what it holds (clear false).
-    this._composePass.scatteredTexture = this.plan.blur ? this._blur.scatteredTarget.texture : this._scenePass.diffuseTexture;
+    this._composePass.scatteredTexture = blurred.length > 0 ? this._blur.scatteredTarget.texture : this._scenePass.diffuseTexture;
     // The box bounds where the blur wrote; without the blur the diffuse is read everywhere, as before.
-    this._composePass.setMaskBox(this.plan.blur ? this._scenePass.subsurfaceBox : null);
-    this._composePass.setScatteredShare(this.plan.blur ? this.plan.fade : 1); // the blur fading in (blurPlan.js)
+    this._composePass.setMaskBox(blurred.length > 0 ? unionBox(blurred.map((view) => view.box)) : null);
+    const one = this._views.length === 1 ? this._views[0] : null;
+    this._composePass.setScatteredShare(one?.plan.blur ? one.plan.fade : 1); // the blur fading in (blurPlan.js)
     this._composePass.renderToScreen = this.renderToScreen;
     this._composePass.setClear(this.clear, this.clearDepth);
     const autoClear = renderer.autoClear;
     renderer.autoClear = false; // the full-screen quad would clear what clear = false keeps
     try {
-      this._stage('compose', () => this._composePass.render(renderer, readBuffer, null));
+      this._stage('compose', () => {
+        this._composePass.render(renderer, readBuffer, null);
+        // An ArrayCamera's views its plan fades in or leaves unblurred, again with their own.
+        if (!one && blurred.length > 0) this._composeViews(renderer, readBuffer);
+      });
       // 6. Transparent objects over the composed image, depth-tested against the scene.
       this._stage('transparent', () => this._scenePass.renderTransparent(renderer, target));
     } finally {
@@ -359,12 +407,77 @@ export class SubsurfaceScattering extends PassWithSettings {
   }
 
   /**
+   * Whether this frame is three's own: no subsurface mesh on the screen (nor an override drawing
+   * the scene), the final image shown into the composer's buffer (to the screen the compose
+   * tone-maps as OutputPass would), and the scene's depth not asked of the pipeline.
+   * @private
+   */
+  _drawsPlain() {
+    return this._scenePass.subsurfaceMeshes.length === 0 && this.debugView === 'final' && !this._depthTextureRead && !this.renderToScreen;
+  }
+
+  /**
+   * The frame as three's RenderPass draws it: the scene into `target` (null: the screen), cleared
+   * first as `clear`, `clearDepth`, `clearColor` and `clearAlpha` say.
+   * @private @param {import('three').WebGLRenderer} renderer @param {import('three').WebGLRenderTarget|null} target
+   */
+  _renderPlain(renderer, target) {
+    const { scene, camera } = this;
+    if (!this.clear) this._composePass.releaseDepth(); // drawn over what the target holds: its own depth
+    preservingRendererState(renderer, scene, () => {
+      renderer.autoClear = false;
+      renderer.setRenderTarget(target);
+      if (this.clearColor !== null || this.clearAlpha !== null) {
+        renderer.setClearColor(this.clearColor ?? renderer.getClearColor(_clearColor), this.clearAlpha ?? renderer.getClearAlpha());
+      }
+      if (this.clear) renderer.clear(renderer.autoClearColor, renderer.autoClearDepth, renderer.autoClearStencil);
+      else if (this.clearDepth) renderer.clearDepth();
+      holdingMatrices(scene, () => renderer.render(scene, camera)); // updated by collect
+    });
+  }
+
+  /**
    * Stage 4 alone over the last scene split, into the scattered target, as the last frame planned
    * it (the bench re-runs it to time it).
    * @private @param {import('three').WebGLRenderer} renderer
    */
   _renderScattering(renderer) {
-    this._blur.render(renderer, this.camera, (stage, draw) => this._stage(stage, draw), this.plan, this._scenePass.subsurfaceBox);
+    const timed = (stage, draw) => this._stage(stage, draw);
+    const [first] = this._views;
+    if (this._views.length === 1 && first.whole) this._blur.render(renderer, first.camera, timed, first.plan, first.box);
+    else this._blur.renderViews(renderer, this._views, timed);
+  }
+
+  /**
+   * The frame's views (src/support/cameraViews.js), each with its plan and its subsurface pixels'
+   * box in the target: the camera's one view, the whole frame; an ArrayCamera's each at its own
+   * camera's scale, the box found as that camera alone would see the meshes.
+   * @private @param {import('three').Camera} camera
+   */
+  _planViews(camera) {
+    const { width, height } = this._scenePass.renderTarget;
+    const views = cameraViews(camera, width, height);
+    for (const view of views) {
+      view.plan = this._blur.plan(this._pixelsPerMm(view));
+      view.box = view.whole ? this._scenePass.subsurfaceBox
+        : boxInTarget(view, subsurfaceScreenBox(this._scenePass.subsurfaceMeshes, view.camera, view.viewport.width, view.viewport.height));
+    }
+    return views;
+  }
+
+  /**
+   * Composes again, each within its rectangle, an ArrayCamera's views whose plan is not the
+   * frame's: fading in (their share of the scattered light) or not blurred (their unblurred light).
+   * @private
+   */
+  _composeViews(renderer, readBuffer) {
+    for (const view of this._views) {
+      if (view.plan.blur && view.plan.fade === 1) continue;
+      this._composePass.scatteredTexture = view.plan.blur ? this._blur.scatteredTarget.texture : this._scenePass.diffuseTexture;
+      this._composePass.setMaskBox(view.plan.blur ? view.box : null);
+      this._composePass.setScatteredShare(view.plan.blur ? view.plan.fade : 1);
+      this._composePass.renderIn(renderer, readBuffer, view.rect);
+    }
   }
 
   /** @private @param {StageName} name @param {() => void} draw */
@@ -378,21 +491,23 @@ export class SubsurfaceScattering extends PassWithSettings {
   }
 
   /**
-   * Whether `light` can send transmitted light to a subsurface mesh of this pipeline this frame
-   * (lightFromBehind at each one's nearest point); the thickness view always reads the map.
+   * Whether `light` can send transmitted light to a subsurface mesh of this pipeline on the screen
+   * this frame (lightFromBehind at each one's nearest point); the thickness view always reads the map.
    * @private
    */
-  _transmits(light, scene, camera) {
+  _transmits(light, camera) {
     if (materialOutputOf(this.debugView) === 'thickness') return true;
-    // The camera's matrices as the scene split's render will see them (the scene's are: render step 0).
-    if (camera.parent === null && camera.matrixWorldAutoUpdate === true) camera.updateMatrixWorld();
-    return lightReachesFromBehind(light, scene, camera, this._transmitsThrough);
+    return lightReachesFromBehind(light, this._scenePass.frame.onScreen, camera, this._transmitsThrough);
   }
 
-  /** The largest on-screen size of a profile mm over the subsurface meshes the split drew. @private */
-  _pixelsPerMm() {
-    const { width, height } = this._scenePass.renderTarget;
-    return estimatePixelsPerMm(this._scenePass.subsurfaceMeshes, this.camera, { width, height },
+  /**
+   * The largest on-screen size of a profile mm over the subsurface meshes the split drew, in
+   * `view` (default: the camera's, the whole frame).
+   * @private @param {{ camera: import('three').Camera, viewport: { width: number, height: number } }} [view]
+   */
+  _pixelsPerMm(view = { camera: this.camera, viewport: this._scenePass.renderTarget }) {
+    const { width, height } = view.viewport;
+    return estimatePixelsPerMm(this._scenePass.subsurfaceMeshes, view.camera, { width, height },
       (m) => (this._scenePass.categoryOf(m) === 'subsurface' ? this._subsurfaceMaterials.widthWorldOf(m) : undefined));
   }
 
@@ -501,3 +616,5 @@ warnWhenDisabledFreezes(SubsurfaceScattering.prototype, 'SubsurfaceScattering: e
   'scene, so the composer shows the last frame it drew, frozen (enabled = false skips the pass, as for any pass). To turn ' +
   'the blur off, set scattering = false (in version 0.1 that was enabled = false); to draw the scene without the ' +
   'pipeline, enable a RenderPass in its place.');
+
+nameClass(SubsurfaceScattering, 'SubsurfaceScattering'); // its name in messages, minified or not

@@ -287,7 +287,7 @@ export const PIPELINE_SCHEMA = Object.freeze({
     check: isBoolean,
   },
   transmittance: {
-    default: true, type: 'boolean', doc: 'light through thin parts for every material; false without a light',
+    default: true, type: 'boolean', doc: 'light through thin parts for every material (with `light`)',
     check: isBoolean,
   },
   debugView: {
@@ -375,21 +375,8 @@ export const propertiesOf = (schema) => Object.freeze(Object.entries(schema)
   .filter(([, spec]) => spec.access !== 'constructor')
   .map(([name, spec]) => Object.freeze({ name, assignable: spec.access !== 'readonly' })));
 
-/** The debug views that show what the light depth map gives: they need the pipeline's `light`. */
+/** The debug views that show what the light depth map gives: black without a `light` (said in `problems`). */
 export const LIGHT_VIEWS = Object.freeze(['thickness', 'transmittance']);
-
-/**
- * Refuses a setting that needs a light on a pipeline or node without one: `transmittance` true,
- * and the light's debug views (a TypeError naming the setting and the value).
- * @param {string} name @param {*} value @param {object|null} light
- */
-export function checkNeedsLight(name, value, light) {
-  const needs = name === 'transmittance' ? value === true : name === 'debugView' && LIGHT_VIEWS.includes(value);
-  if (needs && !light) {
-    throw new TypeError(`${name} = ${JSON.stringify(value)} needs a light (\`light\`: a spot, directional or point light, or a list); there is none`);
-  }
-  return value;
-}
 
 /**
  * Checks one option against its schema: the accepted value, or a TypeError/RangeError naming it.
@@ -488,7 +475,7 @@ export function checkMaterialOptions(options = {}, previous = MATERIAL_DEFAULTS)
  * @property {import('three').TextureDataType} [type=THREE.HalfFloatType] THREE.HalfFloatType or THREE.FloatType light targets; constructor only
  * @property {number|'auto'} [multisampling='auto'] MSAA samples of the scene split, 0..16; 'auto': the composer buffer's `samples` (the node: its scene pass's)
  * @property {boolean} [scattering=true] false: no blur, the unblurred diffuse light composed (transmittance stays)
- * @property {boolean} [transmittance=true] light through thin parts for every material; false without a light
+ * @property {boolean} [transmittance=true] light through thin parts for every material (with `light`)
  * @property {import('./4-compose/debugViews.js').DebugView} [debugView='final'] the final image or one ingredient: 'final', 'diffuse', 'specular', 'depth', 'mask', and with `light` 'thickness', 'transmittance'
  * @property {number} [debugDepthRange=10] world units of view depth the 'depth' view maps from white (near) to black
  * @property {number} [debugThicknessRangeMm=10] profile mm of thickness the 'thickness' view maps from black to white
@@ -510,7 +497,7 @@ export function checkMaterialOptions(options = {}, previous = MATERIAL_DEFAULTS)
  * @property {boolean} [foreshortening=true] narrow the blur on surfaces seen at grazing angles
  * @property {number} [lightDepthSize=1024] the light depth map resolution, pixels (16..8192)
  * @property {boolean} [scattering=true] false: no blur, the unblurred diffuse light composed (transmittance stays)
- * @property {boolean} [transmittance=true] light through thin parts for every material; false without a light
+ * @property {boolean} [transmittance=true] light through thin parts for every material (with `light`)
  * @property {import('./4-compose/debugViews.js').DebugView} [debugView='final'] the final image or one ingredient: 'final', 'diffuse', 'specular', 'depth', 'mask', and with `light` 'thickness', 'transmittance'
  * @property {number} [debugDepthRange=10] world units of view depth the 'depth' view maps from white (near) to black
  * @property {number} [debugThicknessRangeMm=10] profile mm of thickness the 'thickness' view maps from black to white
@@ -534,7 +521,7 @@ export function checkMaterialOptions(options = {}, previous = MATERIAL_DEFAULTS)
  * @property {number} lightDepthSize the light depth map resolution, pixels (16..8192)
  * @property {number|'auto'} multisampling MSAA samples of the scene split, 0..16; 'auto': the composer buffer's `samples` (the node: its scene pass's)
  * @property {boolean} scattering false: no blur, the unblurred diffuse light composed (transmittance stays)
- * @property {boolean} transmittance light through thin parts for every material; false without a light
+ * @property {boolean} transmittance light through thin parts for every material (with `light`)
  * @property {import('./4-compose/debugViews.js').DebugView} debugView the final image or one ingredient: 'final', 'diffuse', 'specular', 'depth', 'mask', and with `light` 'thickness', 'transmittance'
  * @property {number} debugDepthRange world units of view depth the 'depth' view maps from white (near) to black
  * @property {number} debugThicknessRangeMm profile mm of thickness the 'thickness' view maps from black to white
@@ -555,7 +542,7 @@ export function checkMaterialOptions(options = {}, previous = MATERIAL_DEFAULTS)
  * @property {boolean} foreshortening narrow the blur on surfaces seen at grazing angles
  * @property {number} lightDepthSize the light depth map resolution, pixels (16..8192)
  * @property {boolean} scattering false: no blur, the unblurred diffuse light composed (transmittance stays)
- * @property {boolean} transmittance light through thin parts for every material; false without a light
+ * @property {boolean} transmittance light through thin parts for every material (with `light`)
  * @property {import('./4-compose/debugViews.js').DebugView} debugView the final image or one ingredient: 'final', 'diffuse', 'specular', 'depth', 'mask', and with `light` 'thickness', 'transmittance'
  * @property {number} debugDepthRange world units of view depth the 'depth' view maps from white (near) to black
  * @property {number} debugThicknessRangeMm profile mm of thickness the 'thickness' view maps from black to white

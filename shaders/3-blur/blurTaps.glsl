@@ -24,7 +24,8 @@ uniform int tapCount;           // the kernel's taps (<= SAMPLES; the footprints
 uniform float kernelRadiusMm;   // the kernel's reach: below SSS_MIN_KERNEL_PIXELS of it a pixel does no work
 uniform vec3 strength;          // KERNEL_MODE_FOOTPRINT: mix with no scattering (the reference's strength)
 uniform vec2 projectionScale;   // camera.projectionMatrix.elements[0], [5]
-uniform vec2 resolution;        // pixels (width, height)
+uniform vec2 resolution;        // the view's pixels (width, height): the frame, or an ArrayCamera view's viewport
+uniform vec2 viewOrigin;        // the view's first pixel (0, 0 for the frame): taps stay in the view
 uniform float depthFalloff;     // 1 / depth threshold (world units): dz beyond it is another surface
 uniform bool perspective;       // false for an orthographic camera: the step does not shrink with depth
 
@@ -68,19 +69,20 @@ uniform bool perspective;       // false for an orthographic camera: the step do
 
 varying vec2 vUv;
 
-// The two texels around a tap at `offsetPx` along the axis (centres at integer + 0.5, clamped) and
-// the second one's share; false when the tap is off screen.
+// The two texels around a tap at `offsetPx` along the axis (centres at integer + 0.5, clamped to
+// the view) and the second one's share; false when the tap is off the view (the screen).
 bool sssTapTexels( const in float offsetPx, const in ivec2 pixel, out ivec2 texel0, out ivec2 texel1, out float fraction ) {
-	float position = float( pixel[ AXIS ] ) + 0.5 + offsetPx;
+	float position = float( pixel[ AXIS ] ) - viewOrigin[ AXIS ] + 0.5 + offsetPx;
 	texel0 = texel1 = pixel;
 	fraction = 0.0;
 	if ( position < 0.0 || position >= resolution[ AXIS ] ) return false;
 	float u = position - 0.5;
 	float below = floor( u );
 	fraction = u - below;
+	int first = int( viewOrigin[ AXIS ] );
 	int last = int( resolution[ AXIS ] ) - 1;
-	texel0[ AXIS ] = clamp( int( below ), 0, last );
-	texel1[ AXIS ] = clamp( int( below ) + 1, 0, last );
+	texel0[ AXIS ] = first + clamp( int( below ), 0, last );
+	texel1[ AXIS ] = first + clamp( int( below ) + 1, 0, last );
 	return true;
 }
 

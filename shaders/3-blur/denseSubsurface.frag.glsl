@@ -25,7 +25,8 @@ uniform sampler2D tQuadrant; // QuadrantEnergyLookup.texture
 uniform float quadrantRangeMm; // QuadrantEnergyLookup.rangeMm
 uniform float radiusMm;        // the radius holding `coverage` of the energy (widest channel)
 uniform vec2 projectionScale;  // camera.projectionMatrix.elements[0], [5]
-uniform vec2 resolution;       // pixels
+uniform vec2 resolution;       // the view's pixels: the frame, or an ArrayCamera view's viewport
+uniform vec2 viewOrigin;       // the view's first pixel (0, 0 for the frame)
 uniform float depthFalloff;    // 1 / depth threshold (world units)
 uniform bool perspective;      // false for an orthographic camera
 uniform int maxRadiusPx;       // bound on the loops (the bench checks the radius stays below it)
@@ -44,7 +45,8 @@ varying vec2 vUv;
 // is compared with `expectedDepth`, the centre's plane there.
 void addPixel( const in ivec2 pixel, const in ivec2 offset, const in vec3 energy, const in float expectedDepth, const in vec3 centre, inout vec3 sum, inout vec3 weightSum ) {
 	ivec2 texel = pixel + offset;
-	if ( any( lessThan( texel, ivec2( 0 ) ) ) || any( greaterThanEqual( texel, ivec2( resolution ) ) ) ) return;
+	ivec2 inView = texel - ivec2( viewOrigin );
+	if ( any( lessThan( inView, ivec2( 0 ) ) ) || any( greaterThanEqual( inView, ivec2( resolution ) ) ) ) return;
 	vec3 colour;
 	float keep = sssTapWeight( texel, expectedDepth, centre, colour );
 	sum += energy * keep * colour;

@@ -2,8 +2,10 @@
 // HDR, before OutputPass (on the screen, as the last pass: tone-mapped and encoded, see the end).
 // Pixels that are not subsurface keep exactly what their material wrote.
 // The scene's depth goes out with the colour (gl_FragDepth), so that later passes and the
-// transparent objects drawn after this one depth-test against the scene. With KEEP_BACKGROUND
-// (the pass's clear = false) pixels where the scene drew nothing are left as the target had them.
+// transparent objects drawn after this one depth-test against the scene; with WRITE_DEPTH 0 the
+// output has taken the split's depth per sample instead (src/4-compose/multisampledDepth.js).
+// With KEEP_BACKGROUND (the pass's clear = false) pixels where the scene drew nothing are left as
+// the target had them.
 // DEBUG_VIEW (src/4-compose/debugViews.js) shows one ingredient instead; the thickness and
 // transmittance views need the materials to write them into the diffuse target
 // (SubsurfaceScattering.setDebugView does that).
@@ -27,11 +29,15 @@ varying vec2 vUv;
 
 void main() {
 	ivec2 pixel = ivec2( gl_FragCoord.xy );
-	float depth = texelFetch( tDepth, pixel, 0 ).r;
+	#if KEEP_BACKGROUND == 1 || WRITE_DEPTH == 1
+		float depth = texelFetch( tDepth, pixel, 0 ).r;
+	#endif
 	#if KEEP_BACKGROUND == 1
 		if ( depth == farDepth ) discard; // the scene drew nothing here
 	#endif
-	gl_FragDepth = depth;
+	#if WRITE_DEPTH == 1
+		gl_FragDepth = depth;
+	#endif
 	vec4 light = texelFetch( tColor, pixel, 0 );
 	// The mask from the scattered light's alpha: the blur writes its centre's coverage there, 0 off
 	// the mask and outside its box (cleared), as the diffuse alpha would say, in 8 B where the

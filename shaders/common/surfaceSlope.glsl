@@ -7,13 +7,14 @@
 // - otherwise each neighbour counts if it is on the surface and no steeper than SSS_MAX_SLOPE
 //   (a steeper one is another surface: a depth edge): the central difference of both, the one
 //   that counts, or 0 when neither does.
-// Needs `resolution` (vec2, pixels) and shaders/common/surfaceSample.glsl.
+// Needs `resolution` and `viewOrigin` (vec2, pixels: the view's size and first pixel; neighbours
+// outside the view are not on the surface) and shaders/common/surfaceSample.glsl.
 
 float sssSurfaceSlope( const in ivec2 pixel, const in int axis, const in vec2 surface, const in float pixelWorld ) {
 	ivec2 before = pixel;
 	ivec2 after = pixel;
-	before[ axis ] = max( pixel[ axis ] - 1, 0 );
-	after[ axis ] = min( pixel[ axis ] + 1, int( resolution[ axis ] ) - 1 );
+	before[ axis ] = max( pixel[ axis ] - 1, int( viewOrigin[ axis ] ) );
+	after[ axis ] = min( pixel[ axis ] + 1, int( viewOrigin[ axis ] + resolution[ axis ] ) - 1 );
 	vec2 surfaceBefore = sssSurfaceAt( before );
 	vec2 surfaceAfter = sssSurfaceAt( after );
 	float slopeBefore = surface.r - surfaceBefore.r;

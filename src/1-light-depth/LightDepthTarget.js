@@ -9,6 +9,15 @@ import fragmentShader from '../../shaders/1-light-depth/lightDepth.frag.glsl?raw
 import { assertFloatRenderTargets, describe } from '../support/rendererSupport.js';
 import { preservingRendererState } from '../support/rendererState.js';
 import { LightDepthView, boundsNoVolume } from './LightDepthView.js';
+import { holdingLevels, isDrawable, renderingOnly } from '../frameMeshes.js';
+import { nameClass } from '../support/className.js';
+
+/** The drawable objects of `scene` visible with their ancestors (a LightDepthTarget used alone). */
+function visibleObjects(scene) {
+  const objects = [];
+  scene.traverseVisible((object) => { if (isDrawable(object)) objects.push(object); });
+  return objects;
+}
 
 /** Drawn in place of what the light pass leaves out: three culls a material with visible false. */
 const HIDDEN = new ShaderMaterial({ name: 'LightDepthHidden', visible: false });
@@ -103,15 +112,21 @@ export class LightDepthTarget extends LightDepthView {
 
   /**
    * Renders `scene` from the light; the meshes' materials and the renderer's state are put back.
+   * With the frame's lists (the pipeline's FrameMeshes, after fit) it draws what the camera's frame
+   * holds (the LODs at the camera's levels) on the light's layers, and swaps depth materials in only
+   * for what fit found in the light's view (`inView`); alone, for every visible object in its view.
    * @param {import('three').WebGLRenderer} renderer
    * @param {import('three').Scene} scene
+   * @param {import('../frameMeshes.js').FrameMeshes|null} [frame]
    */
-  render(renderer, scene) {
+  render(renderer, scene, frame = null) {
     assertFloatRenderTargets(renderer, 'LightDepthTarget.render');
     if (!scene || scene.isObject3D !== true) {
       throw new TypeError(`LightDepthTarget.render: scene must be a THREE.Scene, got ${describe(scene)}`);
     }
     this.updateCamera();
+    const { camera } = this;
+    camera.layers.mask = this.layers.mask;
     /** @type {[import('three').Object3D, any][]} */
     const swapped = [];
     // A user's static shadows (autoUpdate false, needsUpdate true) are for the scene's own draw:
@@ -120,13 +135,15 @@ export class LightDepthTarget extends LightDepthView {
     preservingRendererState(renderer, scene, () => {
       try {
         // Per mesh, not scene.overrideMaterial, which would draw a leaf card's cut-away corners
-        // and a glass pane as solid (three's shadow maps do the same).
-        scene.traverseVisible((object) => {
+        // and a glass pane as solid (three's shadow maps do the same). What three culls from the
+        // light's view keeps its material: it is not drawn.
+        const drawn = frame ? this.inView : this.inViewOf(visibleObjects(scene).filter((object) => object.layers.test(camera.layers)));
+        for (const object of drawn) {
           const depthMaterial = this.depthMaterialOf(object);
-          if (depthMaterial === null) return;
+          if (depthMaterial === null) continue;
           swapped.push([object, object.material]);
           object.material = depthMaterial;
-        });
+        }
         scene.overrideMaterial = null;
         scene.background = null;
         renderer.shadowMap.autoUpdate = false;
@@ -135,8 +152,12 @@ export class LightDepthTarget extends LightDepthView {
         renderer.setClearColor(0x000000, 0); // 0 = no surface
         renderer.autoClear = false;
         renderer.clear(true, true, false);
-        if (this.isCube) this._renderFaces(renderer, scene);
-        else renderer.render(scene, this.camera);
+        // Three visits what the light sees alone (with the frame's lists), the LODs held at the
+        // camera's levels; the frame's lights too, though the depth material reads none: three
+        // keys its light state by them, and a state without them would recompile nothing but make
+        // every material check its program again on the next render.
+        const render = () => (this.isCube ? this._renderFaces(renderer, scene) : renderer.render(scene, camera));
+        holdingLevels(frame ? frame.lods : [], () => (frame ? renderingOnly(scene, [...frame.lights, ...drawn], render) : render()));
         this.valid = true;
       } finally {
         for (const [object, material] of swapped) object.material = material;
@@ -145,3 +166,5 @@ export class LightDepthTarget extends LightDepthView {
     });
   }
 }
+
+nameClass(LightDepthTarget, 'LightDepthTarget'); // its name in messages, minified or not

@@ -1,40 +1,103 @@
 // Stage 1, renderer-free: the light's camera, its frustum checks and fit, and which materials it
 // sees, shared by LightDepthTarget and the WebGPU LightDepthNodeTarget (src/webgpu/1-light-depth/),
 // which bring the target, the depth material and the render.
-import { Box3, Matrix4, OrthographicCamera, PerspectiveCamera, Sphere, Vector3 } from 'three';
+import { Box3, Frustum, Layers, Matrix4, OrthographicCamera, PerspectiveCamera, Sphere, Vector3 } from 'three';
+import { intersectsFrustum, materialsOf } from '../frameMeshes.js';
 import { localBoundsOf } from '../support/meshBounds.js';
 import { checkInteger, checkNumber, checkOptions } from '../support/parameterChecks.js';
 import { describe } from '../support/rendererSupport.js';
 import { LIGHT_DEPTH_SIZES, PIPELINE_DEFAULTS } from '../options.js';
+import { nameClass } from '../support/className.js';
 
 const _target = new Vector3();
+const _frustum = new Frustum();
+const _projScreen = new Matrix4();
+const _open = new Vector3(); // a plane of normal 0 and constant 1: every point is inside it
+
+/** The light's view frustum wider than three's by a fraction of its depth range: what lies on its edge gets a depth material (three may take the projection reversed). */
+const FRUSTUM_SLACK = 1e-4;
+
+/** Sets _frustum to `camera`'s view, each plane moved out by `slack` world units. */
+function setFrustum(camera, slack) {
+  _frustum.setFromProjectionMatrix(_projScreen.multiplyMatrices(camera.projectionMatrix, camera.matrixWorldInverse), camera.coordinateSystem, camera.reversedDepth);
+  if (slack > 0) for (const plane of _frustum.planes) plane.constant += slack;
+  return _frustum;
+}
 const _corner = new Vector3();
 const _inverse = new Matrix4();
 
 /**
- * The fitted range's margin, a fraction of its depth, and a perspective near's least share of
- * far (the 24-bit depth buffer orders the surfaces over near..far).
+ * The fit (LightDepthView.fit): its margin, a fraction of its depth and of its window; a
+ * perspective near's least share of far (the 24-bit depth buffer orders the surfaces over
+ * near..far); the window's sides per octave (its side grows in steps of 2^(1/STEPS), about 9 %,
+ * so the texels stay put while a mesh moves within a step).
  */
-export const FIT = Object.freeze({ MARGIN: 0.02, MIN_NEAR: 1e-3 });
+export const FIT = Object.freeze({ MARGIN: 0.02, MIN_NEAR: 1e-3, STEPS: 8 });
 
 /**
- * The light view depths of `object`'s bounds' corners, [nearest, farthest], or null where it has
- * none; for a point light's six faces (`cube`) the depth on the face each corner falls in (the
- * largest of its distances along the axes).
+ * Where objects lie in a light's view: across it, the tangents of the view axis (x / depth,
+ * y / depth) for a perspective light, world units for an orthographic one; along it, the depth
+ * (for a point light's six faces, the depth on the face each corner falls in: the largest of its
+ * distances along the axes). `bounded` is false where a corner is on or behind a perspective
+ * light's plane (its tangents are unbounded).
  */
-function depthRange(object, view, cube) {
-  const box = localBoundsOf(object);
-  if (!box || box.isEmpty()) return null;
-  let near = Infinity;
-  let far = -Infinity;
-  for (let k = 0; k < 8; k++) {
-    _corner.set(k & 1 ? box.max.x : box.min.x, k & 2 ? box.max.y : box.min.y, k & 4 ? box.max.z : box.min.z)
-      .applyMatrix4(object.matrixWorld).applyMatrix4(view);
-    const depth = cube ? Math.max(Math.abs(_corner.x), Math.abs(_corner.y), Math.abs(_corner.z)) : -_corner.z;
-    near = Math.min(near, depth);
-    far = Math.max(far, depth);
+class LightViewBounds {
+  constructor() { this.makeEmpty(); }
+
+  makeEmpty() {
+    this.minX = this.minY = this.near = Infinity;
+    this.maxX = this.maxY = this.far = -Infinity;
+    this.bounded = true;
+    return this;
   }
-  return [near, far];
+
+  /** Whether the bounds across meet `window` ({ x0, y0, side }). */
+  overlaps({ x0, y0, side }) {
+    return this.maxX >= x0 && this.minX <= x0 + side && this.maxY >= y0 && this.minY <= y0 + side;
+  }
+}
+
+const _targetBounds = new LightViewBounds();
+const _objectBounds = new LightViewBounds();
+
+/**
+ * Grows `into` by the corners of `objects`' bounds (localBoundsOf) seen through `view`.
+ * @param {LightViewBounds} into @param {Iterable<import('three').Object3D>} objects
+ * @param {Matrix4} view world → the light's view @param {boolean} perspective @param {boolean} cube
+ */
+function lightViewBounds(into, objects, view, perspective, cube) {
+  for (const object of objects) {
+    const box = localBoundsOf(object);
+    if (!box || box.isEmpty()) continue;
+    for (let k = 0; k < 8; k++) {
+      _corner.set(k & 1 ? box.max.x : box.min.x, k & 2 ? box.max.y : box.min.y, k & 4 ? box.max.z : box.min.z)
+        .applyMatrix4(object.matrixWorld).applyMatrix4(view);
+      const depth = cube ? Math.max(Math.abs(_corner.x), Math.abs(_corner.y), Math.abs(_corner.z)) : -_corner.z;
+      into.near = Math.min(into.near, depth);
+      into.far = Math.max(into.far, depth);
+      if (perspective && !(depth > 0)) {
+        into.bounded = false;
+        continue;
+      }
+      const x = perspective ? _corner.x / depth : _corner.x;
+      const y = perspective ? _corner.y / depth : _corner.y;
+      into.minX = Math.min(into.minX, x);
+      into.maxX = Math.max(into.maxX, x);
+      into.minY = Math.min(into.minY, y);
+      into.maxY = Math.max(into.maxY, y);
+    }
+  }
+  return into;
+}
+
+/**
+ * The layers a light's pass draws, as three's shadow maps take them: its shadow camera's where
+ * they name more than layer 0, else the camera's.
+ * @param {import('three').Light} light @param {import('three').Camera} camera
+ */
+export function lightLayers(light, camera) {
+  const own = light.shadow?.camera?.layers;
+  return own && (own.mask & 0xfffffffe) !== 0 ? own : camera.layers;
 }
 
 const nameOf = (object) => (object.name ? `mesh "${object.name}"` : `an unnamed ${object.type}`);
@@ -124,6 +187,12 @@ export class LightDepthView {
     this.fitted = null;
     /** A point light's aim at the transmitting meshes ({ center, fov }: fit), or null: six faces. */
     this.aim = null;
+    /** The window across the view that fit holds the transmitting meshes in (see _window), or null: the light's whole field. */
+    this.window = null;
+    /** The layers the light's pass draws (lightLayers: as three's shadow maps), set by fit. */
+    this.layers = new Layers();
+    /** What fit found in the light's view (its pass swaps depth materials in for these; three culls the rest). @type {import('three').Object3D[]} */
+    this.inView = [];
     this.camera = cameraFor(light);
     /** World → the light's view (for a point light: centred on it, the world's axes; its faces turn from there). */
     this.viewMatrix = new Matrix4();
@@ -234,44 +303,121 @@ export class LightDepthView {
   }
 
   /**
-   * Fits near and far to the visible meshes whose material `transmits`, and to what the light sees
-   * in front of them (it counts as thickness): the shadow camera's near and far clipped meshes
-   * away silently. A point light is aimed at those meshes where they fit a cone of POINT_AIM_DEG,
-   * else it takes six faces (isCube).
-   * @param {import('three').Scene} scene (world matrices up to date)
+   * Fits the light's view to what its map must hold this frame: the meshes of `frame` on the
+   * screen whose material `transmits` (FrameMeshes.onScreen), and whatever the light sees in front
+   * of them (it counts as thickness). Its window, across, holds those meshes' bounds (FIT.STEPS:
+   * quantised and snapped to its own texels, so the texels stay put while they move), within the
+   * spot's cone; its near and far, along, from the nearest such surface to their farthest corner
+   * (the shadow camera's near and far clipped meshes away silently). A point light is aimed at
+   * those meshes where they fit a cone of POINT_AIM_DEG, else it takes six faces (isCube). The
+   * light's pass then draws what lies in that view (three's frustum culling), nothing else.
+   * @param {import('../frameMeshes.js').FrameMeshes} frame the frame's lists (world matrices up to date)
    * @param {(material: import('three').Material) => boolean} transmits
    * @returns {string|null} what cannot be fitted: a spot light inside a transmitting mesh's bounds
    */
-  fit(scene, transmits) {
+  fit(frame, transmits) {
+    this.layers.mask = lightLayers(this.light, frame.camera).mask;
     const targets = [];
-    const seen = [];
-    scene.traverseVisible((object) => {
-      if (!object.isMesh) return;
-      const materials = Array.isArray(object.material) ? object.material : [object.material];
-      if (!materials.some(lightSees) || !localBoundsOf(object)) return;
-      seen.push(object);
-      if (materials.some((m) => m && transmits(m))) targets.push(object);
-    });
+    for (const object of frame.onScreen) if (this._sees(object) && materialsOf(object).some((m) => m && transmits(m))) targets.push(object);
     if (this.light.isPointLight) this._aim(targets);
+    this.window = null;
+    this.fitted = null;
+    this.inView.length = 0;
     this.updateCamera();
     const view = this.camera.matrixWorldInverse;
     const perspective = !this.light.isDirectionalLight;
     const cube = this.isCube;
-    const ranges = new Map(seen.map((object) => [object, depthRange(object, view, cube)]).filter(([, range]) => range));
-    const far = targets.reduce((most, object) => Math.max(most, ranges.get(object)?.[1] ?? -Infinity), -Infinity); // no spread: scenes of 100k meshes
-    if (!(perspective ? far > 0 : Number.isFinite(far))) { // nothing to hold: the map goes unread
-      this.fitted = null;
-      return null;
-    }
-    // Whatever lies before the farthest transmitting surface may stand between it and the light.
+    const across = lightViewBounds(_targetBounds.makeEmpty(), targets, view, perspective, cube);
+    if (!(perspective ? across.far > 0 : Number.isFinite(across.far))) return null; // nothing to hold: the map goes unread
+    const { far } = across;
+    if (!cube && across.bounded) this.window = this._window(across);
+    // What may stand between the light and the farthest transmitting surface: the objects in the
+    // window (three's frustum test on its sides, `candidates`), and of those the surfaces before it.
+    const candidates = this._inWindow(frame.solids);
     let near = Infinity;
-    for (const [n, f] of ranges.values()) if (f > (perspective ? 0 : -Infinity) && n < far) near = Math.min(near, n);
-    const margin = FIT.MARGIN * Math.max(far - near, Math.abs(far), Math.abs(near)) || FIT.MARGIN; // a flat mesh in the light's plane: some depth
+    for (const object of candidates) {
+      if (!this._sees(object)) continue;
+      const bounds = lightViewBounds(_objectBounds.makeEmpty(), [object], view, perspective, cube);
+      if (!(bounds.far > (perspective ? 0 : -Infinity)) || !(bounds.near < far)) continue;
+      near = Math.min(near, bounds.near);
+    }
+    // A mesh flat in the light's view (a leaf face-on) has near = far: the margin gives it depth.
+    const margin = FIT.MARGIN * Math.max(far - near, Math.abs(far), Math.abs(near), Number.MIN_VALUE) || FIT.MARGIN;
     near -= margin;
     if (perspective) near = Math.max(cube ? 0 : near, FIT.MIN_NEAR * far); // six faces: the nearest is not a corner's
     this.fitted = { near, far: far + margin };
+    this.updateCamera();
+    // What the light's pass draws: of the candidates, those in its view (three's test, a hair wider).
+    this.inView.push(...this.inViewOf(candidates));
     const inside = this.light.isSpotLight ? targets.find((object) => this._inside(object)) : undefined;
     return inside ? `the spot light${this.light.name ? ` "${this.light.name}"` : ''} is inside the bounds of ${nameOf(inside)}, so its parts nearer than ${Number(this.fitted.near.toPrecision(3))} world units to the light are not in the light's depth map (no transmittance there): move the light out of it` : null;
+  }
+
+  /**
+   * Of `objects`, those on the light's layers within its view's sides (its near and far left
+   * open): every one for six faces, which turn to every side.
+   * @private @param {Iterable<import('three').Object3D>} objects
+   */
+  _inWindow(objects) {
+    const cube = this.isCube;
+    if (!cube) {
+      setFrustum(this.camera, 0);
+      _frustum.planes[4].set(_open, 1); // far: open
+      _frustum.planes[5].set(_open, 1); // near: open
+    }
+    const found = [];
+    for (const object of objects) {
+      if (!object.layers.test(this.layers)) continue;
+      if (cube || object.frustumCulled === false || intersectsFrustum(object, _frustum)) found.push(object);
+    }
+    return found;
+  }
+
+  /**
+   * Of `objects` on the light's layers, those three draws from the light's camera as it stands:
+   * in its view by three's frustum test, a hair wider so that what lies on the edge counts (every
+   * one for six faces, each its own frustum).
+   * @param {Iterable<import('three').Object3D>} objects
+   * @returns {import('three').Object3D[]}
+   */
+  inViewOf(objects) {
+    const cube = this.isCube;
+    if (!cube) setFrustum(this.camera, FRUSTUM_SLACK * Math.abs(this.camera.far - this.camera.near));
+    const found = [];
+    for (const object of objects) {
+      if (cube || object.frustumCulled === false || intersectsFrustum(object, _frustum)) found.push(object);
+    }
+    return found;
+  }
+
+  /** Whether the light's pass draws `object` as a surface with bounds: a mesh on its layers with a material it sees. @private */
+  _sees(object) {
+    return object.isMesh === true && object.layers.test(this.layers) && materialsOf(object).some(lightSees) && localBoundsOf(object) !== null;
+  }
+
+  /**
+   * The window across the light's view holding `bounds` (tangents of the view axis for a
+   * perspective light, world units for a directional one): a square whose side is a step of
+   * FIT.STEPS and whose corner lies on its own texel grid, so a mesh moving inside it keeps its
+   * texels (a shadow map's stabilisation); within the spot's cone or the point light's aim, where
+   * it would be no smaller than that field (null: the whole field).
+   * @private @param {LightViewBounds} bounds @returns {{ x0: number, y0: number, side: number }|null}
+   */
+  _window(bounds) {
+    const field = this.light.isSpotLight ? Math.tan(this.light.angle) : this.light.isPointLight ? Math.tan((this.aim.fov * Math.PI) / 360) : Infinity;
+    const x0 = Math.max(bounds.minX, -field);
+    const x1 = Math.min(bounds.maxX, field);
+    const y0 = Math.max(bounds.minY, -field);
+    const y1 = Math.min(bounds.maxY, field);
+    const extent = Math.max(x1 - x0, y1 - y0);
+    if (!(extent > 0) || !Number.isFinite(extent)) return null;
+    // The side's step above the extent with a texel to spare each side (snapping moves the corner by up to one).
+    let side = 2 ** (Math.ceil(Math.log2(extent * (1 + FIT.MARGIN)) * FIT.STEPS) / FIT.STEPS);
+    while (side - 2 * (side / this.size) < extent) side *= 2 ** (1 / FIT.STEPS);
+    if (side >= 2 * field) return null;
+    const texel = side / this.size;
+    const centre = (a, b) => Math.min(Math.max(Math.floor(((a + b) / 2 - side / 2) / texel) * texel, -field), field - side);
+    return { x0: centre(x0, x1), y0: centre(y0, y1), side };
   }
 
   /** Whether the light is inside `object`'s bounds. */
@@ -302,17 +448,20 @@ export class LightDepthView {
     else camera.lookAt(light.isPointLight ? this.aim.center : _target.setFromMatrixPosition(light.target.matrixWorld));
     camera.near = this.near ?? this.fitted?.near ?? shadowCamera.near;
     camera.far = this.far ?? this.fitted?.far ?? shadowCamera.far;
-    if (light.isPointLight) {
-      camera.fov = this.aim?.fov ?? 90;
-      camera.aspect = 1;
-    } else if (light.isSpotLight) {
-      camera.fov = (2 * light.angle * 180) / Math.PI;
-      camera.aspect = 1;
+    const { window } = this;
+    if (light.isDirectionalLight) {
+      // The window across (fit) in world units, else the shadow camera's extent.
+      camera.left = window ? window.x0 : shadowCamera.left;
+      camera.right = window ? window.x0 + window.side : shadowCamera.right;
+      camera.bottom = window ? window.y0 : shadowCamera.bottom;
+      camera.top = window ? window.y0 + window.side : shadowCamera.top;
     } else {
-      camera.left = shadowCamera.left;
-      camera.right = shadowCamera.right;
-      camera.top = shadowCamera.top;
-      camera.bottom = shadowCamera.bottom;
+      camera.fov = light.isSpotLight ? (2 * light.angle * 180) / Math.PI : this.aim?.fov ?? 90;
+      camera.aspect = 1;
+      // The window (fit) as a part of that field, in tangents: the field spans 2 · tan(fov / 2).
+      const field = Math.tan((camera.fov * Math.PI) / 360);
+      if (window) camera.setViewOffset(2 * field, 2 * field, window.x0 + field, field - window.y0 - window.side, window.side, window.side);
+      else camera.clearViewOffset();
     }
     camera.updateProjectionMatrix();
     camera.updateMatrixWorld();
@@ -337,3 +486,5 @@ export class LightDepthView {
     return null;
   }
 }
+
+nameClass(LightDepthView, 'LightDepthView'); // its name in messages, minified or not

@@ -18,13 +18,15 @@
 import { Color, FloatType, HalfFloatType } from 'three';
 import { Pass } from 'three/addons/postprocessing/Pass.js';
 import { getSubsurface } from './subsurfaceMaterial.js';
+import { FrameMeshes, materialsOf, renderingOnly } from '../frameMeshes.js';
 import { subsurfaceScreenBox } from './subsurfaceScreenBox.js';
 import { ATTACHMENTS, DRAW_BUFFERS, DRAW_PHASES, createSubsurfaceTarget, diffuseCarriesDepth, drawingInto, setDiffuseCarriesDepth, setSurfaceChannels } from './subsurfaceTarget.js';
 import { assertFloatRenderTargets, describe } from '../support/rendererSupport.js';
 import { checkOptions } from '../support/parameterChecks.js';
 import { PASS_BOOLEANS, booleanFields } from '../support/booleanFields.js';
-import { preservingRendererState } from '../support/rendererState.js';
+import { holdingMatrices, preservingRendererState } from '../support/rendererState.js';
 import { checkThreeRevision } from '../support/threeVersion.js';
+import { nameClass } from '../support/className.js';
 
 const ZERO = new Float32Array(4);
 const _clearColor = new Color();
@@ -36,6 +38,9 @@ function materialLabel(material, mesh) {
   if (material.name) return `material "${material.name}"`;
   return mesh.name ? `the ${material.type} of mesh "${mesh.name}"` : `an unnamed ${material.type} of an unnamed ${mesh.type}`;
 }
+
+/** Whether a material is made subsurface (by any pipeline). */
+const isSubsurface = (material) => getSubsurface(material) !== undefined;
 
 /** The category each visible material is drawn in. */
 const CATEGORIES = Object.freeze({ SUBSURFACE: 'subsurface', OPAQUE: 'opaque', TRANSPARENT: 'transparent' });
@@ -73,7 +78,11 @@ export class SubsurfaceScenePass extends Pass {
     this.clearColor = null;
     this.clearAlpha = null;
     this.needsSwap = false; // writes its own targets, not the composer's
-    /** Meshes with a subsurface material seen in the last render (for the on-screen width estimate). */
+    /** What the frame covers (collect): the meshes drawn, on the screen, the lights' solids, the LODs. */
+    this.frame = new FrameMeshes();
+    this._collected = false;
+    this._splitObjects = [];
+    /** The meshes with an opaque subsurface material on the screen in the last render (the plan, the box). */
     this.subsurfaceMeshes = [];
     /**
      * The last render's subsurface pixels lie in this box (device pixels; null: anywhere), from
@@ -143,29 +152,48 @@ export class SubsurfaceScenePass extends Pass {
     return this._categories.get(material);
   }
 
-  /** Sorts the scene's visible materials into the three categories; returns how many are transparent. */
+  /**
+   * Decides what this frame covers (src/frameMeshes.js: visible, on the camera's layers, LOD
+   * levels, the frustum) and sorts the materials drawn into the three categories. render() calls
+   * it unless it was called since the last render (the orchestrator calls it first: the light's
+   * pass and the plan read the same lists). The world matrices are updated as three's render does.
+   * @returns {FrameMeshes}
+   */
+  collect() {
+    const { scene, camera } = this;
+    if (scene.matrixWorldAutoUpdate === true) scene.updateMatrixWorld();
+    if (camera.parent === null && camera.matrixWorldAutoUpdate === true) camera.updateMatrixWorld();
+    this.frame.update(scene, camera, isSubsurface);
+    if (scene.overrideMaterial) this._classifyOverridden();
+    else this._classify();
+    this._collected = true;
+    return this.frame;
+  }
+
+  /** Sorts the frame's drawn materials into the three categories; returns how many are transparent. */
   _classify() {
     const categories = this._categories;
     categories.clear();
     this.subsurfaceMeshes.length = 0;
     let transparent = 0;
-    this.scene.traverseVisible((object) => {
+    for (const object of this.frame.drawn) {
       const material = object.material;
-      if (!material) return;
-      let hasSubsurface = false;
+      if (!material) continue;
       for (const m of Array.isArray(material) ? material : [material]) {
-        if (!m || !m.visible) continue;
-        const category = m.transparent ? CATEGORIES.TRANSPARENT : getSubsurface(m) ? CATEGORIES.SUBSURFACE : CATEGORIES.OPAQUE;
-        if (m.transparent && getSubsurface(m) && !warnedTransparent.has(m)) {
+        if (!m || !m.visible || categories.has(m)) continue;
+        const category = m.transparent ? CATEGORIES.TRANSPARENT : isSubsurface(m) ? CATEGORIES.SUBSURFACE : CATEGORIES.OPAQUE;
+        if (m.transparent && isSubsurface(m) && !warnedTransparent.has(m)) {
           warnedTransparent.add(m);
           console.warn(`SubsurfaceScattering: ${materialLabel(m, object)} is transparent, so it is blended over the scattered image without scattering (as three blends transparent objects). Set transparent = false to make it scatter; alphaTest or alphaHash keep its cut-outs.`);
         }
         categories.set(m, category);
         if (category === CATEGORIES.TRANSPARENT) transparent++;
-        if (category === CATEGORIES.SUBSURFACE) hasSubsurface = true;
       }
-      if (hasSubsurface) this.subsurfaceMeshes.push(object);
-    });
+    }
+    // On the screen: an opaque subsurface material (a transparent one draws as transparent).
+    for (const object of this.frame.onScreen) {
+      if (materialsOf(object).some((m) => categories.get(m) === CATEGORIES.SUBSURFACE)) this.subsurfaceMeshes.push(object);
+    }
     this.transparentCount = transparent;
     return transparent;
   }
@@ -200,7 +228,15 @@ export class SubsurfaceScenePass extends Pass {
     drawingInto(this.renderTarget, phase, this.owner, () => {
       renderer.getContext().drawBuffers(drawBuffers);
       this._show(phase, category);
-      renderer.render(this.scene, this.camera);
+      if (phase !== DRAW_PHASES.SPLIT) {
+        renderer.render(this.scene, this.camera);
+        return;
+      }
+      // The split draws the subsurface meshes on the screen, lit by the frame's lights: three
+      // visits those alone, not the whole scene again (its matrices are call 1's).
+      this._splitObjects.length = 0;
+      this._splitObjects.push(...this.frame.lights, ...this.subsurfaceMeshes);
+      holdingMatrices(this.scene, () => renderingOnly(this.scene, this._splitObjects, () => renderer.render(this.scene, this.camera)));
     });
   }
 
@@ -225,8 +261,8 @@ export class SubsurfaceScenePass extends Pass {
     assertFloatRenderTargets(renderer, 'SubsurfaceScenePass');
     const { scene, renderTarget: target } = this;
     const gl = renderer.getContext();
-    if (scene.overrideMaterial) this._classifyOverridden();
-    else this._classify();
+    if (!this._collected) this.collect();
+    this._collected = false;
     preservingRendererState(renderer, scene, () => this._restoringMaterials(() => {
       try {
         if (this.lightDepth) this.lightDepth.render(renderer, scene);
@@ -295,3 +331,5 @@ export class SubsurfaceScenePass extends Pass {
 }
 
 booleanFields(SubsurfaceScenePass.prototype, PASS_BOOLEANS);
+
+nameClass(SubsurfaceScenePass, 'SubsurfaceScenePass'); // its name in messages, minified or not

@@ -8,6 +8,7 @@ import { Matrix4, Vector3 } from 'three';
 import { LightDepthView } from '../1-light-depth/LightDepthView.js';
 import { ProfileLookup } from '../profiles/ProfileLookup.js';
 import { describe } from '../support/rendererSupport.js';
+import { classNameOf } from '../support/className.js';
 import { nearestViewDepth } from '../framePlan.js';
 import { MATERIAL_DEFAULTS, MATERIAL_SCHEMA, PIPELINE_SCHEMA, checkOption } from '../options.js';
 
@@ -62,7 +63,7 @@ export function transmittanceSettings(options, Accepted = LightDepthView) {
   const {
     lightDepth, lookup, worldUnitInMm, widthMm = MATERIAL_DEFAULTS.widthMm, translucency = MATERIAL_DEFAULTS.translucency, shrinkMm = MATERIAL_DEFAULTS.shrinkMm,
   } = options;
-  if (!(lightDepth instanceof Accepted)) throw new TypeError(`transmittance: lightDepth must be a ${Accepted.name}, got ${describe(lightDepth)}`);
+  if (!(lightDepth instanceof Accepted)) throw new TypeError(`transmittance: lightDepth must be a ${classNameOf(Accepted)}, got ${describe(lightDepth)}`);
   if (!(lookup instanceof ProfileLookup)) throw new TypeError(`transmittance: lookup must be a ProfileLookup, got ${describe(lookup)}`);
   checkOption(PIPELINE_SCHEMA, 'worldUnitInMm', worldUnitInMm);
   for (const [name, value] of Object.entries({ widthMm, translucency, shrinkMm })) checkOption(MATERIAL_SCHEMA, name, value);
@@ -128,25 +129,24 @@ export function lightFromBehind(light, camera, nearestDepth) {
 }
 
 /**
- * Whether `light` can send transmitted light to any visible mesh of `scene` that has a material
- * for which `transmits(material)` holds (lightFromBehind at the mesh's nearest point). False lets
- * the light depth pass be skipped: its map would go unread. The scene's and the camera's world
- * matrices must be up to date (the light's are updated here).
- * @param {import('three').SpotLight|import('three').DirectionalLight} light
- * @param {import('three').Scene} scene
+ * Whether `light` can send transmitted light to any of `meshes` (the frame's subsurface meshes on
+ * the screen: FrameMeshes.onScreen) that has a material for which `transmits(material)` holds
+ * (lightFromBehind at the mesh's nearest point). False lets the light depth pass be skipped: its
+ * map would go unread. The meshes' and the camera's world matrices must be up to date (the
+ * light's are updated here).
+ * @param {import('three').SpotLight|import('three').DirectionalLight|import('three').PointLight} light
+ * @param {Iterable<import('three').Mesh>} meshes
  * @param {import('three').Camera} camera
  * @param {(material: import('three').Material) => boolean} transmits
  */
-export function lightReachesFromBehind(light, scene, camera, transmits) {
+export function lightReachesFromBehind(light, meshes, camera, transmits) {
   light.updateMatrixWorld();
   light.target?.updateMatrixWorld();
-  let reaches = false;
-  scene.traverseVisible((object) => {
-    if (reaches || !object.isMesh) return;
-    const materials = Array.isArray(object.material) ? object.material : [object.material];
-    if (materials.some((m) => m && transmits(m)) && lightFromBehind(light, camera, nearestViewDepth(object, camera))) reaches = true;
-  });
-  return reaches;
+  for (const mesh of meshes) {
+    const materials = Array.isArray(mesh.material) ? mesh.material : [mesh.material];
+    if (materials.some((m) => m && transmits(m)) && lightFromBehind(light, camera, nearestViewDepth(mesh, camera))) return true;
+  }
+  return false;
 }
 
 /** The uniform objects of the light the hooked material shades transmittance with. */

@@ -254,13 +254,17 @@ export class BlurStage {
    * @param {import('./blurPlan.js').BlurPlan} [plan] the frame's plan (default: the last one)
    * @param {{ x: number, y: number, width: number, height: number }|null} [box=null] the subsurface
    *   pixels' screen box (src/2-scene-split/subsurfaceScreenBox.js); null: the whole frame
+   * @param {string} [clearKey] what the targets' clears follow (renderViews: all the views' boxes;
+   *   default: `box`)
    */
-  render(renderer, camera, timed, plan = this.lastPlan, box = null) {
+  render(renderer, camera, timed, plan = this.lastPlan, box = null, clearKey = undefined) {
     for (const pass of this.surfacePasses) pass.camera = camera;
     if (this.groupCapacity > 1) this._ensureGroupTarget();
     else if (this._groupTarget) this._freeGroupTarget(); // back to one kernel: its 32 B per pixel go
+    const kernel = plan.passes === 'separable' ? this._kernelOfPlan(plan) : this.kernel; // the plan's, where views plan apart
+    if (kernel !== this.kernel) this._setPassKernels(kernel, plan);
     // The scissor's clears (when the box moved) are timed with the first pass.
-    const scissored = () => this._scissor(renderer, box);
+    const scissored = () => this._scissor(renderer, box, clearKey);
     if (plan.passes === 'dense') {
       timed('dense', () => { scissored(); this.densePass.render(renderer, this.scatteredTarget, null); });
     } else {
@@ -269,6 +273,29 @@ export class BlurStage {
         this.horizontalPass.render(renderer, this._horizontalTarget(plan), null);
       });
       timed('blurV', () => this.verticalPass.render(renderer, this.scatteredTarget, null));
+    }
+  }
+
+  /**
+   * Stage 3 for each of an ArrayCamera's views (src/support/cameraViews.js): each view with its own
+   * camera, plan and subsurface box, into its own rectangle of the targets, its taps inside it, as
+   * that view drawn alone with its camera would be blurred. The targets are cleared once where the
+   * boxes moved; a view its plan does not blur is left out (the compose shows its unblurred light).
+   * @param {import('three').WebGLRenderer} renderer
+   * @param {{ camera: import('three').Camera, viewport: object, rect: object, plan: import('./blurPlan.js').BlurPlan, box: object }[]} views
+   *   box: the view's subsurface pixels in the target (within rect)
+   * @param {(stage: string, draw: () => void) => void} timed
+   */
+  renderViews(renderer, views, timed) {
+    const clearKey = `views:${views.map(({ plan, box }) => (plan.blur ? `${box.x},${box.y},${box.width},${box.height}` : '-')).join(';')}`;
+    try {
+      for (const view of views) {
+        if (!view.plan.blur || view.box.width === 0) continue;
+        for (const pass of this.surfacePasses) pass.setView(view.rect, view.viewport);
+        this.render(renderer, view.camera, timed, view.plan, view.box, clearKey);
+      }
+    } finally {
+      for (const pass of this.surfacePasses) pass.setSize(this._size.width, this._size.height);
     }
   }
 
@@ -311,29 +338,31 @@ export class BlurStage {
   }
 
   /**
-   * Scissors both targets to `box` (null: none). Outside it the passes would write 0 (the diffuse
-   * attachment is 0 off subsurface pixels), so a target is cleared to 0 whenever the box moves:
-   * the vertical pass's taps and any reader of scatteredTarget then find what an unscissored
-   * frame leaves there.
+   * Scissors the targets to `box` (null: none). Outside it the passes would write 0 (the diffuse
+   * attachment is 0 off subsurface pixels), so the targets are cleared to 0 whenever the box moves
+   * (`clearKey`: the boxes of all the frame's views, where there are several): the vertical pass's
+   * taps and any reader of scatteredTarget then find what an unscissored frame leaves there.
    */
-  _scissor(renderer, box) {
-    const key = box ? `${box.x},${box.y},${box.width},${box.height}` : 'full';
-    if (key === this._scissorKey) return;
-    const previous = renderer.getRenderTarget();
-    const gl = renderer.getContext();
-    for (const target of [this._blurTarget, this.scatteredTarget, ...(this._groupTarget ? [this._groupTarget] : [])]) {
-      target.scissorTest = false;
-      if (box) {
+  _scissor(renderer, box, clearKey = box ? `${box.x},${box.y},${box.width},${box.height}` : 'full') {
+    const targets = [this._blurTarget, this.scatteredTarget, ...(this._groupTarget ? [this._groupTarget] : [])];
+    if (clearKey !== this._scissorKey) {
+      const previous = renderer.getRenderTarget();
+      const gl = renderer.getContext();
+      for (const target of targets) {
+        target.scissorTest = false;
+        if (!box) continue;
         renderer.setRenderTarget(target);
         // not renderer.clear: its colour is the scene's (and gl.clear leaves integer attachments undefined)
         if (target === this._groupTarget) target.textures.forEach((_, i) => gl.clearBufferuiv(gl.COLOR, i, ZERO_UINTS));
         else gl.clearBufferfv(gl.COLOR, 0, TRANSPARENT_BLACK);
-        target.scissor.set(box.x, box.y, box.width, box.height);
-        target.scissorTest = true;
       }
+      if (box) renderer.setRenderTarget(previous);
+      this._scissorKey = clearKey;
     }
-    if (box) renderer.setRenderTarget(previous);
-    this._scissorKey = key;
+    for (const target of targets) {
+      target.scissorTest = box !== null;
+      if (box) target.scissor.set(box.x, box.y, box.width, box.height);
+    }
   }
 
   /**

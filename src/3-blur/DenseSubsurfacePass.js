@@ -11,6 +11,7 @@ import { getProfile } from '../profiles/presets.js';
 import { checkInteger, checkNumber, checkOptions } from '../support/parameterChecks.js';
 import { describe } from '../support/rendererSupport.js';
 import { SurfacePass } from './SurfacePass.js';
+import { nameClass } from '../support/className.js';
 
 const CHUNKS = Object.freeze({ 'common/quadrantEnergy.glsl': quadrantEnergyGlsl });
 
@@ -98,3 +99,5 @@ export class DenseSubsurfacePass extends SurfacePass {
     if (this._ownsLookup) this.energyLookup.dispose();
   }
 }
+
+nameClass(DenseSubsurfacePass, 'DenseSubsurfacePass'); // its name in messages, minified or not

@@ -20,6 +20,7 @@ import { describe } from '../support/rendererSupport.js';
 import { FOLLOW_SURFACE_MODES } from '../options.js';
 import { SurfacePass, assembleSurfaceGlsl } from './SurfacePass.js';
 import { MAX_KERNEL_GROUPS } from './kernelGroups.js';
+import { nameClass } from '../support/className.js';
 
 export { FOLLOW_SURFACE_MODES };
 /** How the blur weighs its taps: a kernel's fixed taps, or footprints snapped to pixels (see the shader). */
@@ -317,3 +318,5 @@ export class SubsurfaceBlurPass extends SurfacePass {
     this.uniforms.tKernels.value?.dispose();
   }
 }
+
+nameClass(SubsurfaceBlurPass, 'SubsurfaceBlurPass'); // its name in messages, minified or not

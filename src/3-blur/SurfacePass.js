@@ -87,6 +87,7 @@ export class SurfacePass extends ShaderPass {
         tCoverage: { value: null }, // setLightCarriesDepth, with MSAA
         projectionScale: { value: new Vector2(1, 1) },
         resolution: { value: new Vector2(1, 1) },
+        viewOrigin: { value: new Vector2(0, 0) },
         depthFalloff: { value: 1 },
         perspective: { value: true },
         ...uniforms,
@@ -102,6 +103,7 @@ export class SurfacePass extends ShaderPass {
     this.setForeshortening(foreshortening);
     this.multisampled = false;
     this.lightCarriesDepth = false;
+    this._viewportScale = [1, 1]; // the view's viewport over its rectangle (setView)
   }
 
   /**
@@ -165,12 +167,28 @@ export class SurfacePass extends ShaderPass {
 
   /** @param {number} width device pixels @param {number} height device pixels */
   setSize(width, height) {
-    this.uniforms.resolution.value.set(width, height);
+    this.setView({ x: 0, y: 0, width, height });
+  }
+
+  /**
+   * The view the pass blurs (device pixels): the whole frame (setSize), or one of an ArrayCamera's
+   * views (src/support/cameraViews.js): taps and slopes stay inside `rect` as inside the frame
+   * (its edges are the screen's), and a profile mm spans what it spans in `viewport` (NDC spans
+   * it; `rect` is its part inside the target).
+   * @param {{ x: number, y: number, width: number, height: number }} rect
+   * @param {{ width: number, height: number }} [viewport=rect]
+   */
+  setView(rect, viewport = rect) {
+    this.uniforms.viewOrigin.value.set(rect.x, rect.y);
+    this.uniforms.resolution.value.set(rect.width, rect.height);
+    // The shaders scale by projectionScale × resolution: the viewport's size times the projection's.
+    this._viewportScale = [viewport.width / rect.width, viewport.height / rect.height];
   }
 
   render(renderer, writeBuffer, readBuffer, deltaTime, maskActive) {
     const projection = this.camera.projectionMatrix.elements;
-    this.uniforms.projectionScale.value.set(projection[0], projection[5]);
+    const [sx, sy] = this._viewportScale;
+    this.uniforms.projectionScale.value.set(projection[0] * sx, projection[5] * sy);
     this.uniforms.perspective.value = isPerspective(this.camera);
     super.render(renderer, writeBuffer, readBuffer, deltaTime, maskActive);
   }

@@ -12,7 +12,8 @@ import { checkBoolean, checkOneOf, checkNumber, checkOptions } from '../support/
 import { PASS_BOOLEANS, booleanFields } from '../support/booleanFields.js';
 import { DEBUG_VIEWS, DEBUG_VIEW } from './debugViews.js';
 import { PIPELINE_DEFAULTS } from '../options.js';
-
+import { nameClass } from '../support/className.js';
+import { MultisampledDepthShare } from './multisampledDepth.js';
 
 const fragmentShader = assembleGlsl('SubsurfaceComposePass', composeGlsl, { 'common/finite.glsl': finiteGlsl, 'common/carriedDepth.glsl': carriedDepthGlsl });
 
@@ -27,18 +28,24 @@ export class SubsurfaceComposePass extends ShaderPass {
    * @param {import('three').Texture|null} [options.scatteredTexture=null] the blurred diffuse light,
    *   alpha as the diffuse's; null: the composer's read buffer
    * @param {import('three').DepthTexture} options.depthTexture the multi-target's depth, written out
+   * @param {import('three').WebGLRenderTarget|null} [options.depthTarget=null] the multi-target
+   *   itself: where the output is multisampled like it, the output takes its multisampled depth
+   *   (./multisampledDepth.js) instead of a depth written one per pixel
    */
   constructor(options = {}) {
     const {
-      colorTexture, surfaceTexture, diffuseTexture, scatteredTexture = null, depthTexture,
-    } = checkOptions('SubsurfaceComposePass options', options, ['colorTexture', 'surfaceTexture', 'diffuseTexture', 'scatteredTexture', 'depthTexture']);
+      colorTexture, surfaceTexture, diffuseTexture, scatteredTexture = null, depthTexture, depthTarget = null,
+    } = checkOptions('SubsurfaceComposePass options', options, ['colorTexture', 'surfaceTexture', 'diffuseTexture', 'scatteredTexture', 'depthTexture', 'depthTarget']);
     const inputs = { colorTexture, surfaceTexture, diffuseTexture, depthTexture };
     for (const [name, t] of Object.entries(inputs)) {
       if (!t || t.isTexture !== true) throw new TypeError(`SubsurfaceComposePass: ${name} must be a THREE.Texture, got ${describe(t)}`);
     }
+    if (depthTarget !== null && (depthTarget?.isWebGLRenderTarget !== true || depthTarget.depthTexture !== depthTexture)) {
+      throw new TypeError(`SubsurfaceComposePass: depthTarget must be null or the THREE.WebGLRenderTarget whose depthTexture is depthTexture, got ${describe(depthTarget)}`);
+    }
     super({
       name: 'SubsurfaceComposePass',
-      defines: { ...enumDefines('DEBUG_VIEW', DEBUG_VIEWS, DEBUG_VIEW.FINAL), KEEP_BACKGROUND: 0 },
+      defines: { ...enumDefines('DEBUG_VIEW', DEBUG_VIEWS, DEBUG_VIEW.FINAL), KEEP_BACKGROUND: 0, WRITE_DEPTH: 1 },
       uniforms: {
         tColor: { value: null }, tScattered: { value: null }, tDiffuse: { value: null }, tSurface: { value: null },
         tDepth: { value: null }, farDepth: { value: 1 },
@@ -54,6 +61,16 @@ export class SubsurfaceComposePass extends ShaderPass {
     this.uniforms.tDiffuse.value = inputs.diffuseTexture;
     this.uniforms.tDepth.value = inputs.depthTexture;
     this.scatteredTexture = scatteredTexture;
+    this._depthTarget = depthTarget;
+    this._depthShare = new MultisampledDepthShare();
+    /**
+     * How the last frame handed the scene's depth on: true, per sample (the output took the split's
+     * multisampled depth); false, written per pixel (the output is not multisampled, or drawn in
+     * part); a string: why a multisampled output could not take it (written per pixel: a pass
+     * drawn after it has an aliased edge along silhouettes).
+     * @type {boolean|string}
+     */
+    this.depthHandOff = false;
     this.setClear(true);
     this.debugView = DEBUG_VIEW.FINAL;
     this.split = 0;
@@ -88,9 +105,8 @@ export class SubsurfaceComposePass extends ShaderPass {
     checkBoolean('clear', clear);
     checkBoolean('clearDepth', clearDepth);
     setDefines(this.material, { KEEP_BACKGROUND: clear ? 0 : 1 });
-    this.material.depthTest = true; // depth is written only while the depth test is on
-    this.material.depthWrite = true;
     this.material.depthFunc = clear || clearDepth ? AlwaysDepth : LessEqualDepth;
+    this._clear = clear;
   }
 
   /**
@@ -112,10 +128,56 @@ export class SubsurfaceComposePass extends ShaderPass {
     this.uniforms.scatteredShare.value = checkNumber('scatteredShare', share, { min: 0, max: 1 });
   }
 
+  /** Draws into `writeBuffer` (the screen with renderToScreen), as ShaderPass does. */
   render(renderer, writeBuffer, readBuffer, deltaTime, maskActive) {
     // getReversed: three r172+.
     this.uniforms.farDepth.value = renderer.state.buffers.depth.getReversed?.() ? 0 : 1;
+    // The depth per sample where the output takes the split's (it replaces the output's depth:
+    // with clear only); else written, one per pixel (written only while the depth test is on).
+    const target = this.renderToScreen ? null : writeBuffer;
+    if (this._clear && this._depthTarget) {
+      this.depthHandOff = this._depthShare.share(renderer, this._depthTarget, target);
+    } else {
+      this.releaseDepth();
+    }
+    const shared = this.depthHandOff === true;
+    setDefines(this.material, { WRITE_DEPTH: shared ? 0 : 1 });
+    this.material.depthTest = !shared;
+    this.material.depthWrite = !shared;
     super.render(renderer, writeBuffer, readBuffer, deltaTime, maskActive);
+  }
+
+  /**
+   * render() within `rect` of the output (device pixels), as far as the output's own scissor lets
+   * it: an ArrayCamera view composed again with its own plan (src/support/cameraViews.js).
+   * @param {import('three').WebGLRenderer} renderer
+   * @param {import('three').WebGLRenderTarget|null} writeBuffer
+   * @param {{ x: number, y: number, width: number, height: number }} rect
+   */
+  renderIn(renderer, writeBuffer, rect) {
+    const target = this.renderToScreen ? null : writeBuffer;
+    const ratio = target ? 1 : renderer.getPixelRatio(); // the screen's scissor is in CSS pixels
+    const scissor = target ? target.scissor.clone() : renderer.getScissor(new Vector4());
+    const scissorTest = target ? target.scissorTest : renderer.getScissorTest();
+    const within = (scissorTest ? scissor.clone().multiplyScalar(ratio) : new Vector4(0, 0, Infinity, Infinity));
+    const x0 = Math.max(rect.x, within.x);
+    const y0 = Math.max(rect.y, within.y);
+    const x1 = Math.min(rect.x + rect.width, within.x + within.z);
+    const y1 = Math.min(rect.y + rect.height, within.y + within.w);
+    if (!(x1 > x0 && y1 > y0)) return;
+    const set = (s, test) => {
+      if (target) Object.assign(target, { scissorTest: test }).scissor.copy(s);
+      else {
+        renderer.setScissor(s);
+        renderer.setScissorTest(test);
+      }
+    };
+    set(new Vector4(x0, y0, x1 - x0, y1 - y0).multiplyScalar(1 / ratio), true);
+    try {
+      this.render(renderer, writeBuffer, null);
+    } finally {
+      set(scissor, scissorTest);
+    }
   }
 
   /** @param {number} fraction of the width, from the left, shown without the blur (0 = none, 1 = all) */
@@ -131,6 +193,18 @@ export class SubsurfaceComposePass extends ShaderPass {
     this.uniforms.splitX.value = this.split * width;
   }
 
+  /** Gives an output that took the scene split's depth its own back (a frame drawn without the compose over what it holds). */
+  releaseDepth() {
+    this._depthShare.release();
+    this.depthHandOff = false;
+  }
+
+  /** Frees the pass; an output that took the scene split's depth gets its own back. */
+  dispose() {
+    this._depthShare.release();
+    super.dispose();
+  }
+
   /** The blurred diffuse light: a texture, or null for the composer's read buffer. */
   set scatteredTexture(texture) {
     this._scatteredTexture = texture;
@@ -144,3 +218,5 @@ export class SubsurfaceComposePass extends ShaderPass {
 }
 
 booleanFields(SubsurfaceComposePass.prototype, PASS_BOOLEANS);
+
+nameClass(SubsurfaceComposePass, 'SubsurfaceComposePass'); // its name in messages, minified or not

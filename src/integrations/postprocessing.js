@@ -13,6 +13,7 @@ import { Pass } from 'postprocessing';
 import { FloatType, HalfFloatType, UnsignedByteType } from 'three';
 import { SubsurfaceScattering } from '../index.js';
 import { booleanFields } from '../support/booleanFields.js';
+import { nameClass } from '../support/className.js';
 
 /** The frame buffer types whose range holds linear HDR light. */
 const HDR_TYPES = Object.freeze([HalfFloatType, FloatType]);
@@ -108,3 +109,5 @@ export class SubsurfaceScatteringPass extends Pass {
 }
 
 booleanFields(SubsurfaceScatteringPass.prototype, ['enabled', 'needsSwap', 'needsDepthBlit']);
+
+nameClass(SubsurfaceScatteringPass, 'SubsurfaceScatteringPass'); // its name in messages, minified or not

@@ -6,6 +6,7 @@ import { DataTexture, FloatType, NearestFilter, RGBAFormat } from 'three';
 import { getProfile } from './presets.js';
 import { checkInteger, checkOptions } from '../support/parameterChecks.js';
 import { firstBelow, solveDecreasing } from '../math/roots.js';
+import { nameClass } from '../support/className.js';
 
 /** Below this the tail of a row is invisible even at radiance 1000: the range ends there. */
 const TAIL = 1e-5;
@@ -69,3 +70,5 @@ export class ProfileLookup {
     this.texture.dispose();
   }
 }
+
+nameClass(ProfileLookup, 'ProfileLookup'); // its name in messages, minified or not

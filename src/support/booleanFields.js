@@ -2,6 +2,7 @@
 // true: these accessors take booleans only. Defined at run time, not in the class body, so the
 // declarations keep the base class's `boolean` fields.
 import { checkBoolean } from './parameterChecks.js';
+import { classNameOf } from './className.js';
 
 const values = new WeakMap();
 
@@ -19,7 +20,7 @@ export function booleanFields(prototype, names) {
         return values.get(this)?.[name];
       },
       set(value) {
-        checkBoolean(`${this.constructor.name}.${name}`, value);
+        checkBoolean(`${classNameOf(this) ?? 'Pass'}.${name}`, value); // the class as named by nameClass, minified or not
         let own = values.get(this);
         if (!own) values.set(this, (own = {}));
         own[name] = value;

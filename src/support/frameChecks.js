@@ -1,10 +1,11 @@
 // What the orchestrator checks before each frame, where three itself would draw silently:
 // - the size against the GPU's largest render target (a RangeError: three's buffers fail there too);
-// - the camera, the scene (an overrideMaterial) and the light: a console warning once per pipeline
-//   and a message in `sss.problems` while it lasts; the frame is drawn as three would draw it,
-//   never with NaN pixels.
+// - the camera, the scene (an overrideMaterial), the light, settings that ask for a light where
+//   there is none, and an MSAA output that cannot take the scene's depth per sample: a console
+//   warning once per pipeline and a message in `sss.problems` while it lasts; the frame is drawn
+//   as three would draw it, never with NaN pixels.
 import { checkNumber } from './parameterChecks.js';
-import { MAX_TARGET_SIZE } from '../options.js';
+import { LIGHT_VIEWS, MAX_TARGET_SIZE } from '../options.js';
 
 const GL_MAX_TEXTURE_SIZE = 0x0d33;
 const GL_MAX_RENDERBUFFER_SIZE = 0x84e8;
@@ -129,13 +130,15 @@ export class FrameChecks {
    * The light's colour and intensity (always: three lights the scene with them) and, with
    * transmittance on, its place in the scene and its frustum.
    * @param {import('../1-light-depth/LightDepthTarget.js').LightDepthTarget} lightDepth
-   * @param {import('three').Scene} scene
+   * @param {import('../frameMeshes.js').FrameMeshes} frame what the frame covers (its scene's
+   *   meshes, the camera), world matrices up to date
    * @param {boolean} transmittance
    * @param {(material: import('three').Material) => boolean} transmits the materials whose
    *   thickness the map must hold (its near and far are fitted to them: LightDepthView.fit)
    * @returns {boolean} whether transmittance can be drawn from it this frame
    */
-  light(lightDepth, scene, transmittance, transmits) {
+  light(lightDepth, frame, transmittance, transmits) {
+    const { scene } = frame;
     const { light } = lightDepth;
     // Each light's problems apart (a pipeline may have four), named where the user named it.
     const the = light.name ? `the light "${light.name}"` : 'the light';
@@ -155,8 +158,9 @@ export class FrameChecks {
         'or set transmittance to false');
       return false;
     }
-    const unfit = lightDepth.fit(scene, transmits);
+    const unfit = lightDepth.fit(frame, transmits);
     if (unfit) problem('lightInside', unfit);
+    if (lightDepth.fitted === null) return false; // no transmitting mesh on the screen: its map would go unread
     const frustum = lightDepth.frustumProblem();
     if (frustum) {
       problem('lightFrustum', `${the}'s depth map has no valid frustum (${frustum}): there is no transmittance until it has one`);
@@ -165,4 +169,35 @@ export class FrameChecks {
     return true;
   }
 
+  /**
+   * The last frame's depth hand-off (SubsurfaceComposePass.depthHandOff): a string says why a
+   * multisampled output could not take the scene's depth per sample.
+   * @param {boolean|string} handOff
+   */
+  depthHandOff(handOff) {
+    if (typeof handOff !== 'string') return;
+    this.problem('depthHandOff', `the output buffer is multisampled unlike the scene split (${handOff}), so the scene's depth is handed on one per pixel: ` +
+      'what is drawn after the opaque scene (transparent objects, a later pass) has an aliased edge along its silhouettes; ' +
+      "give the buffer the pipeline's samples (`multisampling`) and no stencil buffer");
+  }
+
+  /**
+   * Settings that ask for what a light gives, on a frame without one. They are kept as set (so
+   * several set at once give the same in any order) and take effect when a light comes; until then
+   * there is no transmittance and the light's views show none (black on the subsurface pixels).
+   * @param {boolean} transmittanceAsked `transmittance` set true by the user (the default asks nothing)
+   * @param {string} debugView
+   * @returns {this}
+   */
+  withoutLight(transmittanceAsked, debugView) {
+    if (transmittanceAsked) {
+      this.problem('transmittanceWithoutLight', 'transmittance is true but there is no light (`light` is null, or no light casts shadows): ' +
+        'nothing is transmitted until a light is set');
+    }
+    if (LIGHT_VIEWS.includes(debugView)) {
+      this.problem(`${debugView}ViewWithoutLight`, `debugView '${debugView}' shows what the light gives, and there is no light ` +
+        '(`light` is null, or no light casts shadows): it is black on the subsurface pixels until a light is set');
+    }
+    return this;
+  }
 }

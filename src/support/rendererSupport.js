@@ -1,6 +1,7 @@
 // What every GPU stage needs from the renderer: WebGL2 (multiple render targets, texelFetch) and
 // renderable float colour targets (light is HDR: 8-bit targets would clamp and band it).
 import { describeValue } from './parameterChecks.js';
+import { classNameOf } from './className.js';
 
 /**
  * @param {import('three').WebGLRenderer} renderer
@@ -20,14 +21,18 @@ export function assertFloatRenderTargets(renderer, who) {
   }
 }
 
+const article = (name) => (/^[AEIOU]/.test(name) ? 'an' : 'a');
+
 /**
- * A value for error messages: a three.js object by its `type` and name, the constructor's name only
- * when nothing else says it (production builds minify those).
+ * A value for error messages: a three.js object by its `type` and name, one of this library's by
+ * the name its class states (src/support/className.js), anything else as describeValue says it;
+ * never by `constructor.name`, which production builds minify.
  */
 export function describe(value) {
   if (value && typeof value === 'object' && !Array.isArray(value) && !ArrayBuffer.isView(value)) {
-    if (typeof value.type === 'string' && value.type !== '') return value.name ? `${value.type} '${value.name}'` : `${/^[AEIOU]/.test(value.type) ? 'an' : 'a'} ${value.type}`;
-    return value.constructor?.name ?? describeValue(value);
+    if (typeof value.type === 'string' && value.type !== '') return value.name ? `${value.type} '${value.name}'` : `${article(value.type)} ${value.type}`;
+    const ours = classNameOf(value);
+    if (ours) return `${article(ours)} ${ours}`;
   }
   return describeValue(value);
 }

@@ -26,11 +26,12 @@ import { planBlur } from '../3-blur/blurPlan.js';
 import { isPerspective } from '../support/screenScale.js';
 import { describe } from '../support/rendererSupport.js';
 import { LightStageNode } from './1-light-depth/LightStageNode.js';
-import { subsurfaceMeshesOf } from './2-scene-split/subsurfaceNodeMaterial.js';
+import { FrameMeshes } from '../frameMeshes.js';
 import {
-  CAST_SHADOW, NODE_SCHEMA, checkNeedsLight, checkNodeOptions, lightsOf, propertiesOf,
+  CAST_SHADOW, NODE_SCHEMA, checkNodeOptions, lightsOf, propertiesOf,
 } from '../options.js';
 import { withSettings } from '../support/settings.js';
+import { FrameChecks } from '../support/frameChecks.js';
 import { WEBGPU_THREE, checkThreeRevision } from '../support/threeVersion.js';
 import { ATTACHMENT_NAMES } from './2-scene-split/attachments.js';
 import { subsurfaceBlurNode } from './3-blur/subsurfaceBlurTsl.js';
@@ -94,11 +95,8 @@ export class SubsurfaceScatteringNode extends NodeWithSettings {
     nodeLight(o.light);
     /** @internal The settings' values (read and assigned through their properties). */
     this._settings = Object.fromEntries(propertiesOf(NODE_SCHEMA).map(({ name }) => [name, o[name]]));
-    if (Object.hasOwn(options ?? {}, 'transmittance')) checkNeedsLight('transmittance', o.transmittance, o.light);
-    checkNeedsLight('debugView', o.debugView, o.light);
-    this._settings.transmittance = o.transmittance && o.light !== null; // the default: on where there is a light
-    /** @internal Whether transmittance is asked for: kept across lights, so a light arriving does not undo an `off`. */
-    this._transmittanceWanted = o.transmittance;
+    /** @internal Whether the user set `transmittance` true, for the frame's word when there is no light (as the WebGL pipeline). */
+    this._transmittanceAsked = Object.hasOwn(options ?? {}, 'transmittance') && o.transmittance;
     this.scenePass = scenePass;
     this.profileLookup = new ProfileLookup(o.profile);
     this.footprintTable = new FootprintTable(this.profileLookup);
@@ -106,7 +104,12 @@ export class SubsurfaceScatteringNode extends NodeWithSettings {
       kernelRadiusMm: uniform(0), strength: uniform(new Vector3()), projectionScale: uniform(new Vector2(1, 1)),
       resolution: uniform(new Vector2(1, 1)), depthFalloff: uniform(1), perspective: uniform(1), mmToWorld: uniform(1e-3),
       marginalRangeMm: uniform(1), debugView: debugViewUniform(), debugDepthRange: uniform(1), debugThicknessRangeMm: uniform(1), scatteredShare: uniform(1),
+      lightShown: uniform(o.light === null ? 0 : 1), // the light's views show nothing without one (the WebGL materials write 0 there)
     };
+    /** What the frame covers (src/frameMeshes.js), made by the light stage each frame before the scene pass draws. */
+    this.frame = new FrameMeshes();
+    /** The frame's own checks (the light's are the light stage's), each warned about once. */
+    this._checks = new FrameChecks('SubsurfaceScatteringNode');
     /** Stage 1 and the materials' transmittance uniforms, before the scene pass (built with or without a light: `light` is assignable). */
     this._lightStage = new LightStageNode(this, nodeLight(o.light), o.lightDepthSize);
     for (const name of ['worldUnitInMm', 'samples', 'strength', 'debugView', 'debugDepthRange', 'debugThicknessRangeMm']) this._applySetting(name, o[name]);
@@ -164,17 +167,14 @@ export class SubsurfaceScatteringNode extends NodeWithSettings {
         u.strength.value.fromArray(value ?? [1, 1, 1]);
         return;
       case 'transmittance':
-        checkNeedsLight(name, value, this.light);
-        this._transmittanceWanted = value;
+        this._transmittanceAsked = value;
         return;
-      case 'light': // as the WebGL pipeline: a light after none turns transmittance on (unless set off), null off
+      case 'light': // as the WebGL pipeline: transmittance and debugView stay as set, acting through the light there is
         if (value === previous) return;
-        if (value === null) checkNeedsLight('debugView', this.debugView, null);
         this._lightStage.setLight(nodeLight(value));
-        if (value === null || previous === null) this._settings.transmittance = value !== null && this._transmittanceWanted;
+        u.lightShown.value = value === null ? 0 : 1;
         return;
       case 'debugView':
-        checkNeedsLight(name, value, this.light);
         u.debugView.value = DEBUG_VIEWS.indexOf(value);
         return;
       case 'debugDepthRange': case 'debugThicknessRangeMm':
@@ -197,8 +197,11 @@ export class SubsurfaceScatteringNode extends NodeWithSettings {
   /** @param {import('../options.js').ProfileName|object} profile */
   set profile(profile) { super.profile = profile; }
 
-  /** What the last frame found wrong with the light, one message each (empty when all is well). @type {readonly string[]} */
-  get problems() { return this._lightStage.checks.current; }
+  /** What the last frame found wrong with the light or the camera, one message each (empty when all is well). @type {readonly string[]} */
+  get problems() {
+    const [light, frame] = [this._lightStage.checks.current, this._checks.current];
+    return frame.length === 0 ? light : Object.freeze([...light, ...frame]);
+  }
 
   /** Stage 1: the light depth map for transmittance, or null without a light. @type {import('./1-light-depth/LightDepthNodeTarget.js').LightDepthNodeTarget|null} */
   get lightDepth() { return this.light === null ? null : this._lightStage.lightDepth; }
@@ -308,7 +311,15 @@ export class SubsurfaceScatteringNode extends NodeWithSettings {
     renderer.getDrawingBufferSize(_size);
     scenePass.setSize(_size.width, _size.height);
     const { width, height } = scenePass.renderTarget;
-    this.plan = this._planFrame(subsurfaceMeshesOf(scene).meshes, camera, width, height);
+    // An ArrayCamera's views would each need their own blur (the WebGL pipeline's): drawn unblurred, said.
+    const views = camera.isArrayCamera === true;
+    this._checks.begin();
+    if (views) {
+      this._checks.problem('arrayCamera', 'the camera is an ArrayCamera: the node blurs one view, so its views are drawn without scattering, ' +
+        'as three draws them; the WebGL pipeline (SubsurfaceScattering) blurs each view at its own scale');
+    }
+    this._checks.end();
+    this.plan = this._planFrame(views ? [] : this.frame.onScreen, camera, width, height); // the light stage's lists, this frame's
     this._uniforms.scatteredShare.value = this.plan.blur ? this.plan.fade : 1; // the blur fading in (blurPlan.js)
     if (this.kernelGroups === 1) this._freeGroupTarget(); // back to one kernel: its 8 B per pixel and group go
     const diffuse = scenePass.getTexture(ATTACHMENT_NAMES.DIFFUSE);
@@ -363,6 +374,7 @@ export class SubsurfaceScatteringNode extends NodeWithSettings {
       depthRange: this._uniforms.debugDepthRange,
       thicknessRangeMm: this._uniforms.debugThicknessRangeMm,
       share: this._uniforms.scatteredShare,
+      lightShown: this._uniforms.lightShown,
     });
   }
 

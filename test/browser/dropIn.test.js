@@ -392,6 +392,69 @@ describe('antialiasing', () => {
   });
 });
 
+describe('an overlay after the pipeline, MSAA 4 (issue 40)', () => {
+  it("keeps its antialiased edge along the scene's silhouettes: its coverage per pixel is plain three's (before: 0 or 1 where two RenderPasses blend per sample)", async () => {
+    const r = await evaluateFloats(page, async () => {
+      const { THREE, SSS, EffectComposer, createRenderer, read, buildScene, RenderPass, DEFAULTS } = window.lab;
+      const renderer = createRenderer(DEFAULTS.width, DEFAULTS.height);
+      const built = buildScene('slab', { slabSize: 2, intensity: 2 });
+      built.scene.children[0].rotation.z = 0.35; // edges at an angle to the pixel grid
+      // The overlay: an unlit plane behind the slab over the right half of the view, crossing its
+      // silhouette: hidden by the slab, seen beside it, per sample along the edge.
+      const overlayMaterial = new THREE.MeshBasicMaterial();
+      const plane = new THREE.Mesh(new THREE.PlaneGeometry(10, 10), overlayMaterial);
+      plane.position.set(5, 0, -1);
+      const overlayScene = new THREE.Scene();
+      overlayScene.add(plane);
+      const frames = async (first, { stencilBuffer = false } = {}) => {
+        const buffer = new THREE.WebGLRenderTarget(DEFAULTS.width, DEFAULTS.height, { type: THREE.HalfFloatType, samples: 4, stencilBuffer });
+        const composer = new EffectComposer(renderer, buffer);
+        composer.renderToScreen = false;
+        composer.addPass(first);
+        const overlay = new RenderPass(overlayScene, built.camera);
+        overlay.clear = false;
+        composer.addPass(overlay);
+        const out = {};
+        for (const [name, colour] of [['white', 1], ['black', 0]]) {
+          overlayMaterial.color.setScalar(colour);
+          composer.render();
+          out[name] = await read(renderer, composer.readBuffer);
+        }
+        composer.dispose();
+        return out;
+      };
+      const plain = await frames(new RenderPass(built.scene, built.camera));
+      // Scattering and transmittance off: the pipeline must draw what plain three draws.
+      const sss = new SSS.SubsurfaceScattering({ scene: built.scene, camera: built.camera, worldUnitInMm: DEFAULTS.worldUnitInMm, scattering: false, transmittance: false });
+      sss.makeSubsurface(built.subsurface[0], { widthMm: 1 });
+      const pipeline = await frames(sss);
+      const handOff = sss._composePass.depthHandOff;
+      const problems = [...sss.problems];
+      // A buffer with a stencil buffer (another depth format) cannot take the depth per sample: said.
+      await frames(sss, { stencilBuffer: true });
+      const unlike = [...sss.problems];
+      sss.dispose();
+      overlayMaterial.dispose();
+      plane.geometry.dispose();
+      return { plain, pipeline, handOff, problems, unlike };
+    });
+    // The overlay's coverage of each pixel: white minus black (unlit, linear: the rest cancels).
+    const coverage = (f) => Array.from({ length: f.white.length / 4 }, (_, i) => f.white[i * 4] - f.black[i * 4]);
+    const plain = coverage(r.plain);
+    const pipeline = coverage(r.pipeline);
+    const partial = plain.filter((c) => c > 0.1 && c < 0.9).length;
+    expect(partial).toBeGreaterThan(20); // plain three's antialiased edge, where the plane meets the slab
+    const worst = Math.max(...plain.map((c, i) => Math.abs(c - pipeline[i])));
+    expect(worst, `largest coverage difference from plain three: ${worst}`).toBeLessThan(2e-3);
+    // Where the overlay covers a pixel fully or not at all, the frame is plain three's.
+    const whole = (i) => plain[i] < 1e-3 || plain[i] > 1 - 1e-3;
+    expect(maxDifference(r.pipeline.white, r.plain.white, whole).worst).toBeLessThan(2e-3);
+    expect(r.handOff).toBe(true); // the output took the split's depth, per sample
+    expect(r.problems).toEqual([]);
+    expect(r.unlike).toEqual([expect.stringMatching(/^the output buffer is multisampled unlike the scene split \(a depth buffer of format 0x88f0, the scene split 0x81a6 \(a stencil buffer or a depth texture of another type\)\), so the scene's depth is handed on one per pixel/)]);
+  });
+});
+
 describe('live scene, camera and lights', () => {
   it('a camera switched by assignment renders exactly as a pipeline built with that camera', async () => {
     const r = await evaluateFloats(page, async () => {

@@ -284,6 +284,50 @@ async function debugViews({ backend = 'webgpu', width = 96, height = 54 }) {
 }
 
 /**
+ * The box through the node with an ArrayCamera of two views (fov 20 and 40) and with scattering
+ * off (issue 40: the node blurs one view, so it draws an ArrayCamera's views unscattered, said once):
+ * the output of each (linear float) and the node's problems.
+ */
+async function arrayCamera({ backend = 'webgpu', width = 96, height = 54 }) {
+  const renderer = await createRenderer(width, height, { backend });
+  const material = new THREE.MeshStandardMaterial({ color: 0xffccaa, roughness: 0.6 });
+  const { scene, camera, mesh } = boxScene(material);
+  mesh.material = NODE.subsurfaceMaterial(material, { widthMm: 5 });
+  const views = [20, 40].map((fov, i) => {
+    const view = new THREE.PerspectiveCamera(fov, width / 2 / height, 0.1, 50);
+    view.position.copy(camera.position);
+    view.updateMatrixWorld();
+    view.viewport = new THREE.Vector4(i * width / 2, 0, width / 2, height);
+    return view;
+  });
+  const array = new THREE.ArrayCamera(views);
+  array.position.copy(camera.position);
+  const target = new THREE.RenderTarget(width, height, { type: THREE.FloatType });
+  const out = {};
+  for (const scattering of [true, false]) {
+    const { scenePass, node, pipeline } = subsurfacePipeline(renderer, scene, array, { sss: { worldUnitInMm: 100, scattering } });
+    renderer.setRenderTarget(target);
+    pipeline.render();
+    renderer.setRenderTarget(null);
+    out[scattering ? 'asked' : 'off'] = { image: await readFloats(renderer, target), problems: [...node.problems], blur: node.plan.blur };
+    node.dispose();
+    pipeline.dispose();
+    scenePass.dispose();
+  }
+  // three's own frame of the views: the box's own material, no pipeline.
+  const subsurface = mesh.material;
+  mesh.material = material;
+  renderer.setRenderTarget(target);
+  renderer.render(scene, array);
+  renderer.setRenderTarget(null);
+  out.three = await readFloats(renderer, target);
+  target.dispose();
+  subsurface.dispose();
+  renderer.dispose();
+  return out;
+}
+
+/**
  * One of the WebGL lab's scenes (lab.js's SCENES, its defaults: 10 mm per unit) through the node,
  * its subsurface materials as node materials, the scene pass multisampled with `samples`, and the
  * scene's light for transmittance where `transmittance`: the diffuse attachment (float, before
@@ -468,6 +512,52 @@ async function lightAssigned({ backend = 'webgpu', width = 96, height = 54 }) {
 }
 
 /**
+ * The settings a light needs, set at once in either key order (issue 40): the lab's back-lit slab
+ * through a node made without a light; `order` 'forward' or 'backward' assigns each step's settings
+ * in that key order. Per step: the diffuse attachment, the node's output (linear float) and problems;
+ * `made`: the diffuse attachment of a node made with the light.
+ */
+async function lightKeyOrder({ backend = 'webgpu', width = 48, height = 27, order = 'forward' }) {
+  const renderer = await sharedRenderer(backend, width, height);
+  const built = window.lab.buildScene('backlit', { width, height, thicknessMm: 1 });
+  const sun = built.light;
+  built.scene.add(new THREE.AmbientLight(0xffffff, 1)); // diffuse light in front: what a thickness view must not show
+  const skin = NODE.subsurfaceMaterial(built.subsurface[0], { widthMm: 1, shrinkMm: 0.6 });
+  built.scene.traverse((object) => { if (object.material === built.subsurface[0]) object.material = skin; });
+  const target = new THREE.RenderTarget(width, height, { type: THREE.FloatType });
+  const frames = async (light, steps) => {
+    const { scenePass, node, pipeline } = subsurfacePipeline(renderer, built.scene, built.camera, { type: THREE.FloatType, sss: { worldUnitInMm: 10, light } });
+    const out = {};
+    for (const [label, settings] of steps) {
+      await new Promise((resolve) => { requestAnimationFrame(() => resolve()); }); // a frame each: the scene pass draws once a frame
+      const entries = Object.entries(settings);
+      Object.assign(node, Object.fromEntries(order === 'forward' ? entries : entries.reverse()));
+      renderer.setRenderTarget(target);
+      pipeline.render();
+      renderer.setRenderTarget(null);
+      out[label] = {
+        diffuse: await readFloats(renderer, scenePass.renderTarget, 'diffuse'), output: await readFloats(renderer, target),
+        problems: [...node.problems], transmittance: node.transmittance, debugView: node.debugView,
+      };
+    }
+    node.dispose();
+    pipeline.dispose();
+    scenePass.dispose();
+    return out;
+  };
+  const made = (await frames(sun, [['made', {}]])).made;
+  const steps = await frames(null, [
+    ['transmittance and the light', { transmittance: true, light: sun }],
+    ['no light and the thickness view', { light: null, debugView: 'thickness' }],
+    ['the light again', { light: sun }],
+  ]);
+  target.dispose();
+  skin.dispose();
+  built.subsurface[0].dispose();
+  return { made, steps };
+}
+
+/**
  * The lab's back-lit slab through the node with its light's shadow camera near beyond the slab
  * (12 units; the light is 10 behind): the diffuse attachment (issue 36: the map's near and far are
  * fitted to the meshes, not taken from the shadow camera).
@@ -532,6 +622,6 @@ async function sameFrame({ backend = 'webgpu', width = 96, height = 54 }) {
 
 window.wgpu = {
   THREE, NODE, pass, createRenderer, readFloats, subsurfacePipeline, flat, disposeFlatRig, head, disposal, plainDraw, debugViews, labScene, labScenePlain, lightDepthCards,
-  dollyOpen, dollyFrames, dollyClose, lightAssigned, sameFrame, nearLight,
+  dollyOpen, dollyFrames, dollyClose, lightAssigned, lightKeyOrder, sameFrame, nearLight, arrayCamera,
 };
 window.testReady = true;

@@ -9,6 +9,17 @@ export function nanProfile() {
   return { name: 'nan', R: nan, marginal: nan, marginalIntegral: nan, transmittance: nan, radiusMm: () => [1, 1, 1], lengthScaleMm: 1 };
 }
 
+/**
+ * Throws unless each of `values`' settings reads back from `object` as given (an assignment is
+ * never ignored): for the table's 'ok' lines, in Node and in the browser.
+ */
+export function expectRead(object, values) {
+  for (const [name, value] of Object.entries(values)) {
+    if (object[name] !== value) throw new Error(`${name} reads back ${String(object[name])}, not ${String(value)} as set`);
+  }
+  return object;
+}
+
 /** A built-in profile with one channel, one function or one value changed (`change(profile)` returns the changed parts). */
 export function changedProfile(SSS, change) {
   const skin = SSS.profiles.skin;
@@ -40,6 +51,7 @@ export function createFixture(THREE, SSS, { renderer = null, EffectComposer = nu
   const t = {
     THREE, SSS, scene, camera, material, mesh, light, renderer, width, height,
     nanProfile,
+    expectRead,
     changedProfile: (change) => changedProfile(SSS, change),
     /** A pipeline of this scene with `options` (disposed with the fixture). */
     make(options = {}) {

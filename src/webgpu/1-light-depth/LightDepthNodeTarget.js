@@ -8,6 +8,8 @@ import { MeshBasicNodeMaterial, NodeMaterial, RenderTarget, RendererUtils } from
 import { DoubleSide, FloatType, NearestFilter, RGFormat } from 'three';
 import { Fn, abs, dot, float, normalView, positionView, vec3, vec4 } from 'three/tsl';
 import { LightDepthView, boundsNoVolume } from '../../1-light-depth/LightDepthView.js';
+import { holdingLevels } from '../../frameMeshes.js';
+import { nameClass } from '../../support/className.js';
 
 let _state;
 
@@ -58,12 +60,15 @@ export class LightDepthNodeTarget extends LightDepthView {
 
   /**
    * Renders `scene` from the light; the renderer's state and the scene's background, environment
-   * and override are put back after (also on an exception).
+   * and override are put back after (also on an exception). With the frame's lists, on the light's
+   * layers (fit) with the LODs at the camera's levels.
    * @param {import('three/webgpu').Renderer} renderer
    * @param {import('three').Scene} scene
+   * @param {import('../../frameMeshes.js').FrameMeshes|null} [frame]
    */
-  render(renderer, scene) {
+  render(renderer, scene, frame = null) {
     this.updateCamera();
+    this.camera.layers.mask = this.layers.mask;
     _state = RendererUtils.resetRendererAndSceneState(renderer, scene, _state);
     try {
       renderer.setRenderObjectFunction((object, s, camera, geometry, own, group, lightsNode, clippingContext, passId) => {
@@ -72,7 +77,7 @@ export class LightDepthNodeTarget extends LightDepthView {
       });
       renderer.setRenderTarget(this.renderTarget);
       renderer.setClearColor(0x000000, 0); // 0 = no surface
-      renderer.render(scene, this.camera);
+      holdingLevels(frame ? frame.lods : [], () => renderer.render(scene, this.camera));
       this.valid = true;
     } finally {
       RendererUtils.restoreRendererAndSceneState(renderer, scene, _state);
@@ -95,3 +100,5 @@ export class LightDepthNodeTarget extends LightDepthView {
     shaped.opacity = material.opacity;
   }
 }
+
+nameClass(LightDepthNodeTarget, 'LightDepthNodeTarget'); // its name in messages, minified or not

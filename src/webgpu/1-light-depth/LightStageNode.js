@@ -12,7 +12,7 @@ import { MATERIAL_OUTPUTS, materialOutputOf } from '../../4-compose/debugViews.j
 import {
   isShining, lightReachesFromBehind, transmittanceSettings, writeTransmittedLight,
 } from '../../2-scene-split/transmittanceModel.js';
-import { subsurfaceMeshesOf } from '../2-scene-split/subsurfaceNodeMaterial.js';
+import { isSubsurfaceNodeMaterial, subsurfaceMaterialsOf } from '../2-scene-split/subsurfaceNodeMaterial.js';
 import { LightDepthNodeTarget } from './LightDepthNodeTarget.js';
 
 const transmits = (material) => material.isSubsurfaceNodeMaterial === true && material.transmittance;
@@ -46,8 +46,14 @@ export class LightStageNode extends Node {
    * @returns {undefined}
    */
   updateBefore({ renderer }) {
+    const { scene, camera } = this.owner.scenePass;
+    // The matrices as the scene pass's render will see them (three updates them the same way),
+    // then what the frame covers (src/frameMeshes.js), for the light's map and the node's plan.
+    if (scene.matrixWorldAutoUpdate === true) scene.updateMatrixWorld();
+    if (camera.parent === null && camera.matrixWorldAutoUpdate === true) camera.updateMatrixWorld();
+    const frame = this.owner.frame.update(scene, camera, isSubsurfaceNodeMaterial);
     if (this.owner.light === null) { // none (any more): the materials handed uniforms send nothing
-      this.checks.begin().end();
+      this.checks.begin().withoutLight(this.owner._transmittanceAsked, this.owner.debugView).end();
       for (const material of this._materials) {
         if (!material.transmittanceNodes) continue;
         material.transmittanceNodes.sssTransmits.value = false;
@@ -55,12 +61,8 @@ export class LightStageNode extends Node {
       }
       return;
     }
-    const { scene, camera } = this.owner.scenePass;
-    // The matrices as the scene pass's render will see them (three updates them the same way).
-    if (scene.matrixWorldAutoUpdate === true) scene.updateMatrixWorld();
-    if (camera.parent === null && camera.matrixWorldAutoUpdate === true) camera.updateMatrixWorld();
-    this._renderLightDepth(renderer, scene, camera);
-    this._writeUniforms(subsurfaceMeshesOf(scene).materials, scene, camera);
+    this._renderLightDepth(renderer, frame, camera);
+    this._writeUniforms(subsurfaceMaterialsOf(frame.onScreen), scene, camera);
   }
 
   /**
@@ -75,13 +77,14 @@ export class LightStageNode extends Node {
   }
 
   /** The map, or marked out of date (nothing is transmitted from it) when it would go unread or the light does not work. */
-  _renderLightDepth(renderer, scene, camera) {
+  _renderLightDepth(renderer, frame, camera) {
     const { lightDepth, owner } = this;
+    const { scene } = frame;
     const checks = this.checks.begin();
-    const works = checks.light(lightDepth, scene, owner.transmittance, transmits);
+    const works = checks.light(lightDepth, frame, owner.transmittance, transmits);
     checks.end();
-    const read = materialOutputOf(owner.debugView) === 'thickness' || lightReachesFromBehind(lightDepth.light, scene, camera, transmits);
-    if (works && isShining(lightDepth.light, scene, camera) && read) lightDepth.render(renderer, scene);
+    const read = materialOutputOf(owner.debugView) === 'thickness' || lightReachesFromBehind(lightDepth.light, frame.onScreen, camera, transmits);
+    if (works && isShining(lightDepth.light, scene, camera) && read) lightDepth.render(renderer, scene, frame);
     else lightDepth.invalidate();
   }
 

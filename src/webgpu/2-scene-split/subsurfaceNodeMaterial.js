@@ -240,20 +240,19 @@ export function subsurfaceMRT() {
   return node;
 }
 
+/** Whether `material` is a subsurface node material (subsurfaceMaterial's). */
+export const isSubsurfaceNodeMaterial = (material) => material?.isSubsurfaceNodeMaterial === true;
+
 /**
- * The visible meshes of `scene` with a subsurface node material, and those materials: what the
- * node plans the blur over and hands transmittance uniforms to.
- * @param {import('three').Scene} scene
+ * The subsurface node materials of `meshes` (the frame's on the screen: FrameMeshes.onScreen), to
+ * hand transmittance uniforms to.
+ * @param {Iterable<import('three').Mesh>} meshes
+ * @returns {Set<import('three/webgpu').NodeMaterial>}
  */
-export function subsurfaceMeshesOf(scene) {
-  const meshes = [];
+export function subsurfaceMaterialsOf(meshes) {
   const materials = new Set();
-  scene.traverseVisible((object) => {
-    if (!object.isMesh) return;
-    const own = (Array.isArray(object.material) ? object.material : [object.material]).filter((m) => m?.isSubsurfaceNodeMaterial);
-    if (own.length === 0) return;
-    meshes.push(object);
-    for (const m of own) materials.add(m);
-  });
-  return { meshes, materials };
+  for (const mesh of meshes) {
+    for (const m of Array.isArray(mesh.material) ? mesh.material : [mesh.material]) if (isSubsurfaceNodeMaterial(m)) materials.add(m);
+  }
+  return materials;
 }

@@ -26,8 +26,10 @@ const is = (u, view) => u.equal(DEBUG_VIEWS.indexOf(view));
  * @param {object} o.thicknessRangeMm profile mm mapped to white in the thickness view (a float uniform)
  * @param {object} o.share the share of the scattered light shown, the rest unblurred (a float
  *   uniform: the blur fading in, src/3-blur/blurPlan.js)
+ * @param {object} o.lightShown 1 with a light, 0 without (a float uniform): the thickness and
+ *   transmittance views then show none, as on the WebGL pipeline, whose materials write 0 there
  */
-export function composeNode({ colour, unscattered, scattered, surface, view, depthRange, thicknessRangeMm, share }) {
+export function composeNode({ colour, unscattered, scattered, surface, view, depthRange, thicknessRangeMm, share, lightShown }) {
   return Fn(() => {
     const pixel = ivec2(screenCoordinate.xy).toVar();
     const light = textureLoad(colour, pixel).toVar();
@@ -42,8 +44,8 @@ export function composeNode({ colour, unscattered, scattered, surface, view, dep
       const viewDepth = textureLoad(surface, pixel).r;
       result.assign(vec3(select(viewDepth.greaterThan(0), viewDepth.div(depthRange).oneMinus(), float(0))));
     });
-    If(is(view, DEBUG_VIEW.THICKNESS), () => { result.assign(select(subsurface, vec3(before.r.div(thicknessRangeMm)), vec3(0))); });
-    If(is(view, DEBUG_VIEW.TRANSMITTANCE), () => { result.assign(select(subsurface, before.rgb, vec3(0))); });
+    If(is(view, DEBUG_VIEW.THICKNESS), () => { result.assign(select(subsurface, vec3(before.r.div(thicknessRangeMm)), vec3(0)).mul(lightShown)); });
+    If(is(view, DEBUG_VIEW.TRANSMITTANCE), () => { result.assign(select(subsurface, before.rgb, vec3(0)).mul(lightShown)); });
     // Never hand NaN or Inf to tone mapping.
     return vec4(select(finite3(result), result, vec3(0)), light.a);
   })();

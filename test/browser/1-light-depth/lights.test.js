@@ -97,14 +97,14 @@ describe('sss.light, assigned', () => {
       },
     });
     expect(r.none.light).toBe(null);
-    expect(r.none.transmittance).toBe(false);
+    expect(r.none.transmittance).toBe(true); // the default, kept: it acts through the light there is
     expect(Math.max(...r.none.diffuse.filter((_, i) => i % 4 !== 3))).toBe(0); // nothing lights the front
     expect(r.sun).toMatchObject({ light: 'sun', transmittance: true, problems: [] });
     expect(middle(r.sun.diffuse, 64)[0]).toBeGreaterThan(0.3); // 1 mm of skin: red through
     expect(r.spot).toMatchObject({ light: 'spot', transmittance: true, problems: [] });
     expect(worst(r.spot.diffuse, r.sun.diffuse)).toBeGreaterThan(0.05); // the spot's picture, not the sun's
     expect(worst(r['spot again'].diffuse, r.spot.diffuse)).toBe(0);
-    expect(r.null).toMatchObject({ light: null, transmittance: false });
+    expect(r.null).toMatchObject({ light: null, transmittance: true, problems: [] }); // the default asks for nothing: no word
     expect(worst(r.null.diffuse, r.none.diffuse)).toBe(0);
     expect(worst(r['sun again'].diffuse, r.sun.diffuse)).toBe(0);
   });
@@ -124,6 +124,50 @@ describe('sss.light, assigned', () => {
     const made = await slabFrames({ thicknessMm: 1, size: 48, lights, steps: (sss, { sun }) => [['sun', () => { sss.light = sun; }]] });
     expect(middle(made.sun.diffuse, 48)[0]).toBeGreaterThan(0.3);
     expect(worst(swapped.sun.diffuse, made.sun.diffuse)).toBe(0);
+  });
+});
+
+describe('the settings a light needs, set at once (issue 40)', () => {
+  const lights = (THREE) => {
+    const sun = new THREE.DirectionalLight(0xffffff, Math.PI);
+    sun.position.set(0, 0, -2); // straight behind
+    return { sun };
+  };
+  const rgbMax = (rgba) => rgba.reduce((m, v, i) => (i % 4 === 3 ? m : Math.max(m, v)), 0);
+
+  it('in either key order, on a pipeline made without a light: the frame of a pipeline made with it, to the bit; without one, the light\'s view is black and the frame says why', async () => {
+    // The steps run in the page (their source is sent): one list per key order.
+    const frames = (steps) => slabFrames({ thicknessMm: 1, size: 32, lights, steps });
+    const forward = await frames((sss, { sun }) => [
+      ['transmittance and the light', () => Object.assign(sss, { transmittance: true, light: sun })],
+      ['no light and the thickness view', () => Object.assign(sss, { light: null, debugView: 'thickness' })],
+      ['the light again', () => Object.assign(sss, { light: sun })],
+    ]);
+    const backward = await frames((sss, { sun }) => [
+      ['transmittance and the light', () => Object.assign(sss, { light: sun, transmittance: true })],
+      ['no light and the thickness view', () => Object.assign(sss, { debugView: 'thickness', light: null })],
+      ['the light again', () => Object.assign(sss, { light: sun })],
+    ]);
+    const made = (await slabFrames({ thicknessMm: 1, size: 32, lights, made: 'sun' })).made;
+    expect(rgbMax(made.diffuse)).toBeGreaterThan(0.3); // 1 mm of skin, back-lit: red through
+    for (const label of Object.keys(forward)) {
+      expect(worst(backward[label].diffuse, forward[label].diffuse), label).toBe(0);
+      expect(backward[label].problems, label).toEqual(forward[label].problems);
+      expect(backward[label].transmittance, label).toBe(true);
+    }
+    expect(worst(forward['transmittance and the light'].diffuse, made.diffuse)).toBe(0);
+    expect(forward['transmittance and the light'].problems).toEqual([]);
+    // No light: nothing transmitted, the thickness view black, both said.
+    expect(rgbMax(forward['no light and the thickness view'].diffuse)).toBe(0);
+    expect(forward['no light and the thickness view'].problems).toEqual([
+      expect.stringMatching(/^transmittance is true but there is no light/),
+      expect.stringMatching(/^debugView 'thickness' shows what the light gives, and there is no light/),
+    ]);
+    // The light back: the slab's 1 mm in the thickness view (profile mm), no word.
+    const thickness = middle(forward['the light again'].diffuse, 32)[0];
+    expect(thickness).toBeGreaterThan(0.8);
+    expect(thickness).toBeLessThan(1.2);
+    expect(forward['the light again'].problems).toEqual([]);
   });
 });
 

@@ -1,7 +1,7 @@
 // Stage 3 on the GPU: the separable, depth- and mask-aware blur, checked against the float64
 // oracle and against closed-form expectations. Scenes come from test/pages/lab.js.
 import { describe, it, expect, beforeAll, afterAll } from 'vitest';
-import { openPage, runLab } from '../../harness/page.js';
+import { evaluateFloats, openPage, runLab } from '../../harness/page.js';
 import { at, channel, rgb, subtract, countNonFinite } from '../../harness/images.js';
 import { separableBlurOracle, roundToHalfFloat, edgeResponse1D } from '../../oracle/convolution.js';
 import { getProfile } from '../../../src/profiles/presets.js';
@@ -365,5 +365,75 @@ describe('the depth carried in the light (one fetch per tap)', () => {
     }
     expect(worstOnPlane).toBe(0);
     expect(worstBehind).toBe(0);
+  });
+});
+
+describe('an ArrayCamera (issue 40)', () => {
+  it("blurs each view at its own camera's scale: each view is the frame of a pipeline drawn with that camera alone, a view fading in and one not blurred too", async () => {
+    const r = await evaluateFloats(page, async () => {
+      const { THREE, SSS, EffectComposer, createRenderer, read, buildScene, DEFAULTS } = window.lab;
+      const [w, h] = [64, 72];
+      const renderer = createRenderer(w, h);
+      const built = buildScene('slab', { pattern: 'noise', slabSize: 3 });
+      const options = { scene: built.scene, worldUnitInMm: DEFAULTS.worldUnitInMm, type: THREE.FloatType };
+      const frame = async (camera, width, height) => {
+        renderer.setSize(width, height, false);
+        const composer = new EffectComposer(renderer, new THREE.WebGLRenderTarget(width, height, { type: THREE.FloatType }));
+        composer.renderToScreen = false;
+        const sss = new SSS.SubsurfaceScattering({ ...options, camera });
+        sss.makeSubsurface(built.subsurface[0], { widthMm: 1 });
+        composer.addPass(sss);
+        composer.render();
+        const out = { image: await read(renderer, composer.readBuffer), plan: { ...sss.plan }, problems: [...sss.problems] };
+        sss.dispose();
+        composer.dispose();
+        return out;
+      };
+      const view = (fov, distance) => {
+        const camera = new THREE.PerspectiveCamera(fov, w / h, 0.1, 10000);
+        camera.position.set(0, 0, distance);
+        camera.lookAt(0, 0, 0);
+        camera.updateMatrixWorld();
+        return camera;
+      };
+      // A view whose blur fades in (between half a pixel and one of reach): the first such distance.
+      let fading = null;
+      for (let distance = 60; distance < 400 && !fading; distance *= 1.15) {
+        const { plan } = await frame(view(20, distance), w, h);
+        if (plan.blur && plan.fade > 0.1 && plan.fade < 0.9) fading = distance;
+      }
+      const cameras = [view(20, 10), view(40, 10), view(20, fading), view(20, fading * 2)]; // the last: no blur
+      cameras.forEach((camera, i) => { camera.viewport = new THREE.Vector4(i * w, 0, w, h); });
+      const array = new THREE.ArrayCamera(cameras); // the container left at fov 50, as three's example does
+      array.position.set(0, 0, 10);
+      array.updateMatrixWorld();
+      const whole = await frame(array, cameras.length * w, h);
+      const alone = [];
+      for (const camera of cameras) alone.push(await frame(camera, w, h));
+      return { whole: whole.image, problems: whole.problems, alone: alone.map((a) => ({ image: a.image, plan: a.plan })), w, h, count: cameras.length, fading };
+    });
+    const { w, h, count } = r;
+    expect(r.fading).not.toBe(null);
+    expect(r.alone.map(({ plan }) => [plan.blur, plan.fade === 1])).toEqual([[true, true], [true, true], [true, false], [false, false]]);
+    expect(r.problems).toEqual([]);
+    for (let k = 0; k < count; k++) {
+      const alone = r.alone[k].image;
+      let worst = 0;
+      let wrong = 0;
+      let lit = 0;
+      for (let y = 0; y < h; y++) {
+        for (let x = 0; x < w; x++) {
+          for (let c = 0; c < 3; c++) {
+            const a = alone[(y * w + x) * 4 + c];
+            const b = r.whole[(y * w * count + k * w + x) * 4 + c];
+            lit = Math.max(lit, a);
+            worst = Math.max(worst, Math.abs(a - b));
+            if (Math.abs(a - b) > 1e-3) wrong++;
+          }
+        }
+      }
+      expect(lit, `view ${k}`).toBeGreaterThan(0.1);
+      expect(worst, `view ${k}: ${wrong} channel values off by more than 1e-3`).toBeLessThan(1e-5 * lit);
+    }
   });
 });

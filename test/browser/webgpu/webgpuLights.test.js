@@ -23,15 +23,39 @@ for (const backend of BACKENDS) {
       const { made, assigned: a } = await evaluateFloats(page, (b) => window.wgpu.lightAssigned({ backend: b }), backend);
       expect(brightest(made.sun.diffuse)).toBeGreaterThan(0.3); // 1 mm of skin, back-lit: red through
       expect(worst(made.spot.diffuse, made.sun.diffuse)).toBeGreaterThan(0.05); // two different pictures
-      expect(a.none).toMatchObject({ light: null, transmittance: false });
+      expect(a.none).toMatchObject({ light: null, transmittance: true }); // the default, kept: it acts through the light there is
       expect(brightest(a.none.diffuse)).toBe(0);
       expect(a.sun).toMatchObject({ light: 'sun', transmittance: true });
       expect(worst(a.sun.diffuse, made.sun.diffuse)).toBe(0);
       expect(a.spot).toMatchObject({ light: 'spot', transmittance: true });
       expect(worst(a.spot.diffuse, made.spot.diffuse)).toBe(0);
-      expect(a.null).toMatchObject({ light: null, transmittance: false });
+      expect(a.null).toMatchObject({ light: null, transmittance: true });
       expect(brightest(a.null.diffuse)).toBe(0);
       expect(worst(a['sun again'].diffuse, made.sun.diffuse)).toBe(0);
+    });
+
+    it('the settings a light needs, set at once in either key order on a node made without one: the same frames; without a light the thickness view is black and the frame says why (issue 40)', async () => {
+      const forward = await evaluateFloats(page, (b) => window.wgpu.lightKeyOrder({ backend: b, order: 'forward' }), backend);
+      const backward = await evaluateFloats(page, (b) => window.wgpu.lightKeyOrder({ backend: b, order: 'backward' }), backend);
+      const { made } = forward;
+      expect(brightest(made.diffuse)).toBeGreaterThan(0.3);
+      for (const label of Object.keys(forward.steps)) {
+        const [f, b] = [forward.steps[label], backward.steps[label]];
+        expect(worst(b.diffuse, f.diffuse), label).toBe(0);
+        expect(worst(b.output, f.output), label).toBe(0);
+        expect(b.problems, label).toEqual(f.problems);
+        expect(f.transmittance, label).toBe(true);
+      }
+      const [lit, dark, again] = Object.values(forward.steps);
+      expect(worst(lit.diffuse, made.diffuse)).toBe(0);
+      expect(lit.problems).toEqual([]);
+      expect(brightest(dark.output)).toBe(0); // the slab fills the view: the thickness view black, not the diffuse light
+      expect(dark.problems).toEqual([
+        expect.stringMatching(/^transmittance is true but there is no light/),
+        expect.stringMatching(/^debugView 'thickness' shows what the light gives, and there is no light/),
+      ]);
+      expect(brightest(again.output)).toBeGreaterThan(0.05); // the light back: its thickness shows
+      expect(again.problems).toEqual([]);
     });
 
     it("a light nearer the slab than its shadow camera's near: the oracle's T(1 mm) within 2 % (before: 0, clipped away)", async () => {

@@ -77,6 +77,22 @@ for (const backend of BACKENDS) {
       expect(r.three.some((v, i) => i % 4 === 0 && v > 100)).toBe(true); // the box is lit
     });
 
+    it('draws an ArrayCamera\'s views unscattered, as three draws them, and says so once (issue 40: it blurs one view)', async () => {
+      const r = await evaluateFloats(page, (b) => window.wgpu.arrayCamera({ backend: b }), backend);
+      expect(r.asked.problems).toEqual([expect.stringMatching(/^the camera is an ArrayCamera: the node blurs one view, so its views are drawn without scattering/)]);
+      expect(r.asked.blur).toBe(false);
+      expect(r.off.problems).toEqual(r.asked.problems);
+      let lit = 0;
+      for (let i = 0; i < r.off.image.length; i++) {
+        expect(r.asked.image[i]).toBe(r.off.image[i]);
+        if (i % 4 === 0 && r.off.image[i] > 0.3) lit++;
+      }
+      expect(lit).toBeGreaterThan(200); // the box, in both views
+      let worst = 0;
+      for (let i = 0; i < r.off.image.length; i++) if (i % 4 !== 3) worst = Math.max(worst, Math.abs(r.off.image[i] - r.three[i]));
+      expect(worst).toBeLessThan(2e-3); // three's own frame of the views
+    });
+
     it("shows the debug views it has: diffuse + specular = final on the mask, the mask 0 or 1, depth in (0, 1)", async () => {
       const v = await evaluateFloats(page, (b) => window.wgpu.debugViews({ backend: b }), backend);
       let on = 0;

@@ -12,28 +12,89 @@ describe('the material reads every light', () => {
   });
 });
 
-describe('the light and transmittance settings, in any order', () => {
-  it("a light arriving keeps transmittance off where it was set off (Object.assign's order does not matter), and on by default", async () => {
+describe('the settings a light needs, set at once in any key order (issue 40)', () => {
+  /** Every order of `keys`. */
+  const permutations = (keys) => (keys.length <= 1 ? [keys] : keys.flatMap((k, i) => permutations([...keys.slice(0, i), ...keys.slice(i + 1)]).map((rest) => [k, ...rest])));
+
+  /** What a pipeline does with its settings: its lights' maps, the material's binding, the compose's view. */
+  const pipelineState = (sss, skin) => {
+    const { hook } = sss.materials.get(skin);
+    return {
+      maps: sss._lightDepths.map((d) => d.light.uuid),
+      transmits: hook.transmittance?.map((t) => t.lightDepth.light.uuid) ?? null,
+      output: hook.debugOutput,
+      view: sss._composePass.material.defines.DEBUG_VIEW,
+    };
+  };
+  /** The same of the WebGPU node: its light stage's light, whether the light's views show, the compose's view. */
+  const nodeState = (node) => ({
+    light: node.light === null ? null : node._lightStage.lightDepth.light.uuid,
+    shown: node._uniforms.lightShown.value,
+    view: node._uniforms.debugView.value,
+  });
+
+  // [label, the entry's options when made, the settings assigned at once]
+  const cases = (light) => [
+    ['transmittance and a light, made without one', {}, { transmittance: true, light }],
+    ['transmittance off and a light', {}, { transmittance: false, light }],
+    ["the thickness view and a light", {}, { debugView: 'thickness', light }],
+    ["the transmittance view, transmittance and a light", { transmittance: false }, { debugView: 'transmittance', transmittance: true, light }],
+    ['no light and the thickness view, made with a light', { light }, { light: null, debugView: 'thickness' }],
+    ['no light and transmittance, made with a light', { light }, { light: null, transmittance: true }],
+  ];
+
+  it('the WebGL pipeline: every order is taken, reads back as set and leaves the same state', async () => {
     const THREE = await import('three');
     const SSS = await import('../../harness/sss.js');
     const scene = new THREE.Scene();
     const camera = new THREE.PerspectiveCamera();
     const light = new THREE.SpotLight();
     scene.add(light);
-    const make = () => new SSS.SubsurfaceScattering({ scene, camera });
-    const a = Object.assign(make(), { transmittance: false, light });
-    const b = Object.assign(make(), { light, transmittance: false });
-    expect([a.transmittance, b.transmittance]).toEqual([false, false]);
-    a.light = null;
-    a.light = [light];
-    expect(a.transmittance).toBe(false); // still off: the user's setting, not the light's arrival
-    const c = Object.assign(make(), { light });
-    expect(c.transmittance).toBe(true); // the default, on where there is a light
-    c.light = null;
-    expect(c.transmittance).toBe(false);
-    c.light = light;
-    expect(c.transmittance).toBe(true);
-    for (const sss of [a, b, c]) sss.dispose();
+    const skin = new THREE.MeshStandardMaterial();
+    for (const [label, made, settings] of cases(light)) {
+      const states = permutations(Object.keys(settings)).map((order) => {
+        const sss = new SSS.SubsurfaceScattering({ scene, camera, ...made });
+        sss.makeSubsurface(skin);
+        for (const key of order) sss[key] = settings[key];
+        for (const [key, value] of Object.entries(settings)) expect(sss[key], `${label}, ${order}: ${key}`).toBe(value);
+        const state = pipelineState(sss, skin);
+        sss.dispose();
+        return state;
+      });
+      for (const state of states) expect(state, label).toEqual(states[0]);
+    }
+    // Object.assign, as the issue wrote it: the light's transmittance reaches the material.
+    const sss = Object.assign(new SSS.SubsurfaceScattering({ scene, camera }), { transmittance: true, light });
+    sss.makeSubsurface(skin);
+    expect(pipelineState(sss, skin)).toMatchObject({ maps: [light.uuid], transmits: [light.uuid] });
+    sss.light = null;
+    expect(sss.transmittance).toBe(true); // kept as set: it acts again with the next light
+    expect(pipelineState(sss, skin)).toMatchObject({ maps: [], transmits: null });
+    sss.light = light;
+    expect(pipelineState(sss, skin)).toMatchObject({ maps: [light.uuid], transmits: [light.uuid] });
+    sss.dispose();
+    skin.dispose();
+  });
+
+  it('the WebGPU node: every order is taken, reads back as set and leaves the same state', async () => {
+    const THREE = await import('three');
+    const { pass } = await import('three/tsl');
+    const NODE = await import('../../../src/webgpu/index.js');
+    const scene = new THREE.Scene();
+    const camera = new THREE.PerspectiveCamera();
+    const light = new THREE.SpotLight();
+    scene.add(light);
+    for (const [label, made, settings] of cases(light)) {
+      const states = permutations(Object.keys(settings)).map((order) => {
+        const node = NODE.subsurfaceScattering(pass(scene, camera), made);
+        for (const key of order) node[key] = settings[key];
+        for (const [key, value] of Object.entries(settings)) expect(node[key], `${label}, ${order}: ${key}`).toBe(value);
+        const state = nodeState(node);
+        node.dispose();
+        return state;
+      });
+      for (const state of states) expect(state, label).toEqual(states[0]);
+    }
   });
 });
 

@@ -9,7 +9,7 @@ import { pass } from 'three/tsl';
 import * as SSS from '../../harness/sss.js';
 import * as NODE from '../../../src/webgpu/index.js';
 import { CALL_CASES } from '../../reliability/badInputs.js';
-import { createFixture } from '../../reliability/fixture.js';
+import { createFixture, expectRead } from '../../reliability/fixture.js';
 import { expectOutcome } from '../../reliability/expectError.js';
 
 /** The table's lines about what the node has too: construction options, kernel, depth rule, width. */
@@ -18,7 +18,7 @@ const NODE_LINES = [
   /^foreshortening: /, /^sss\.worldUnitInMm = /, /^samples = /, /^method = /, /^profile = /, /^strength = /, /^followSurface = /,
   /^depthThresholdMm = /, /^foreshortening = /, /^debugView = /, /^debugDepthRange = /, /^widthMm: /,
   /^light: /, /^lightDepthSize: /, /^transmittance = /, /^transmittance: /, /^translucency: /, /^shrinkMm: /, /^debugThicknessRangeMm = /,
-  /^debugView: /, /^sss\.scattering = /, /^sss\.transmittance = /, /^sss\.light = /, /^kernelGroups: (\d+|'\w+')$/, /with transmission\)$/,
+  /^debugView: /, /^Object\.assign\(sss, /, /^sss\.scattering = /, /^sss\.transmittance = /, /^sss\.light = /, /^kernelGroups: (\d+|'\w+')$/, /with transmission\)$/,
 ];
 const NODE_OPTIONS = Object.keys(NODE.NODE_DEFAULTS);
 
@@ -36,7 +36,7 @@ function nodeFixture() {
   let node = null;
   const { THREE: three, scene, camera, material, mesh, light, nanProfile, changedProfile } = t; // not its getters (they make a WebGL pipeline)
   return {
-    THREE: three, SSS, scene, camera, material, mesh, light, nanProfile, changedProfile,
+    THREE: three, SSS, scene, camera, material, mesh, light, nanProfile, changedProfile, expectRead,
     NODE,
     make,
     get sss() {
