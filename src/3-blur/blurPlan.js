@@ -7,10 +7,14 @@ import { AUTO_REACH, AUTO_SAMPLES, METHOD_TABLE } from '../options.js';
 import { AUTO_MAX_SAMPLES } from '../profiles/footprints.js';
 import { MIN_KERNEL_PIXELS } from './samplingModel.js';
 import { MAX_KERNEL_GROUPS, fadedGrouping, groupingStepEnd, kernelGroupsAt } from './kernelGroups.js';
-import { PLAN_RAMP, rampShare } from './planRamp.js';
-import { planLevels } from './resolutionPlan.js';
 
-export { PLAN_RAMP, rampShare };
+// Stable under motion: where the plan would change discretely with the scale (the 'auto' groups
+// and fixed-tap counts, the blur skipped), it ramps over a range of scales instead, so a slow zoom
+// or dolly never changes the whole scattering in one frame. Each ramp lies below the change: the
+// image there is at least as accurate as with the plan below it, and costs the plan above it.
+
+/** The scales a plan change ramps over, as a ratio (a quarter octave: inside 'auto''s steps). */
+export const PLAN_RAMP = 2 ** (1 / 4);
 
 /**
  * The blur fades in over the reaches from MIN_KERNEL_PIXELS to this, pixels: the compose shows
@@ -20,6 +24,16 @@ export const FADE_IN_PIXELS = 1;
 
 /** A faded grouping's share is stepped in 1/GROUP_SHARE_STEPS (each step refills the blur's fraction table). */
 export const GROUP_SHARE_STEPS = 64;
+
+/**
+ * The share of a ramp ending at `end` over `ratio` of scales: 0 up to end / ratio, 1 from end on,
+ * linear in log(x) between.
+ * @param {number} x @param {number} end @param {number} ratio > 1 @returns {number}
+ */
+export function rampShare(x, end, ratio) {
+  if (!(x > end / ratio)) return 0;
+  return x >= end ? 1 : Math.log((x * ratio) / end) / Math.log(ratio);
+}
 
 /**
  * 'auto' taps of the fixed-tap methods: the fewest of AUTO_SAMPLES whose (samples - 3) / 2
@@ -79,21 +93,8 @@ export function blendKernels(a, b, share) {
  * @property {Readonly<Record<number, number>>} kernelReachMm the fixed-tap kernel's outermost tap,
  *   mm, for each count the plan can choose (the count asked for, or every AUTO_SAMPLES for 'auto')
  * @property {'auto'|number} [kernelGroups=1] the isotropic blur's groups asked for (1: one kernel)
- * @property {ReadonlyArray<object>} [profiles] the frame's profiles, by slot (needed with groups and levels)
- * @property {'auto'|number} [resolution=1] the resolution asked for (src/3-blur/resolutionPlan.js)
+ * @property {ReadonlyArray<object>} [profiles] the frame's profiles, by slot (needed with groups)
  */
-
-/**
- * The frame's resolution levels (resolutionPlan.js's planLevels), or null: the whole profile at
- * full resolution. Levels need the one-kernel 'footprint' blur of one profile; 'auto' is full
- * resolution otherwise (a fixed resolution below 1 is refused there: BlurStage's checks).
- * @param {BlurSettings} settings @param {number} pixelsPerMm
- */
-export function frameLevels(settings, pixelsPerMm) {
-  const resolution = settings.resolution ?? 1;
-  if (resolution === 1 || (settings.kernelGroups ?? 1) !== 1 || settings.profiles?.length !== 1) return null;
-  return planLevels(settings.profiles[0], pixelsPerMm, resolution);
-}
 
 /**
  * The isotropic blur's groups for a frame whose largest on-screen scale is `pixelsPerMm`, per
@@ -125,8 +126,7 @@ export function frameGroupings(settings, pixelsPerMm) {
  * - tapBlend(radiusPx) (fixed taps): 'auto''s ramp between two counts there (autoTapBlend), or null;
  * - reachMm(settings, samples): how far the blur reaches, mm (below half a pixel nothing moves);
  * - groupings(settings, pixelsPerMm): the isotropic blur's groups per slot (frameGroupings), or
- *   null where the mode blurs with one kernel (fixed taps) or is isotropic already (dense);
- * - levels(settings, pixelsPerMm): the resolution levels (frameLevels), or null: full resolution.
+ *   null where the mode blurs with one kernel (fixed taps) or is isotropic already (dense).
  */
 export const BLUR_MODES = Object.freeze({
   footprint: Object.freeze({
@@ -137,7 +137,6 @@ export const BLUR_MODES = Object.freeze({
     // The tail is sampled at least a pixel out: the reach is the marginal's 99 % radius.
     reachMm: (settings) => settings.marginalRadiusMm,
     groupings: frameGroupings,
-    levels: frameLevels,
   }),
   taps: Object.freeze({
     passes: 'separable',
@@ -145,14 +144,12 @@ export const BLUR_MODES = Object.freeze({
     tapBlend: autoTapBlend,
     reachMm: (settings, samples) => reachOfTaps(settings, samples),
     groupings: () => null,
-    levels: () => null,
   }),
   dense: Object.freeze({
     passes: 'dense',
     autoSamples: () => AUTO_MAX_SAMPLES, // unused by the dense pass
     reachMm: (settings) => settings.denseRadiusMm,
     groupings: () => null,
-    levels: () => null,
   }),
 });
 
@@ -196,8 +193,6 @@ export function blurModeOf(method, dense = false) {
  * @property {'separable'|'dense'} passes which passes run
  * @property {number} groups the isotropic blur's groups holding light this frame (1: one kernel)
  * @property {ReadonlyArray<object>|null} groupings their kernelGroups per slot (null: one kernel)
- * @property {import('./resolutionPlan.js').LevelPlan|null} levels the resolution levels (null: the
- *   whole profile at full resolution)
  */
 
 /**
@@ -217,6 +212,5 @@ export function planBlur(settings, pixelsPerMm) {
   return {
     samples: tapBlend ? tapBlend.from + tapBlend.to - 1 : counts[0], tapBlend, kernelPixels, blur: fade > 0, fade, passes: mode.passes,
     groups: groupings ? Math.max(...groupings.map((g) => g.count)) : 1, groupings,
-    levels: fade > 0 ? mode.levels(settings, pixelsPerMm) : null,
   };
 }

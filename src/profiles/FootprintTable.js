@@ -3,21 +3,17 @@
 import { DataTexture, FloatType, NearestFilter, RGFormat } from 'three';
 import { footprintTable, FOOTPRINT_ROWS } from './footprints.js';
 
-/** profile → samples → table: one takes tens of ms, 'auto' a few hundred (most of it in its largest scales). */
+/** profile → samples → table: one takes tens of ms, 'auto' a few hundred. */
 const tables = new WeakMap();
 
 /**
- * The footprint table of `lookup`'s profile, with at least `rows` rows computed (footprintTable:
- * a frame reads the rows up to its largest scale's; more are computed when a frame needs them).
  * @param {import('./ProfileLookup.js').ProfileLookup} lookup
  * @param {number|'auto'} samples
- * @param {number} [rows=FOOTPRINT_ROWS]
  */
-export function tableOf(lookup, samples, rows = FOOTPRINT_ROWS) {
+export function tableOf(lookup, samples) {
   let bySamples = tables.get(lookup.profile);
   if (!bySamples) tables.set(lookup.profile, (bySamples = new Map()));
-  const known = bySamples.get(samples);
-  if (!known || known.computedRows < Math.min(rows, FOOTPRINT_ROWS)) bySamples.set(samples, footprintTable((x) => lookup.marginalEnergy(x), samples, rows, known));
+  if (!bySamples.has(samples)) bySamples.set(samples, footprintTable((x) => lookup.marginalEnergy(x), samples));
   return bySamples.get(samples);
 }
 
@@ -34,12 +30,11 @@ export class FootprintTable {
 
   /**
    * @param {number|'auto'} samples taps per direction (odd, ≥ 3), or 'auto' (footprintTable)
-   * @param {number} [rows=FOOTPRINT_ROWS] the rows the frame reads (tableOf)
    * @returns {DataTexture}
    */
-  update(samples, rows = FOOTPRINT_ROWS) {
-    const table = tableOf(this.lookup, samples, rows);
-    if (this.table === table) return this.texture;
+  update(samples) {
+    if (this.profile === this.lookup.profile && this.samples === samples) return this.texture;
+    const table = tableOf(this.lookup, samples);
     if (!this.texture || this.texture.image.width !== table.columns) {
       this.texture?.dispose();
       this.texture = new DataTexture(new Float32Array(table.data.length), table.columns, FOOTPRINT_ROWS, RGFormat, FloatType);

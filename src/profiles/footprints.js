@@ -198,32 +198,20 @@ export function autoFootprintAllocation(G, pxPerMm, maxError = AUTO_STEP_ERROR) 
 
 /**
  * The allocation at every table scale, in profile mm: texel k of row r holds (outer edge, sample
- * offset) of footprint k; the last footprint's edge is Infinity (the kernel's end). Rows past
- * `rows` are copies of the last one computed: a frame whose largest scale is row `rows` - 1's reads
- * none of them (an 'auto' row costs more the larger its scale).
+ * offset) of footprint k; the last footprint's edge is Infinity (the kernel's end).
  * @param {(xMm: number) => number[]} G
  * @param {number|'auto'} samples a fixed budget, or 'auto': per row the fewest taps within AUTO_STEP_ERROR
- * @param {number} [rows=FOOTPRINT_ROWS] the rows computed, from the first
- * @param {ReturnType<typeof footprintTable>|null} [previous=null] the same table with fewer rows
- *   computed: its rows are kept
- * @returns {{ data: Float32Array, columns: number, rows: number, computedRows: number, stepError: Float64Array, samples: Int32Array }}
+ * @returns {{ data: Float32Array, columns: number, rows: number, stepError: Float64Array, samples: Int32Array }}
  *   data: RG pairs, `columns` footprints per row ((samples − 1) / 2, AUTO_MAX_SAMPLES's for 'auto');
  *   stepError and samples per row
  */
-export function footprintTable(G, samples, rows = FOOTPRINT_ROWS, previous = null) {
+export function footprintTable(G, samples) {
   const auto = samples === 'auto';
   const columns = ((auto ? AUTO_MAX_SAMPLES : samples) - 1) / 2;
   const data = new Float32Array(2 * columns * FOOTPRINT_ROWS);
   const stepError = new Float64Array(FOOTPRINT_ROWS);
   const used = new Int32Array(FOOTPRINT_ROWS);
-  const computed = Math.min(Math.max(rows, 1), FOOTPRINT_ROWS);
-  const kept = previous ? Math.min(previous.computedRows, computed) : 0;
-  if (kept > 0) {
-    data.set(previous.data.subarray(0, 2 * columns * kept));
-    stepError.set(previous.stepError.subarray(0, kept));
-    used.set(previous.samples.subarray(0, kept));
-  }
-  for (let row = kept; row < computed; row++) {
+  for (let row = 0; row < FOOTPRINT_ROWS; row++) {
     const s = footprintRowScale(row);
     const chosen = auto ? autoFootprintAllocation(G, s) : { samples, allocation: footprintAllocation(G, samples, s) };
     const a = chosen.allocation;
@@ -235,10 +223,5 @@ export function footprintTable(G, samples, rows = FOOTPRINT_ROWS, previous = nul
     stepError[row] = a.stepError;
     used[row] = chosen.samples;
   }
-  for (let row = computed; row < FOOTPRINT_ROWS; row++) {
-    data.copyWithin(2 * columns * row, 2 * columns * (computed - 1), 2 * columns * computed);
-    stepError[row] = stepError[computed - 1];
-    used[row] = used[computed - 1];
-  }
-  return { data, columns, rows: FOOTPRINT_ROWS, computedRows: computed, stepError, samples: used };
+  return { data, columns, rows: FOOTPRINT_ROWS, stepError, samples: used };
 }

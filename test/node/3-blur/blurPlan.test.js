@@ -14,7 +14,7 @@ import { profiles } from '../../../src/profiles/presets.js';
 import { MAX_KERNEL_GROUPS, autoKernelGroups, fadedGrouping, footprintGroupFractions, groupEnergies, kernelGroupsAt } from '../../../src/3-blur/kernelGroups.js';
 
 const base = { scattering: true, marginalRadiusMm: 3, denseRadiusMm: 7, kernelReachMm: { 17: 4, 25: 5 }, kernelGroups: 1, profiles: [profiles.skin] };
-const oneKernel = { groups: 1, groupings: null, levels: null };
+const oneKernel = { groups: 1, groupings: null };
 
 describe('planBlur', () => {
   it('every method has a blur mode, and every mode a pass kind', () => {
