@@ -15,7 +15,7 @@ import { AUTO_SAMPLES, METHOD_TABLE, PIPELINE_SCHEMA, checkOption } from '../opt
 import { blendKernels, blurModeOf, checkProfileCount, planBlur } from './blurPlan.js';
 import { SubsurfaceBlurPass } from './SubsurfaceBlurPass.js';
 import { KernelGroupTable } from './KernelGroupTable.js';
-import { MAX_KERNEL_GROUPS, checkKernelGroups } from './kernelGroups.js';
+import { MAX_KERNEL_GROUPS, checkKernelGroups, possibleGroupCounts } from './kernelGroups.js';
 import { tableOf } from '../profiles/FootprintTable.js';
 
 const TRANSPARENT_BLACK = new Float32Array(4);
@@ -150,6 +150,18 @@ export class BlurStage {
   /** The most groups a frame may take: MAX_KERNEL_GROUPS when the method and setting group, else 1 (one kernel). */
   get groupCapacity() {
     return METHOD_TABLE[this.method].blur === 'footprint' && this._kernelGroups !== 1 ? MAX_KERNEL_GROUPS : 1;
+  }
+
+  /**
+   * The materials the blur's next frames may draw with under the current settings (warm-up,
+   * SubsurfaceScattering.compileAsync): both passes' for one kernel, or for each count of groups a
+   * frame may take (kernelGroups.js's possibleGroupCounts), and the dense reference's where it is on.
+   * @returns {import('three').ShaderMaterial[]}
+   */
+  warmUpMaterials() {
+    if (this._dense) return [this.densePass.material];
+    const counts = this.groupCapacity === 1 ? [1] : possibleGroupCounts(this.profileLookups.map((lookup) => lookup.profile), this._kernelGroups);
+    return counts.flatMap((count) => [this.horizontalPass.groupMaterial(count), this.verticalPass.groupMaterial(count)]);
   }
 
   /** The dense 2D reference (useDenseReference), built on first use. */
