@@ -5,6 +5,10 @@
 //   three<n>  no transmittance; the first n lights cast three's shadows (shadowMap on, castShadow):
 //             the pass that reading thickness from three's shadow maps would have shared
 //   both<n>   the two together: a user with shadows who turns transmittance on today
+//   hook<n>   transmittance from the first n lights, the head's material moved by a vertex hook of
+//             the user's (onBeforeCompile: it breathes), which the light's pass runs in a depth
+//             material of the head's own: hook1 − hook0 against ours1 − ours0 is the light's pass
+//             with the hook against without
 // A frame's time is the wall time of composer.render() and a 1-pixel read-back (a fence).
 // SwiftShader's times are CPU times: compare rows of one run, as ratios.
 import * as THREE from 'three';
@@ -23,7 +27,15 @@ const ROWS = {
   three3: { transmitting: 0, shadows: 3 },
   both1: { transmitting: 1, shadows: 1 },
   both3: { transmitting: 3, shadows: 3 },
+  hook0: { transmitting: 0, shadows: 0, hook: true },
+  hook1: { transmitting: 1, shadows: 0, hook: true },
 };
+
+/** A vertex hook as users write them: the head breathes along its normals, half a millimetre. */
+function breathe(shader) {
+  shader.uniforms.breath = { value: 1 };
+  shader.vertexShader = `uniform float breath;\n${shader.vertexShader.replace('#include <begin_vertex>', '#include <begin_vertex>\n\ttransformed += objectNormal * 0.01 * sin( breath );')}`;
+}
 
 /** The rig's three lights, all behind the head (so each one's map is drawn), shadows at 1024². */
 function threeLights(rig) {
@@ -39,7 +51,7 @@ function threeLights(rig) {
   return lights;
 }
 
-async function makeRow(width, height, { transmitting, shadows }) {
+async function makeRow(width, height, { transmitting, shadows, hook = false }) {
   const rig = await headRig(width / height);
   const lights = threeLights(rig);
   lights.forEach((light, i) => { light.castShadow = i < shadows; });
@@ -50,6 +62,7 @@ async function makeRow(width, height, { transmitting, shadows }) {
   const sss = new SubsurfaceScattering({
     scene: rig.scene, camera: rig.camera, worldUnitInMm: HEAD_WORLD_UNIT_IN_MM, light: transmitting ? lights.slice(0, transmitting) : null,
   });
+  if (hook) rig.head.material.onBeforeCompile = breathe;
   sss.makeSubsurface(rig.head.material);
   const composer = new EffectComposer(renderer, new THREE.WebGLRenderTarget(width, height, { type: THREE.FloatType }));
   composer.renderToScreen = false;

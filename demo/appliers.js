@@ -24,11 +24,11 @@ export function groupOf(key) {
 
 /**
  * How each group of state keys reaches the scene and the pipeline.
- * @param {object} demo the page's parts (demo/main.js): state, sss, material, marble (the piece), rig, light, camera,
+ * @param {object} demo the page's parts (demo/main.js): state, sss, material, marble and foliage (the pieces), rig, light, camera,
  *   controls, divider, resize(), and the kernel plot's canvas and the shot buttons
  */
 export function createAppliers(demo) {
-  const { state, sss, material, marble, rig, light, camera, controls, kernelCanvas, shotButtons } = demo;
+  const { state, sss, material, marble, foliage, rig, light, camera, controls, kernelCanvas, shotButtons } = demo;
   const showDivider = () => demo.divider.show(state.split, dividerVisible(state));
 
   return {
@@ -51,6 +51,14 @@ export function createAppliers(demo) {
       marble.visible = state.marble;
       if (state.marble) sss.makeSubsurface(marble.material, { profile: 'marble' });
       else sss.removeSubsurface(marble.material);
+    },
+    // The plant's leaves scatter about as far as a leaf is thick (a few tenths of a millimetre), in the
+    // head's pipeline and profile; their glow through no thickness is the leaf's colour, whatever
+    // the profile. Hidden, they are unbound.
+    foliage: () => {
+      foliage.piece.visible = state.foliage;
+      if (state.foliage) sss.makeSubsurface(foliage.material, { widthMm: 0.25 });
+      else sss.removeSubsurface(foliage.material);
     },
     material: () => sss.makeSubsurface(material, { widthMm: state.width, translucency: state.translucency, shrinkMm: state.shrink }),
     followSurface: () => Object.assign(sss, { followSurface: state.followSurface, depthThresholdMm: state.depthThreshold }),

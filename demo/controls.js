@@ -11,7 +11,7 @@ const LABELS = {
   sss: 'scattering', width: 'width (mm)', depthThreshold: 'threshold (mm)', shrink: 'inward shrink (mm)',
   lightDepthSize: 'depth map size', lightAzimuth: 'azimuth (°)', lightElevation: 'elevation (°)',
   lightIntensity: 'intensity', lightColor: 'colour', followSurface: 'follow surface', split: 'divider (left: off)',
-  resolutionScale: 'resolution scale', marble: 'marble piece (its own profile)',
+  resolutionScale: 'resolution scale', marble: 'marble piece (its own profile)', foliage: 'swaying leaves',
   groups: 'isotropy groups (1: one kernel)', pointLight: 'ear point light',
 };
 
@@ -100,6 +100,8 @@ export function createControls(state, { onChange, onFigure, onPreset, onReset, c
   add(light, 'lightIntensity', 0.1);
   // A second light: the preset frames the ear; the switch itself is under More › Transmittance.
   light.add({ earLight: () => onPreset('earLight') }, 'earLight').name('▶ preset: ear light').domElement.title = PRESETS.earLight.caption;
+  // Leaves lit from behind, swaying: the switch itself is under More.
+  light.add({ foliage: () => onPreset('foliage') }, 'foliage').name('▶ preset: leaves').domElement.title = PRESETS.foliage.caption;
 
   const skin = gui.addFolder('Skin');
   add(skin, 'width', 0.05);
@@ -127,6 +129,7 @@ export function createControls(state, { onChange, onFigure, onPreset, onReset, c
   add(specular, 'specular', 0.01);
   add(specular, 'roughness', 0.01);
   add(more, 'marble');
+  add(more, 'foliage');
   add(more, 'lightColor');
   add(more, 'shot');
   add(more, 'resolutionScale', 0.05);

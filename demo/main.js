@@ -12,6 +12,7 @@ import { OutputPass } from 'three/addons/postprocessing/OutputPass.js';
 import { SubsurfaceScattering } from '../src/index.js';
 import { loadHead } from './headModel.js';
 import { createHeadScene, createMarblePiece, HEAD_WORLD_UNIT_IN_MM } from './headScene.js';
+import { createFoliagePiece } from './foliage.js';
 import { SHOTS } from './framing.js';
 import { defaultState, parseHash, formatHash } from './state.js';
 import { figureState, presetState } from './figures.js';
@@ -128,6 +129,8 @@ function createPipeline(renderer, head) {
   sss.makeSubsurface(material);
   const marble = createMarblePiece(); // made subsurface, with its own profile, while shown (demo/appliers.js)
   scene.add(marble);
+  const foliage = createFoliagePiece(); // made subsurface while shown; its wind moves with the frames
+  scene.add(foliage.piece);
 
   // Linear HDR all the way to OutputPass (tone mapping + sRGB last).
   // MSAA: the scene split follows the composer's samples, so silhouettes and creases are antialiased.
@@ -135,7 +138,7 @@ function createPipeline(renderer, head) {
   composer.addPass(sss); // in place of a RenderPass
   const outputPass = new OutputPass();
   composer.addPass(outputPass);
-  return { renderer, head, rig, camera, light, material, marble, controls, sss, composer, outputPass };
+  return { renderer, head, rig, camera, light, material, marble, foliage, controls, sss, composer, outputPass };
 }
 
 /** The pipeline's parts with the timings overlay. */
@@ -259,11 +262,12 @@ function panelCoversFace({ camera, controls, renderer, state }) {
   return canvasBox.left + (edge.x * 0.5 + 0.5) * canvasBox.width > document.getElementById('panel').getBoundingClientRect().left;
 }
 
-/** One frame: the controls' damping, the composer, the timings (the overlay twice a second). */
-function createFrame({ controls, composer, timings, hud }) {
+/** One frame: the controls' damping, the wind, the composer, the timings (the overlay twice a second). */
+function createFrame({ controls, composer, timings, hud, foliage }, animated) {
   let lastTimingsUpdate = 0;
   return () => {
     controls.update();
+    if (animated) foliage.setTime(performance.now() / 1000); // still pages keep the wind where a test sets it
     const t0 = performance.now();
     composer.render();
     timings.frame(performance.now() - t0);
@@ -311,7 +315,7 @@ async function start() {
   resize(demo);
   // The panel starts folded where, open, it would cover the face.
   if (narrow.matches || panelCoversFace(demo)) demo.panel.gui.close();
-  const frame = createFrame(demo);
+  const frame = createFrame(demo, !params.has('still'));
   if (!params.has('still')) renderer.setAnimationLoop(frame);
   frame();
   window.demo = testApi(demo, actions, frame);

@@ -5,7 +5,7 @@
 import { SHOT_NAMES } from './framing.js';
 
 /** The presets besides the paper's figures (demo/figures.js's PRESETS). */
-export const PRESET_NAMES = ['earLight'];
+export const PRESET_NAMES = ['earLight', 'foliage'];
 
 const PROFILES = ['skin', 'skinBurley', 'marble', 'milk'];
 const VIEWS = ['final', 'diffuse', 'specular', 'depth', 'mask', 'thickness', 'transmittance', 'kernel'];
@@ -31,6 +31,8 @@ export const STATE_SCHEMA = {
   depthThreshold: number(0.5, 200, 6, 'mm'),
   // A marble ball beside the head in the same pipeline, with its own profile (off by default).
   marble: bool(false),
+  // A plant beside the head whose leaves sway through an onBeforeCompile of their own (demo/foliage.js).
+  foliage: bool(false),
   // Transmittance
   transmittance: bool(true),
   translucency: number(0, 0.95, 0),

@@ -12,6 +12,8 @@ export function testApi(demo, actions, frame) {
   const { renderer, composer, sss, state, panel, hud, outputPass } = demo;
   return {
     rig: demo.rig, renderer, composer, head: demo.head, sss, state, panel, timings: demo.timings, hud,
+    /** The swaying leaves (demo/foliage.js): `setTime(seconds)` moves the wind of a still page. */
+    foliage: demo.foliage,
     divider: demo.divider, controls: demo.controls,
     isStandIn: demo.head.isStandIn,
     /** 'webgl', or 'webgpu' on index.html?renderer=webgpu where the browser has WebGPU. */

@@ -13,6 +13,7 @@ import { NODE_METHODS, subsurfaceMaterial, subsurfaceMRT, subsurfaceScattering }
 import { computeKernel } from '../src/profiles/kernel.js';
 import { AUTO_MAX_SAMPLES } from '../src/profiles/footprints.js';
 import { createHeadScene, createMarblePiece, HEAD_WORLD_UNIT_IN_MM } from './headScene.js';
+import { createFoliagePiece } from './foliage.js';
 
 /** Why this browser cannot run WebGPU (no navigator.gpu, no adapter), or null when it can. */
 export async function webgpuMissing() {
@@ -51,10 +52,10 @@ function pipelineFacade(node, skin, lightNote) {
     stageTimer: null,
     /** @type {Set<string>} settings the node does not have, asked for since the page opened */
     unsupported: new Set(),
-    /** The head's material takes its options; another (the marble piece) would need a profile of its own, which the node has not. */
+    /** The head's material takes its options; another (the marble piece, the leaves) would need a node material of its own, which the page has not. */
     makeSubsurface(material, { widthMm, translucency, shrinkMm, profile }) {
       if (material === skin) Object.assign(skin, { widthMm, translucency, shrinkMm });
-      else facade.unsupported.add(`a second profile ('${profile}')`);
+      else facade.unsupported.add(profile ? `a second profile ('${profile}')` : `a second subsurface material ('${material.name}')`);
     },
     removeSubsurface() {},
     /** The kernel view's plot: the marginal kernel the node's footprints come from. */
@@ -99,6 +100,8 @@ export function createWebgpuPipeline(renderer, head, lightNote) {
   controls.enableDamping = true;
   const marble = createMarblePiece(); // three's own material here: the node holds one profile
   scene.add(marble);
+  const foliage = createFoliagePiece(); // three's own material here too, unswayed: WebGPURenderer runs no onBeforeCompile
+  scene.add(foliage.piece);
 
   const scenePass = pass(scene, camera);
   scenePass.setMRT(subsurfaceMRT());
@@ -106,5 +109,5 @@ export function createWebgpuPipeline(renderer, head, lightNote) {
   const pipeline = new RenderPipeline(renderer);
   pipeline.outputNode = node;
   const composer = { render: () => pipeline.render(), setSize() {}, setPixelRatio() {} };
-  return { renderer, head, rig, camera, light, material: skin, marble, controls, sss: pipelineFacade(node, skin, lightNote), composer, pipeline, outputPass: null };
+  return { renderer, head, rig, camera, light, material: skin, marble, foliage, controls, sss: pipelineFacade(node, skin, lightNote), composer, pipeline, outputPass: null };
 }

@@ -142,7 +142,7 @@ export class SubsurfaceScattering extends PassWithSettings {
       lookupOf: (profile) => this._lookupOf(profile),
       checkProfiles: (profiles) => this._checkProfiles(this.method, profiles, this.profile, 'makeSubsurface'),
       debugOutput: materialOutputOf(this.debugView),
-    }));
+    }), () => this._useProfiles());
     /**
      * What the last frame ran: { samples, kernelPixels, blur, passes, groups } (src/3-blur/blurPlan.js).
      * @type {ReturnType<BlurStage['plan']>}
@@ -340,6 +340,11 @@ export class SubsurfaceScattering extends PassWithSettings {
     const frame = this._scenePass.collect();
     // The lights' checks fit their maps to the transmitting meshes on the screen.
     const works = this._lightDepths.map((lightDepth) => checks.light(lightDepth, frame, this.transmittance, this._transmitsThrough));
+    // What cannot be drawn as the camera sees it is drawn as three draws it, named once: the copies
+    // the frame met and could not make subsurface, and, from the frame after three compiled them,
+    // the materials whose own hook took out a point of the split or threw in a light's pass.
+    this._subsurfaceMaterials.checkMaterials(checks, this._scenePass.copiesNotFollowed);
+    for (const lightDepth of this._lightDepths) for (const [key, message] of lightDepth.shapeProblems) checks.problem(key, message);
     checks.end();
     // No subsurface mesh on the screen: the frame is three's own, as a RenderPass draws it.
     if (this._drawsPlain()) {

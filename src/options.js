@@ -240,7 +240,7 @@ export const PIPELINE_SCHEMA = Object.freeze({
   },
   kernelGroups: {
     default: 1, type: "number|'auto'",
-    doc: `method 'footprint': 1, one separable kernel (exact along the screen axes; the fast blur); 'auto' or 2..${MAX_KERNEL_GROUPS}: the profile's Gaussians in groups, the same in every direction, slower ('auto': one group for a far head)`,
+    doc: `method 'footprint': 1, one separable kernel (the fast blur); 'auto' or 2..${MAX_KERNEL_GROUPS}: the profile's Gaussians in groups, the same in every direction, slower`,
     check: (value, name) => checkKernelGroups(value, name),
   },
   strength: {
@@ -336,7 +336,7 @@ export const MATERIAL_SCHEMA = Object.freeze({
   },
   profile: {
     default: undefined, type: "import('./options.js').ProfileName|object|null",
-    doc: `this material's diffusion profile, as the pipeline's \`profile\` (left out: as before, at first the pipeline's; null: back to the pipeline's); up to ${MAX_PROFILES} per pipeline`,
+    doc: `this material's diffusion profile, as the pipeline's \`profile\` (null: the pipeline's); up to ${MAX_PROFILES} per pipeline`,
     // null: the pipeline's again (a rebind keeps what it leaves out, so undefined cannot say it).
     check: (value) => (value === null ? undefined : (checkProfile(value), value)), // kept as given: a material's options read back as written
   },
@@ -465,7 +465,7 @@ export function checkMaterialOptions(options = {}, previous = MATERIAL_DEFAULTS)
  * @property {ProfileName|object} [profile='skin'] a preset's name ('skin', 'skinBurley', 'marble', 'milk') or a profile object (burleyProfile, dipoleProfile, gaussianSumProfile)
  * @property {Method} [method='footprint'] how the blur weighs its taps: 'footprint' (each pixel's footprint, exactly), 'marginal' or 'reference' (fixed taps; Jimenez 2012's kernel); a switch to or from 'footprint' recompiles
  * @property {number|'auto'} [samples='auto'] taps per direction, odd, 3..63 (a budget for 'footprint'); 'auto': as few as the on-screen scale needs
- * @property {number|'auto'} [kernelGroups=1] method 'footprint': 1, one separable kernel (exact along the screen axes; the fast blur); 'auto' or 2..4: the profile's Gaussians in groups, the same in every direction, slower ('auto': one group for a far head)
+ * @property {number|'auto'} [kernelGroups=1] method 'footprint': 1, one separable kernel (the fast blur); 'auto' or 2..4: the profile's Gaussians in groups, the same in every direction, slower
  * @property {number[]|import('three').Color} [strength] [r, g, b] or a THREE.Color, 0..1: mix with no scattering (the reference model)
  * @property {number[]} [falloff] RGB, (0, 10]: method 'reference' only, its kernel's shape
  * @property {FollowSurfaceMode} [followSurface='drop'] a tap on another surface: 'drop' (renormalise), 'lerp' (to the centre) or 'off'
@@ -490,7 +490,7 @@ export function checkMaterialOptions(options = {}, previous = MATERIAL_DEFAULTS)
  * @property {ProfileName|object} [profile='skin'] a preset's name ('skin', 'skinBurley', 'marble', 'milk') or a profile object (burleyProfile, dipoleProfile, gaussianSumProfile)
  * @property {Method} [method='footprint'] how the blur weighs its taps: 'footprint' (each pixel's footprint, exactly), 'marginal' or 'reference' (fixed taps; Jimenez 2012's kernel); a switch to or from 'footprint' recompiles
  * @property {number|'auto'} [samples='auto'] taps per direction, odd, 3..63 (a budget for 'footprint'); 'auto': as few as the on-screen scale needs
- * @property {number|'auto'} [kernelGroups=1] method 'footprint': 1, one separable kernel (exact along the screen axes; the fast blur); 'auto' or 2..4: the profile's Gaussians in groups, the same in every direction, slower ('auto': one group for a far head)
+ * @property {number|'auto'} [kernelGroups=1] method 'footprint': 1, one separable kernel (the fast blur); 'auto' or 2..4: the profile's Gaussians in groups, the same in every direction, slower
  * @property {number[]|import('three').Color} [strength] [r, g, b] or a THREE.Color, 0..1: mix with no scattering (the reference model)
  * @property {FollowSurfaceMode} [followSurface='drop'] a tap on another surface: 'drop' (renormalise), 'lerp' (to the centre) or 'off'
  * @property {number} [depthThresholdMm=6] mm of depth step taken for another surface
@@ -512,7 +512,7 @@ export function checkMaterialOptions(options = {}, previous = MATERIAL_DEFAULTS)
  * @property {number} worldUnitInMm millimetres per world unit (three.js: metres, 1000)
  * @property {Method} method how the blur weighs its taps: 'footprint' (each pixel's footprint, exactly), 'marginal' or 'reference' (fixed taps; Jimenez 2012's kernel); a switch to or from 'footprint' recompiles
  * @property {number|'auto'} samples taps per direction, odd, 3..63 (a budget for 'footprint'); 'auto': as few as the on-screen scale needs
- * @property {number|'auto'} kernelGroups method 'footprint': 1, one separable kernel (exact along the screen axes; the fast blur); 'auto' or 2..4: the profile's Gaussians in groups, the same in every direction, slower ('auto': one group for a far head)
+ * @property {number|'auto'} kernelGroups method 'footprint': 1, one separable kernel (the fast blur); 'auto' or 2..4: the profile's Gaussians in groups, the same in every direction, slower
  * @property {number[]|import('three').Color|undefined} strength [r, g, b] or a THREE.Color, 0..1: mix with no scattering (the reference model)
  * @property {number[]|undefined} falloff RGB, (0, 10]: method 'reference' only, its kernel's shape
  * @property {FollowSurfaceMode} followSurface a tap on another surface: 'drop' (renormalise), 'lerp' (to the centre) or 'off'
@@ -535,7 +535,7 @@ export function checkMaterialOptions(options = {}, previous = MATERIAL_DEFAULTS)
  * @property {number} worldUnitInMm millimetres per world unit (three.js: metres, 1000)
  * @property {Method} method how the blur weighs its taps: 'footprint' (each pixel's footprint, exactly), 'marginal' or 'reference' (fixed taps; Jimenez 2012's kernel); a switch to or from 'footprint' recompiles
  * @property {number|'auto'} samples taps per direction, odd, 3..63 (a budget for 'footprint'); 'auto': as few as the on-screen scale needs
- * @property {number|'auto'} kernelGroups method 'footprint': 1, one separable kernel (exact along the screen axes; the fast blur); 'auto' or 2..4: the profile's Gaussians in groups, the same in every direction, slower ('auto': one group for a far head)
+ * @property {number|'auto'} kernelGroups method 'footprint': 1, one separable kernel (the fast blur); 'auto' or 2..4: the profile's Gaussians in groups, the same in every direction, slower
  * @property {number[]|import('three').Color|undefined} strength [r, g, b] or a THREE.Color, 0..1: mix with no scattering (the reference model)
  * @property {FollowSurfaceMode} followSurface a tap on another surface: 'drop' (renormalise), 'lerp' (to the centre) or 'off'
  * @property {number} depthThresholdMm mm of depth step taken for another surface
@@ -556,6 +556,6 @@ export function checkMaterialOptions(options = {}, previous = MATERIAL_DEFAULTS)
  * @property {boolean} [transmittance=true] light through thin parts (with the pipeline's light)
  * @property {number} [translucency=0] 0..1 (exclusive): light through regardless of thickness
  * @property {number} [shrinkMm=0.6] how far the light depth lookup moves inwards, mm (0..1000)
- * @property {ProfileName|object|null} [profile] this material's diffusion profile, as the pipeline's `profile` (left out: as before, at first the pipeline's; null: back to the pipeline's); up to 8 per pipeline
+ * @property {ProfileName|object|null} [profile] this material's diffusion profile, as the pipeline's `profile` (null: the pipeline's); up to 8 per pipeline
  */
 // </options-typedef>

@@ -7,6 +7,7 @@ import {
 import vertexShader from '../../shaders/1-light-depth/lightDepth.vert.glsl?raw';
 import fragmentShader from '../../shaders/1-light-depth/lightDepth.frag.glsl?raw';
 import { assertFloatRenderTargets, describe } from '../support/rendererSupport.js';
+import { userProgramKeyOf, userShaderHook } from '../support/userHooks.js';
 import { preservingRendererState } from '../support/rendererState.js';
 import { LightDepthView, boundsNoVolume } from './LightDepthView.js';
 import { holdingLevels, isDrawable, renderingOnly } from '../frameMeshes.js';
@@ -26,6 +27,49 @@ const HIDDEN = new ShaderMaterial({ name: 'LightDepthHidden', visible: false });
 function uvTransform(texture, into) {
   if (texture.matrixAutoUpdate === true) texture.updateMatrix();
   return into.copy(texture.matrix);
+}
+
+/**
+ * A uniform the user's hook made for the light's depth program, read from and written to the one of
+ * that name in the material's own program where it has one (three keeps the last program's uniforms
+ * per material): three's examples keep the shader a hook saw and animate its uniforms, and the
+ * depth program and the material's, compiled in either order, then move alike.
+ */
+function sharedUniform(renderer, material, name, own) {
+  const main = () => {
+    const uniform = renderer.properties.get(material).uniforms?.[name];
+    return uniform && uniform !== shared ? uniform : own;
+  };
+  const shared = {
+    get value() { return main().value; },
+    set value(value) { main().value = value; },
+  };
+  return shared;
+}
+
+/**
+ * The onBeforeCompile of a depth material for `material`: the user's hook on the light's depth
+ * shader, which has three's vertex chunks (shaders/1-light-depth/lightDepth.vert.glsl), so that the
+ * vertices move as the camera sees them. Its fragment edits are for the material's shading and
+ * are left out (the depth shader has none of its fragment chunks); the uniforms it makes are
+ * shared with the material's own (sharedUniform). A hook that throws on the depth shader leaves
+ * the mesh drawn unmoved, said once (`failed`).
+ */
+function runningUserHook(material, hook, ownUniforms, failed) {
+  return function (shader, renderer) {
+    const { fragmentShader, vertexShader } = shader;
+    try {
+      hook.call(material, shader, renderer);
+    } catch (error) {
+      Object.assign(shader, { fragmentShader, vertexShader });
+      failed(`its onBeforeCompile throws on the light's depth shader (${error?.message ?? error}), so the light sees its mesh unmoved by it`);
+      return;
+    }
+    shader.fragmentShader = fragmentShader;
+    for (const name of Object.keys(shader.uniforms)) {
+      if (!ownUniforms.has(name)) shader.uniforms[name] = sharedUniform(renderer, material, name, shader.uniforms[name]);
+    }
+  };
 }
 
 /**
@@ -72,7 +116,12 @@ export class LightDepthTarget extends LightDepthView {
     return Array.isArray(object.material) ? object.material.map(of) : of(object.material);
   }
 
-  /** For a cut-out or clipped material (LightDepthView._shapedMaterial). */
+  /** A material whose own onBeforeCompile may move its vertices: the light runs it too (updateShapedMaterial). */
+  hasOwnVertexStage(material) {
+    return userShaderHook(material) !== null;
+  }
+
+  /** For a cut-out, clipped or hooked material (LightDepthView._shapedMaterial). */
   createShapedMaterial(material) {
     const shaped = this.material.clone();
     shaped.name = `LightDepthMaterial(${material.name || material.type})`;
@@ -81,10 +130,15 @@ export class LightDepthTarget extends LightDepthView {
       alphaMap: { value: null }, alphaMapTransform: { value: new Matrix3() },
       alphaTest: { value: 0 }, opacity: { value: 1 },
     });
+    shaped.userData.ownUniforms = new Set(Object.keys(shaped.uniforms));
     return shaped;
   }
 
-  /** three derives USE_MAP, USE_ALPHAMAP, USE_ALPHATEST from the fields but leaves a ShaderMaterial's uniforms to us. */
+  /**
+   * three derives USE_MAP, USE_ALPHAMAP, USE_ALPHATEST from the fields but leaves a ShaderMaterial's
+   * uniforms to us. A user's hook is taken again where the material changed since (three recompiles
+   * a material on needsUpdate, its version: so does its depth material), keyed as three keys it.
+   */
   updateShapedMaterial(shaped, material) {
     const u = shaped.uniforms;
     u.map.value = shaped.map;
@@ -93,6 +147,23 @@ export class LightDepthTarget extends LightDepthView {
     if (shaped.alphaMap) uvTransform(shaped.alphaMap, u.alphaMapTransform.value);
     u.alphaTest.value = shaped.alphaTest;
     u.opacity.value = material.opacity;
+    const { userData } = shaped;
+    if (userData.version === material.version && userData.hook === userShaderHook(material)) return;
+    userData.version = material.version;
+    userData.hook = userShaderHook(material);
+    const key = userData.hook && !userData.failed ? userProgramKeyOf(material) : '';
+    shaped.onBeforeCompile = userData.hook && !userData.failed
+      ? runningUserHook(material, userData.hook, userData.ownUniforms, (reason) => this._hookFailed(material, shaped, reason))
+      : ShaderMaterial.prototype.onBeforeCompile;
+    shaped.customProgramCacheKey = () => key;
+    shaped.needsUpdate = true;
+  }
+
+  /** The light's depth program could not run `material`'s hook: drawn unmoved from the next compile on, said once. */
+  _hookFailed(material, shaped, reason) {
+    shaped.userData.failed = true;
+    shaped.userData.version = undefined; // taken again without the hook
+    this.shapeProblems.set(`lightShape:${material.uuid}`, `${material.name ? `material "${material.name}"` : `an unnamed ${material.type}`}: ${reason}`);
   }
 
   /** A point light's six faces, each into its viewport of the target (LightDepthView.pointFace). */

@@ -59,16 +59,26 @@ class LightViewBounds {
 
 const _targetBounds = new LightViewBounds();
 const _objectBounds = new LightViewBounds();
+const _movedBox = new Box3();
+const _movedSize = new Vector3();
 
 /**
- * Grows `into` by the corners of `objects`' bounds (localBoundsOf) seen through `view`.
+ * Grows `into` by the corners of `objects`' bounds (localBoundsOf) seen through `view`. An object
+ * that moves its vertices its own way (`moves`: a hook, a position node) counts with the cube
+ * around its bounding sphere, the bound three's frustum culling holds displaced vertices to: a leaf
+ * bent out of its plane stays in the map.
  * @param {LightViewBounds} into @param {Iterable<import('three').Object3D>} objects
  * @param {Matrix4} view world → the light's view @param {boolean} perspective @param {boolean} cube
+ * @param {(object: import('three').Object3D) => boolean} moves
  */
-function lightViewBounds(into, objects, view, perspective, cube) {
+function lightViewBounds(into, objects, view, perspective, cube, moves) {
   for (const object of objects) {
-    const box = localBoundsOf(object);
+    let box = localBoundsOf(object);
     if (!box || box.isEmpty()) continue;
+    if (moves(object)) {
+      box.getBoundingSphere(_sphere);
+      box = _movedBox.setFromCenterAndSize(_sphere.center, _movedSize.setScalar(2 * _sphere.radius));
+    }
     for (let k = 0; k < 8; k++) {
       _corner.set(k & 1 ? box.max.x : box.min.x, k & 2 ? box.max.y : box.min.y, k & 4 ? box.max.z : box.min.z)
         .applyMatrix4(object.matrixWorld).applyMatrix4(view);
@@ -103,8 +113,8 @@ export function lightLayers(light, camera) {
 const nameOf = (object) => (object.name ? `mesh "${object.name}"` : `an unnamed ${object.type}`);
 
 /**
- * Whether a material's own shape matters from the light (a cut-out or clipping planes); other
- * materials share one depth material.
+ * Whether a material's own shape matters from the light (a cut-out or clipping planes; besides, a
+ * vertex stage of its own: LightDepthView.hasOwnVertexStage); other materials share one depth material.
  * @param {import('three').Material} material
  */
 export function hasOwnShape(material) {
@@ -200,8 +210,10 @@ export class LightDepthView {
     this.size = size;
     /** Whether the map holds the scene as last rendered; no transmittance from one that does not. */
     this.valid = false;
-    /** @type {Map<import('three').Material, import('three').Material>} depth materials of cut-out or clipped materials */
+    /** @type {Map<import('three').Material, import('three').Material>} depth materials of cut-out, clipped or displaced materials */
     this._shaped = new Map();
+    /** What the depth pass could not draw as the camera sees it, each named once in `problems`: key → message. */
+    this.shapeProblems = new Map();
     this._onMaterialDispose = (event) => this._forget(event.target);
   }
 
@@ -211,7 +223,23 @@ export class LightDepthView {
    */
   depthMaterialFor(material) {
     if (!lightSees(material)) return null;
-    return hasOwnShape(material) ? this._shapedMaterial(material) : this.material;
+    return hasOwnShape(material) || this.hasOwnVertexStage(material) ? this._shapedMaterial(material) : this.material;
+  }
+
+  /**
+   * Whether `material` moves its vertices its own way (a user's shader hook, a position node), so
+   * that the light sees the shape the camera sees only through a depth material of its own: the
+   * subclass's answer (here: none).
+   * @param {import('three').Material} material
+   * @returns {boolean}
+   */
+  hasOwnVertexStage(material) {
+    return false;
+  }
+
+  /** Whether one of `object`'s materials moves its vertices its own way (hasOwnVertexStage). @private */
+  _moves(object) {
+    return materialsOf(object).some((m) => m && this.hasOwnVertexStage(m));
   }
 
   /** One per material, its settings read now. */
@@ -222,10 +250,10 @@ export class LightDepthView {
       this._shaped.set(material, shaped);
       material.addEventListener('dispose', this._onMaterialDispose);
     }
-    // alphaToCoverage counts as alphaTest 0.5, as in three's shadow maps.
+    // alphaToCoverage counts as alphaTest 0.5, as in three's shadow maps. The maps only cut out.
     const alphaTest = material.alphaToCoverage === true ? 0.5 : material.alphaTest;
-    const map = material.map ?? null;
-    const alphaMap = material.alphaMap ?? null;
+    const map = alphaTest > 0 ? material.map ?? null : null;
+    const alphaMap = alphaTest > 0 ? material.alphaMap ?? null : null;
     Object.assign(shaped, {
       map, alphaMap, alphaTest: map || alphaMap ? alphaTest : 0, clippingPlanes: material.clippingPlanes, clipIntersection: material.clipIntersection,
     });
@@ -235,6 +263,7 @@ export class LightDepthView {
 
   _forget(material) {
     material.removeEventListener('dispose', this._onMaterialDispose);
+    this.shapeProblems.delete(`lightShape:${material.uuid}`);
     this._shaped.get(material)?.dispose();
     this._shaped.delete(material);
   }
@@ -327,7 +356,8 @@ export class LightDepthView {
     const view = this.camera.matrixWorldInverse;
     const perspective = !this.light.isDirectionalLight;
     const cube = this.isCube;
-    const across = lightViewBounds(_targetBounds.makeEmpty(), targets, view, perspective, cube);
+    const moves = (object) => this._moves(object);
+    const across = lightViewBounds(_targetBounds.makeEmpty(), targets, view, perspective, cube, moves);
     if (!(perspective ? across.far > 0 : Number.isFinite(across.far))) return null; // nothing to hold: the map goes unread
     const { far } = across;
     if (!cube && across.bounded) this.window = this._window(across);
@@ -337,8 +367,9 @@ export class LightDepthView {
     let near = Infinity;
     for (const object of candidates) {
       if (!this._sees(object)) continue;
-      const bounds = lightViewBounds(_objectBounds.makeEmpty(), [object], view, perspective, cube);
-      if (!(bounds.far > (perspective ? 0 : -Infinity)) || !(bounds.near < far)) continue;
+      const bounds = lightViewBounds(_objectBounds.makeEmpty(), [object], view, perspective, cube, moves);
+      // The farthest transmitting surface itself too: a flat mesh face-on to the light is all at `far`.
+      if (!(bounds.far > (perspective ? 0 : -Infinity)) || !(bounds.near <= far)) continue;
       near = Math.min(near, bounds.near);
     }
     // A mesh flat in the light's view (a leaf face-on) has near = far: the margin gives it depth.

@@ -17,7 +17,7 @@
 // image, depth-tested against the scene, exactly as three blends them over its opaque pass.
 import { Color, FloatType, HalfFloatType } from 'three';
 import { Pass } from 'three/addons/postprocessing/Pass.js';
-import { getSubsurface } from './subsurfaceMaterial.js';
+import { followCopy, getSubsurface } from './subsurfaceMaterial.js';
 import { FrameMeshes, materialsOf, renderingOnly } from '../frameMeshes.js';
 import { subsurfaceScreenBox } from './subsurfaceScreenBox.js';
 import { ATTACHMENTS, DRAW_BUFFERS, DRAW_PHASES, createSubsurfaceTarget, diffuseCarriesDepth, drawingInto, setDiffuseCarriesDepth, setSurfaceChannels } from './subsurfaceTarget.js';
@@ -80,6 +80,10 @@ export class SubsurfaceScenePass extends Pass {
     this.needsSwap = false; // writes its own targets, not the composer's
     /** What the frame covers (collect): the meshes drawn, on the screen, the lights' solids, the LODs. */
     this.frame = new FrameMeshes();
+    /** Copies of subsurface materials the last frame met and could not make subsurface: material → why. */
+    this.copiesNotFollowed = new Map();
+    /** Whether a material is subsurface, a copy of one made so first (_subsurfaceOf): what the frame's lists are sorted by. */
+    this._isSubsurface = (material) => this._subsurfaceOf(material) !== undefined;
     this._collected = false;
     this._splitObjects = [];
     /** The meshes with an opaque subsurface material on the screen in the last render (the plan, the box). */
@@ -163,11 +167,24 @@ export class SubsurfaceScenePass extends Pass {
     const { scene, camera } = this;
     if (scene.matrixWorldAutoUpdate === true) scene.updateMatrixWorld();
     if (camera.parent === null && camera.matrixWorldAutoUpdate === true) camera.updateMatrixWorld();
-    this.frame.update(scene, camera, isSubsurface);
+    this.copiesNotFollowed.clear();
+    this.frame.update(scene, camera, this._isSubsurface);
     if (scene.overrideMaterial) this._classifyOverridden();
     else this._classify();
     this._collected = true;
     return this.frame;
+  }
+
+  /**
+   * A material's subsurface binding; a copy of a subsurface material (its userData's mark) is bound
+   * as its source first (followCopy), or kept in `copiesNotFollowed` with the reason.
+   */
+  _subsurfaceOf(material) {
+    const binding = getSubsurface(material);
+    if (binding) return binding;
+    const copy = followCopy(material);
+    if (copy?.follows === false) this.copiesNotFollowed.set(material, copy.reason);
+    return getSubsurface(material);
   }
 
   /** Sorts the frame's drawn materials into the three categories; returns how many are transparent. */

@@ -15,9 +15,19 @@
 //
 // Our GLSL goes in at fixed points of three's MeshStandard/MeshPhysical fragment shader (`inject`,
 // which fails loudly when three's shader no longer has the point); the declarations are assembled
-// with the library's include resolver like every other shader.
+// with the library's include resolver like every other shader. The user's own hooks
+// (onBeforeCompile, customProgramCacheKey, onBeforeRender), set before or after, run first
+// (src/support/userHooks.js); where their onBeforeCompile leaves out a point ours goes in at, the
+// material is drawn as three draws it and `uncomposed` says why.
+//
+// A copy of a subsurface material (material.clone(), .copy(), drei's <Clone>) carries its
+// userData, not our hooks: the mark COPY_MARK names the material it was copied from, and the frame
+// that meets the copy binds it as its source is bound (followCopy), or says once that it cannot.
 import { LessEqualDepth } from 'three';
 import parsGlsl from '../../shaders/2-scene-split/material/pars.glsl?raw';
+import outputsGlsl from '../../shaders/2-scene-split/material/outputs.glsl?raw';
+import unsplitVertexGlsl from '../../shaders/2-scene-split/material/unsplit.vert.glsl?raw';
+import unsplitFragmentGlsl from '../../shaders/2-scene-split/material/unsplit.frag.glsl?raw';
 import hiddenGlsl from '../../shaders/2-scene-split/material/hidden.vert.glsl?raw';
 import transmittedLightGlsl from '../../shaders/2-scene-split/material/transmittedLight.glsl?raw';
 import splitGlsl from '../../shaders/2-scene-split/material/split.glsl?raw';
@@ -29,6 +39,7 @@ import { assembleGlsl, enumDefines } from '../support/glsl.js';
 import { checkOneOf, checkOptions } from '../support/parameterChecks.js';
 import { describe, refuseTransmission } from '../support/rendererSupport.js';
 import { checkThreeRevision, supportedThreeNote, threeRelease } from '../support/threeVersion.js';
+import { composeHooks } from '../support/userHooks.js';
 import { MATERIAL_DEFAULTS, MATERIAL_SCHEMA, PIPELINE_SCHEMA, checkOption } from '../options.js';
 import { ATTACHMENT_DEFINES, DRAW_PHASES, currentDraw, diffuseCarriesDepth } from './subsurfaceTarget.js';
 import { MATERIAL_OUTPUTS } from '../4-compose/debugViews.js';
@@ -49,7 +60,9 @@ const STANDALONE_OPTIONS = Object.freeze(['widthMm', 'widthScale', 'worldUnitInM
 const STANDALONE = Object.freeze({ name: 'makeSubsurface' });
 
 /** The declarations before main(), with the finiteness check and transmittance. */
-const declarations = assembleGlsl('makeSubsurface', parsGlsl, { 'common/finite.glsl': finiteGlsl, 'common/carriedDepth.glsl': carriedDepthGlsl, ...TRANSMITTANCE_CHUNKS });
+const declarations = assembleGlsl('makeSubsurface', parsGlsl, {
+  '2-scene-split/material/outputs.glsl': outputsGlsl, 'common/finite.glsl': finiteGlsl, 'common/carriedDepth.glsl': carriedDepthGlsl, ...TRANSMITTANCE_CHUNKS,
+});
 const defines = Object.freeze({
   ...ATTACHMENT_DEFINES, ...enumDefines('SSS_OUTPUT', MATERIAL_OUTPUTS, 'diffuse'), ...enumDefines('SSS_LIGHT_TYPE', LIGHT_TYPES, 'spot'),
   ...TRANSMITTED_LIGHT_DEFINES, SSS_MAX_LIGHTS: MAX_LIGHTS,
@@ -102,6 +115,42 @@ function inject(source, needle, replacement) {
   return source.replace(needle, replacement);
 }
 
+/** Where our GLSL goes in: the shader stage, the point of three's shader, and what takes its place. */
+const INJECTIONS = Object.freeze([
+  ['fragmentShader', 'void main() {', () => `${declarations}\nvoid main() {`],
+  ['fragmentShader', '#include <lights_fragment_end>', () => `#include <lights_fragment_end>\n${transmittedLightGlsl}`],
+  ['fragmentShader', 'vec3 outgoingLight = totalDiffuse + totalSpecular + totalEmissiveRadiance;', () => splitGlsl],
+  ['fragmentShader', '#include <opaque_fragment>', () => `${clearcoatGlsl}\n#include <opaque_fragment>`],
+  ['fragmentShader', '#include <dithering_fragment>', () => `#include <dithering_fragment>\n${outputGlsl}`],
+  ['vertexShader', 'void main() {', () => `uniform bool sssHidden; // true in the scene split's first call\nvoid main() {\n${hiddenGlsl}`],
+]);
+
+/** The split, put into three's MeshStandard/MeshPhysical shader at INJECTIONS. */
+function splitShader(shader) {
+  for (const [stage, needle, replacement] of INJECTIONS) shader[stage] = inject(shader[stage], needle, replacement());
+}
+
+/**
+ * The material as three draws it, for the split's calls, whatever its own hook made of the shader:
+ * its main() renamed and called from ours, which writes the attachments 0 (a draw into the split
+ * call needs them: shaders/2-scene-split/material/unsplit.frag.glsl) and draws the material in the
+ * first call only (unsplit.vert.glsl).
+ */
+function unsplitShader(shader) {
+  shader.fragmentShader = `${outputsGlsl}\n#define main sssMaterialMain\n${shader.fragmentShader}\n${unsplitFragmentGlsl}`;
+  shader.vertexShader = `#define main sssMaterialMain\n${shader.vertexShader}\n${unsplitVertexGlsl}`;
+}
+
+/** A material as a message names it. */
+const labelOf = (material) => (material.name ? `material "${material.name}"` : `an unnamed ${material.type}`);
+
+/** The mark a subsurface material's userData carries, naming it (its uuid) for its copies. */
+export const COPY_MARK = 'three-separable-sss';
+
+/** uuid → the material it names, for every material made subsurface (a copy finds its source). */
+const byUuid = new Map();
+const forget = typeof FinalizationRegistry === 'function' ? new FinalizationRegistry((uuid) => { if (!byUuid.get(uuid)?.deref()) byUuid.delete(uuid); }) : null;
+
 /** Patches `material` once: its shader, its program cache key and a per-draw uniform refresh. */
 function patch(material) {
   const uniforms = {
@@ -118,50 +167,49 @@ function patch(material) {
   };
   const lightSlots = Array.from({ length: MAX_LIGHTS }, (_, i) => lightSlot(uniforms, i));
   const bindings = new Map();
-  const previous = {
-    onBeforeCompile: material.onBeforeCompile,
-    customProgramCacheKey: material.customProgramCacheKey,
-    onBeforeRender: material.onBeforeRender,
-  };
 
-  material.onBeforeCompile = function (shader, renderer) {
-    previous.onBeforeCompile.call(this, shader, renderer);
-    Object.assign(shader.uniforms, uniforms);
-    shader.defines = { ...shader.defines, ...defines, SSS_LIGHT_SLOTS: state.lightSlotsCompiled };
-    let fs = shader.fragmentShader;
-    fs = inject(fs, 'void main() {', `${declarations}\nvoid main() {`);
-    fs = inject(fs, '#include <lights_fragment_end>', `#include <lights_fragment_end>\n${transmittedLightGlsl}`);
-    fs = inject(fs, 'vec3 outgoingLight = totalDiffuse + totalSpecular + totalEmissiveRadiance;', splitGlsl);
-    fs = inject(fs, '#include <opaque_fragment>', `${clearcoatGlsl}\n#include <opaque_fragment>`);
-    fs = inject(fs, '#include <dithering_fragment>', `#include <dithering_fragment>\n${outputGlsl}`);
-    shader.fragmentShader = fs;
-    let vs = shader.vertexShader;
-    vs = inject(vs, 'void main() {', `uniform bool sssHidden; // true in the scene split's first call\nvoid main() {\n${hiddenGlsl}`);
-    shader.vertexShader = vs;
-  };
-
-  material.customProgramCacheKey = function () {
-    return `${previous.customProgramCacheKey.call(this)}|subsurface${state.lightSlotsCompiled}`;
-  };
-
-  // Per draw: what to write (the phase) and whose settings (the pipeline drawing, else the latest
-  // binding; none outside any pipeline: three's own output). Three uploads uniforms once per
-  // material per render call, which is all these change at.
-  material.onBeforeRender = function (renderer, scene, camera, geometry, object, group) {
-    previous.onBeforeRender.call(this, renderer, scene, camera, geometry, object, group);
-    const draw = currentDraw(renderer.getRenderTarget());
-    uniforms.sssSplit.value = draw.phase === DRAW_PHASES.SPLIT;
-    uniforms.sssHidden.value = draw.phase === DRAW_PHASES.HIDDEN;
-    uniforms.sssDiffuseCarriesDepth.value = draw.phase === DRAW_PHASES.SPLIT && diffuseCarriesDepth(draw.target);
-    const binding = draw.owner === null ? undefined : bindings.get(draw.owner) ?? latest(bindings);
-    if (binding) applyBinding(uniforms, lightSlots, binding, scene, camera);
-    else uniforms.sssTransmits.value = false;
-  };
+  const hooks = composeHooks(material, {
+    onBeforeCompile(shader, renderer, userHook) {
+      const before = { vertexShader: shader.vertexShader, fragmentShader: shader.fragmentShader };
+      userHook?.call(this, shader, renderer);
+      Object.assign(shader.uniforms, uniforms);
+      shader.defines = { ...shader.defines, ...defines, SSS_LIGHT_SLOTS: state.lightSlotsCompiled };
+      // A point three's shader has and the user's hook took out: drawn as three draws it (a point
+      // three's shader lacks is an unsupported three: inject throws).
+      const lost = INJECTIONS.find(([stage, needle]) => before[stage].includes(needle) && !shader[stage].includes(needle));
+      state.uncomposed = lost
+        ? `${labelOf(material)}: its onBeforeCompile takes "${lost[1]}" out of three's ${lost[0] === 'vertexShader' ? 'vertex' : 'fragment'} shader, where the subsurface split goes in, so it is drawn as three draws it, without scattering or transmittance`
+        : null;
+      if (lost) unsplitShader(shader);
+      else splitShader(shader);
+    },
+    programKey: () => `subsurface${state.lightSlotsCompiled}`,
+    // Per draw: what to write (the phase) and whose settings (the pipeline drawing, else the latest
+    // binding; none outside any pipeline: three's own output). Three uploads uniforms once per
+    // material per render call, which is all these change at.
+    onBeforeRender(renderer, scene, camera) {
+      const draw = currentDraw(renderer.getRenderTarget());
+      uniforms.sssSplit.value = draw.phase === DRAW_PHASES.SPLIT;
+      uniforms.sssHidden.value = draw.phase === DRAW_PHASES.HIDDEN;
+      uniforms.sssDiffuseCarriesDepth.value = draw.phase === DRAW_PHASES.SPLIT && diffuseCarriesDepth(draw.target);
+      const binding = draw.owner === null ? undefined : bindings.get(draw.owner) ?? latest(bindings);
+      if (binding) applyBinding(uniforms, lightSlots, binding, scene, camera);
+      else uniforms.sssTransmits.value = false;
+    },
+  });
+  // The mark its copies will carry (a copy made subsurface in turn is marked as itself, its
+  // source's mark put back when it is restored).
+  const mark = { had: Object.hasOwn(material.userData, COPY_MARK), value: material.userData[COPY_MARK] };
+  material.userData[COPY_MARK] = material.uuid;
+  byUuid.set(material.uuid, new WeakRef(material));
+  forget?.register(material, material.uuid);
 
   const state = {
     uniforms,
     lightSlots,
     bindings,
+    /** Why the material is drawn as three draws it (its own onBeforeCompile left out a point of ours), or null. */
+    uncomposed: null,
     /** The lights the program reads (1..MAX_LIGHTS): the most any binding has; one reads one map. */
     lightSlotsCompiled: 1,
     /** Recompiles (once) when the most lights a binding has changes. */
@@ -172,9 +220,9 @@ function patch(material) {
       material.needsUpdate = true;
     },
     restore() {
-      material.onBeforeCompile = previous.onBeforeCompile;
-      material.customProgramCacheKey = previous.customProgramCacheKey;
-      material.onBeforeRender = previous.onBeforeRender;
+      hooks.restore(); // the user's hooks as they are now
+      if (mark.had) material.userData[COPY_MARK] = mark.value;
+      else delete material.userData[COPY_MARK];
       patches.delete(material);
       // Release the material's compiled programs: three keeps them per material by cache key,
       // with the uniform objects of the last compile, so a later patch would find its key's old
@@ -221,6 +269,7 @@ function lightDepthsOf(lightDepth) {
  * @property {number} widthWorld world units per profile millimetre (width × widthScale)
  * @property {(options?: { widthMm?: number, widthScale?: number, worldUnitInMm?: number, transmittance?: object|null }) => void} update
  * @property {() => void} dispose unbinds these settings; the material is restored once none is left
+ * @property {((copy: import('three').Material) => void) | null} followCopy how the owner binds a copy of the material (null: with these options)
  */
 
 /**
@@ -267,6 +316,12 @@ export function makeSubsurface(material, options = {}, owner = STANDALONE) {
     _debugOutput: 'diffuse',
     /** The profile's slot in this pipeline's frame (its pipeline sets it; 0: one profile). */
     profileSlot: 0,
+    /**
+     * Binds a copy of the material for this binding's owner (followCopy), where the owner keeps
+     * its materials itself (a pipeline sets it); null: the same options are bound to the copy.
+     * @type {((copy: import('three').Material) => void) | null}
+     */
+    followCopy: null,
     /** What the diffuse attachment receives: one of MATERIAL_OUTPUTS ('diffuse' normally; the others for debug views). */
     set debugOutput(mode) {
       this._debugOutput = checkOneOf('debugOutput', mode, MATERIAL_OUTPUTS);
@@ -321,4 +376,48 @@ export function getSubsurface(material) {
  */
 export function subsurfaceBindingOf(material, owner) {
   return patches.get(material)?.bindings.get(owner);
+}
+
+/**
+ * Why `material`, made subsurface, is drawn as three draws it (its own onBeforeCompile took out a
+ * point the split goes in at), or null: found when three compiles it.
+ * @param {import('three').Material} material
+ * @returns {string|null}
+ */
+export function uncomposedReason(material) {
+  return patches.get(material)?.uncomposed ?? null;
+}
+
+/**
+ * Makes a copy of a subsurface material (material.clone(), .copy(): its userData carries COPY_MARK
+ * naming the material it was copied from) subsurface as that material is now: each of that
+ * material's bindings binds the copy too (through the binding's `followCopy` where its pipeline
+ * set one, so that the pipeline keeps it with its own; else with the same options).
+ * @param {import('three').Material} material
+ * @returns {{ follows: true } | { follows: false, reason: string } | null} null: nothing to follow
+ *   (not a copy, subsurface already, or its source is not subsurface now: then neither is the copy);
+ *   a reason where it cannot follow (its source unknown to this page: loaded from JSON, or gone; or a
+ *   kind of material makeSubsurface refuses)
+ */
+export function followCopy(material) {
+  const mark = material.userData?.[COPY_MARK];
+  if (typeof mark !== 'string' || patches.has(material)) return null;
+  const source = byUuid.get(mark)?.deref();
+  if (!source) {
+    return { follows: false, reason: `${labelOf(material)} carries the subsurface mark of a material this page never made subsurface (a scene loaded from JSON, or a material since collected), so it is drawn as three draws it: make it subsurface with makeSubsurface` };
+  }
+  const sourceState = patches.get(source);
+  if (source === material || !sourceState) return null;
+  if (material.isMeshStandardMaterial !== true || material.transmission > 0 || material.depthFunc !== LessEqualDepth) {
+    return { follows: false, reason: `${labelOf(material)} is a copy of the subsurface ${labelOf(source)} that makeSubsurface refuses (a ${material.type}${material.transmission > 0 ? ' with transmission' : ''}${material.depthFunc !== LessEqualDepth ? ' with another depthFunc' : ''}), so it is drawn as three draws it` };
+  }
+  for (const [owner, binding] of sourceState.bindings) {
+    if (binding.followCopy) {
+      binding.followCopy(material);
+    } else {
+      const copy = makeSubsurface(material, binding.options, owner);
+      Object.assign(copy, { debugOutput: binding.debugOutput, profileSlot: binding.profileSlot });
+    }
+  }
+  return { follows: true };
 }

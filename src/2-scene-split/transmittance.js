@@ -7,7 +7,7 @@
 import transmittanceGlsl from '../../shaders/2-scene-split/transmittance.glsl?raw';
 import profileLookupGlsl from '../../shaders/common/profileLookup.glsl?raw';
 import { assembleGlsl } from '../support/glsl.js';
-import { transmittanceSettings, transmittanceUniformSlots, writeTransmittanceUniforms } from './transmittanceModel.js';
+import { SHEET_DEFINES, transmittanceSettings, transmittanceUniformSlots, writeTransmittanceUniforms } from './transmittanceModel.js';
 import { LightDepthTarget } from '../1-light-depth/LightDepthTarget.js';
 
 export {
@@ -15,9 +15,9 @@ export {
   isShining, lightFromBehind, lightReachesFromBehind, lightUniformSlots, updateLightUniforms, writeTransmittedLight,
 } from './transmittanceModel.js';
 
-/** The chunks shaders/2-scene-split/transmittance.glsl includes, by path. */
+/** The chunks shaders/2-scene-split/transmittance.glsl includes, by path (with the sheet's constants before it). */
 export const TRANSMITTANCE_CHUNKS = Object.freeze({
-  '2-scene-split/transmittance.glsl': transmittanceGlsl,
+  '2-scene-split/transmittance.glsl': `${SHEET_DEFINES}\n${transmittanceGlsl}`,
   'common/profileLookup.glsl': profileLookupGlsl,
 });
 

@@ -8,6 +8,7 @@ import { Matrix4, Vector3 } from 'three';
 import { LightDepthView } from '../1-light-depth/LightDepthView.js';
 import { ProfileLookup } from '../profiles/ProfileLookup.js';
 import { describe } from '../support/rendererSupport.js';
+import { glslFloat } from '../support/glsl.js';
 import { classNameOf } from '../support/className.js';
 import { nearestViewDepth } from '../framePlan.js';
 import { MATERIAL_DEFAULTS, MATERIAL_SCHEMA, PIPELINE_SCHEMA, checkOption } from '../options.js';
@@ -25,6 +26,18 @@ export const TRANSMITTED_LIGHT = Object.freeze({ WRAP_OFFSET: 0.3, FROM_BEHIND_R
 export const TRANSMITTED_LIGHT_DEFINES = Object.freeze(Object.fromEntries(
   Object.entries(TRANSMITTED_LIGHT).map(([name, value]) => [`SSS_${name}`, value.toFixed(6)]),
 ));
+
+/**
+ * A sheet, a surface of no thickness (transmittance.glsl's sssTransmittanceAround): a texel on the
+ * far side of a point records the point's own surface where its depth lies within TEXELS of a
+ * texel's width of the plane of the point's triangle (exact on that triangle: the map holds each
+ * texel centre's depth; the tolerance is for a curved sheet's next triangle, over the texel and a
+ * half read: faces up to about 2° apart). A closed part thinner than that reads as a sheet.
+ */
+export const SHEET = Object.freeze({ TEXELS: 0.05 });
+
+/** SHEET as GLSL define lines (SSS_SHEET_TEXELS, ...), for the chunk that reads them. */
+export const SHEET_DEFINES = Object.entries(SHEET).map(([name, value]) => `#define SSS_SHEET_${name} ${glslFloat(value)}`).join('\n');
 
 /** The kinds of light transmittance is shaded with (a uniform: its index). */
 export const LIGHT_TYPES = Object.freeze(['directional', 'spot', 'point']);

@@ -8,7 +8,7 @@ import {
   kernelEdgeResponse1D,
   roundToHalfFloat,
 } from '../oracle/convolution.js';
-import { transmittanceOracle, thicknessFromLightDepth } from '../oracle/transmittance.js';
+import { transmittanceOracle, thicknessFromLightDepth, transmittedFractionOracle } from '../oracle/transmittance.js';
 import { computeKernel } from '../../src/profiles/kernel.js';
 import { profiles } from '../../src/profiles/presets.js';
 import { gaussianSumProfile } from '../../src/profiles/gaussianSum.js';
@@ -397,6 +397,45 @@ describe('transmittance oracle', () => {
       mapDepth: () => 9,
     });
     expect(outside).toBe(Infinity);
+  });
+
+  it('a surface of no thickness (a sheet): its far side reads thickness 0 at every angle and lets T(0) = 1 through; its lit side is a lit surface', () => {
+    // The sheet z = 0; a directional light behind it (−z), turned by `a` about y; the camera in front (+z).
+    const shrinkWorld = 0.06;
+    const texelWorld = 0.02;
+    for (const degrees of [0, 30, 60, 80, 89]) {
+      const a = (degrees * Math.PI) / 180;
+      const toLight = [Math.sin(a), 0, -Math.cos(a)];
+      const view = mat4.lookAt(new Float64Array(16), toLight.map((v) => 10 * v), [0, 0, 0], [0, 1, 0]);
+      // The sheet's depth along the light's ray through a light-view position (the map, exactly).
+      const sheetDepth = (position) => {
+        const world = vec3.transformMat4(new Float64Array(3), position, mat4.invert(new Float64Array(16), view));
+        const onSheet = vec3.scaleAndAdd(new Float64Array(3), world, toLight, -world[2] / toLight[2]);
+        return -vec3.transformMat4(new Float64Array(3), onSheet, view)[2];
+      };
+      const point = [0.3, -0.2, 0];
+      const depth = -vec3.transformMat4(new Float64Array(3), point, view)[2];
+      const far = (mapDepth) => thicknessFromLightDepth({ lightViewMatrix: view, pointWorld: point, normalWorld: [0, 0, 1], shrinkWorld, toLightWorld: toLight, texelWorld, mapDepth });
+      expect(far(sheetDepth), `${degrees}°`).toBe(0);
+      // A curved sheet's next triangle up to a twentieth of a texel's width off the plane is still the
+      // sheet; past it, behind the point: nothing; in front: material, thickness measured from the point.
+      expect(far((p) => sheetDepth(p) + 0.049 * texelWorld)).toBe(0);
+      expect(far((p) => sheetDepth(p) + 0.051 * texelWorld)).toBe(Infinity);
+      const inFront = far((p) => sheetDepth(p) - 0.051 * texelWorld);
+      const stored = sheetDepth(vec3.transformMat4(new Float64Array(3), vec3.scaleAndAdd(new Float64Array(3), point, [0, 0, 1], -shrinkWorld), view)) - 0.051 * texelWorld;
+      if (depth - stored > 0) expect(inFront).toBeCloseTo(depth - stored, 12);
+      else expect(inFront).toBe(Infinity);
+      // Seen from the lit side the shrink reads the sheet shrink · (1/cos a − cos a) in front: a lit surface.
+      const c = Math.cos(a);
+      const lit = thicknessFromLightDepth({ lightViewMatrix: view, pointWorld: point, normalWorld: [0, 0, -1], shrinkWorld, toLightWorld: toLight, texelWorld, mapDepth: sheetDepth });
+      if (degrees === 0) expect(lit === Infinity || lit < 1e-12).toBe(true);
+      else expect(lit).toBeCloseTo(shrinkWorld * (1 / c - c), 9);
+    }
+    // Through no thickness every profile lets all of it through, unfaded on the far side; the lit side's fade takes it all.
+    for (const profile of ['skin', 'skinBurley', 'marble', 'milk']) {
+      transmittedFractionOracle({ thicknessMm: 0, profile, shrinkMm: 0.6, farSide: true }).forEach((v) => expect(v).toBeCloseTo(1, 9));
+      expect(transmittedFractionOracle({ thicknessMm: 0, profile, shrinkMm: 0.6 })).toEqual([0, 0, 0]);
+    }
   });
 });
 

@@ -12,6 +12,7 @@ import { ATTACHMENTS } from '/src/2-scene-split/subsurfaceTarget.js';
 import { readRenderTargetFloats } from '/dev/readback.js';
 import { mulberry32 as random } from '/demo/seededRandom.js';
 import { dataTexture, flatScene } from './flatScene.js';
+import { leafScenes } from './leaves.js';
 
 /** A renderer drawing into an offscreen canvas of `width` × `height` device pixels. */
 function createRenderer(width, height, parameters = {}) {
@@ -138,14 +139,22 @@ const SCENES = {
    * `occluder`, a sheet between the light and the slab's upper right quarter (as the camera sees
    * it) adds `occluderGapMm` to the thickness the light crosses there: a picture that is not
    * symmetric, so a flipped light depth map shows. `fog`: [near, far] of a THREE.Fog; `spot`: a
-   * SpotLight in place of the DirectionalLight (below).
+   * SpotLight in place of the DirectionalLight (below). `sheet`: a plane of no thickness in place of
+   * the slab (below).
    */
   backlit(o) {
     const scene = new THREE.Scene();
     const camera = camera16x9(o.aspect, o.fovY, o.distance);
     const material = new THREE.MeshStandardMaterial({ color: 0xffffff, roughness: 1, metalness: 0 });
-    const thickness = o.thicknessMm / o.worldUnitInMm;
-    const slab = new THREE.Mesh(new THREE.BoxGeometry(o.slabSize, o.slabSize, thickness), material);
+    const thickness = o.sheet ? 0 : o.thicknessMm / o.worldUnitInMm;
+    const slab = new THREE.Mesh(o.sheet ? new THREE.PlaneGeometry(o.slabSize, o.slabSize) : new THREE.BoxGeometry(o.slabSize, o.slabSize, thickness), material);
+    if (o.sheet) {
+      // A leaf: one plane, both sides drawn, its front face to the light (the camera sees its back
+      // face), its upper right quarter (as the camera sees it) cut away by an alpha test.
+      slab.rotation.y = Math.PI;
+      const alphaMap = dataTexture(2, 2, (x, y) => (x === 0 && y === 1 ? [0, 0, 0] : [1, 1, 1]));
+      Object.assign(material, { side: THREE.DoubleSide, alphaMap, alphaTest: 0.5 });
+    }
     scene.add(slab);
     if (o.fog) scene.fog = new THREE.Fog(0x3366cc, ...o.fog); // [near, far], world units
     if (o.occluder) {
@@ -386,4 +395,5 @@ window.lab = {
   THREE, SSS, EffectComposer, RenderPass, ShaderPass, OutputPass, createRenderer, createComposer, read, dataTexture, run, buildScene, flat, disposeFlatRig, flatScene, DEFAULTS,
   lightDepthCards, cardDepths, cardCosines,
 };
+Object.assign(window.lab, leafScenes(window.lab));
 window.testReady = true;

@@ -3,7 +3,7 @@
 // (`backend: 'webgl'`, forceWebGL), on the scenes the WebGL path's tests use, read back as floats.
 // Nothing here is part of the library.
 import * as THREE from 'three/webgpu';
-import { pass } from 'three/tsl';
+import { cos, pass, positionLocal, uniform, vec3 } from 'three/tsl';
 import * as NODE from '/src/webgpu/index.js';
 import { flatScene } from './flatScene.js';
 import { HEAD_WORLD_UNIT_IN_MM, setLightDirection } from '/demo/headScene.js';
@@ -620,8 +620,54 @@ async function sameFrame({ backend = 'webgpu', width = 96, height = 54 }) {
   return { blurred, onAgain, unblurred };
 }
 
+/**
+ * The lab's two leaves (test/pages/leaves.js, straight behind a directional light) as node
+ * materials bent by a position node of their own (the node's counterpart of a user's vertex hook:
+ * the right one a clone of the left, tinted 0.5), at a `time` uniform set after the first frame;
+ * and the same bends made in the geometry: the diffuse attachment of each.
+ */
+async function swayingLeaves({ backend = 'webgpu', width = 96, height = 54, time = 1.3 }) {
+  const renderer = await sharedRenderer(backend, width, height);
+  const { leafScene, leaf, white } = window.lab;
+  const clock = uniform(0);
+  const sway = (x) => 0.25 * Math.cos(1.7 * time + 2 * x);
+  const left = NODE.subsurfaceMaterial(white(), { widthMm: 1 });
+  left.positionNode = positionLocal.add(vec3(0, 0, cos(clock.mul(1.7).add(positionLocal.x.mul(2))).mul(0.25)));
+  const right = left.clone();
+  right.color.setScalar(0.5);
+  const hooked = leafScene(leaf(left, -1.1, 0), leaf(right, 1.1, 0));
+  const bent = (x, color) => {
+    // Fitted into the light's view as the hooked leaves are (their unbent bounding sphere: a
+    // position node may move them anywhere), through a position node that moves nothing.
+    const mesh = leaf(NODE.subsurfaceMaterial(white({ color: new THREE.Color().setScalar(color) }), { widthMm: 1 }), x, 0);
+    mesh.material.positionNode = positionLocal;
+    mesh.geometry.computeBoundingSphere();
+    const position = mesh.geometry.attributes.position;
+    for (let i = 0; i < position.count; i++) position.setZ(i, position.getZ(i) + sway(position.getX(i)));
+    mesh.geometry.computeBoundingBox();
+    return mesh;
+  };
+  const truth = leafScene(bent(-1.1, 1), bent(1.1, 0.5));
+  const diffuseOf = async (built, frames) => {
+    const { scenePass, node, pipeline } = subsurfacePipeline(renderer, built.scene, built.camera, { type: THREE.FloatType, sss: { worldUnitInMm: 10, light: built.light } });
+    for (let k = 0; k < frames; k++) {
+      await new Promise((resolve) => { requestAnimationFrame(() => resolve()); }); // a frame each: the scene pass and the light stage run once a frame
+      pipeline.render();
+      clock.value = time; // after the first frame, as an app's clock moves
+    }
+    const diffuse = await readFloats(renderer, scenePass.renderTarget, 'diffuse');
+    node.dispose();
+    pipeline.dispose();
+    scenePass.dispose();
+    return diffuse;
+  };
+  const result = { width, height, hooked: await diffuseOf(hooked, 2), truth: await diffuseOf(truth, 1) };
+  for (const built of [hooked, truth]) built.scene.traverse((object) => object.material?.dispose());
+  return result;
+}
+
 window.wgpu = {
   THREE, NODE, pass, createRenderer, readFloats, subsurfacePipeline, flat, disposeFlatRig, head, disposal, plainDraw, debugViews, labScene, labScenePlain, lightDepthCards,
-  dollyOpen, dollyFrames, dollyClose, lightAssigned, lightKeyOrder, sameFrame, nearLight, arrayCamera,
+  dollyOpen, dollyFrames, dollyClose, lightAssigned, lightKeyOrder, sameFrame, nearLight, arrayCamera, swayingLeaves,
 };
 window.testReady = true;

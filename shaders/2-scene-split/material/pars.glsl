@@ -2,8 +2,7 @@
 // Location 0 keeps three's pc_fragColor: the colour attachment (specular + emissive while split,
 // full colour otherwise). The locations and what each channel holds come from the multi-target's
 // contract (src/2-scene-split/subsurfaceTarget.js), as defines.
-layout( location = SSS_DIFFUSE_LOCATION ) out highp vec4 sssDiffuseOutput; // diffuse light (+ transmittance); a: 1 (the mask) or the depth (sssDiffuseCarriesDepth)
-layout( location = SSS_SURFACE_LOCATION ) out highp vec4 sssSurfaceOutput; // r: linear view depth, g: world units per profile mm, b: profile slot
+#include "2-scene-split/material/outputs.glsl"
 
 uniform bool sssSplit;       // true only while drawn into the multi-target's split call
 uniform float sssWidthWorld; // widthMm / worldUnitInMm: world units per profile millimetre
@@ -45,7 +44,7 @@ uniform bool sssLightCubes[ SSS_MAX_LIGHTS ];           // the map is a point li
 // Light from the camera's side reaches what the camera sees through its lit, visible
 // neighbourhood, which the blur already spreads: counted again it made a bright band along a
 // front light's terminator. The map is read only where some light comes through.
-vec3 sssTransmittedFrom( const in int i, sampler2D lightDepthMap, const in vec3 position, const in vec3 normal ) {
+vec3 sssTransmittedFrom( const in int i, sampler2D lightDepthMap, const in vec3 position, const in vec3 normal, const in vec3 face ) {
 	if ( ! sssLightTransmits[ i ] ) return vec3( 0.0 );
 	vec3 toLight = sssLightDirectionsView[ i ];
 	float attenuation = 1.0;
@@ -60,7 +59,7 @@ vec3 sssTransmittedFrom( const in int i, sampler2D lightDepthMap, const in vec3 
 	float weight = attenuation * wrap;
 	if ( weight <= 0.0 ) return vec3( 0.0 );
 	vec3 through = sssLightCubes[ i ]
-		? sssPointTransmittanceFrom( lightDepthMap, sssViewToLightViews[ i ], position, normal )
-		: sssTransmittanceFrom( lightDepthMap, sssViewToLightViews[ i ], sssLightProjections[ i ], position, normal );
+		? sssPointTransmittanceFrom( lightDepthMap, sssViewToLightViews[ i ], position, normal, face )
+		: sssTransmittanceOfFace( lightDepthMap, sssViewToLightViews[ i ], sssLightProjections[ i ], position, normal, face );
 	return sssLightColors[ i ] * weight * through;
 }

@@ -31,6 +31,12 @@ const LIGHT_DEPTH_ORTHOGRAPHIC = /*@__PURE__*/ lightDepthOutput(vec3(0, 0, 1)); 
 /** The output for the light's camera. */
 const lightDepthOf = (camera) => (camera.isOrthographicCamera ? LIGHT_DEPTH_ORTHOGRAPHIC : LIGHT_DEPTH_PERSPECTIVE);
 
+/**
+ * A node material's own vertex position for the light, as three's shadow maps take it
+ * (castShadowPositionNode, else positionNode), or null.
+ */
+const positionNodeOf = (material) => [material.castShadowPositionNode, material.positionNode].find((node) => node?.isNode === true) ?? null;
+
 /** A depth material's settings: both sides (thin open shells still record their nearest surface), no fog (it would blend the depths). */
 const asDepthMaterial = (material, name) => Object.assign(material, { name, side: DoubleSide, fog: false });
 
@@ -95,9 +101,19 @@ export class LightDepthNodeTarget extends LightDepthView {
     return shaped;
   }
 
-  /** The opacity the alpha test compares with the map's alpha. */
+  /** A material that places its vertices with a node of its own (positionNodeOf): the light's depth material takes it. */
+  hasOwnVertexStage(material) {
+    return positionNodeOf(material) !== null;
+  }
+
+  /** The opacity the alpha test compares with the map's alpha; the material's own position node. */
   updateShapedMaterial(shaped, material) {
     shaped.opacity = material.opacity;
+    const position = positionNodeOf(material);
+    if (shaped.positionNode !== position) {
+      shaped.positionNode = position;
+      shaped.needsUpdate = true;
+    }
   }
 }
 

@@ -191,3 +191,46 @@ describe.skipIf(!scanAvailable)('demo controls (on the head scan; needs npm run 
     expect(boxMean(img, img.at.face, 3, 0)).toBeGreaterThan(0.05);
   });
 });
+
+describe('the foliage preset (#preset=foliage)', () => {
+  it('the leaves glow lit from behind, sway in the wind of their onBeforeCompile, and keep their glow where they sway', async () => {
+    const page = await demo('preset=foliage');
+    // The transmittance view and the surface at two moments of the wind (the leaves: profile mm of
+    // 0.25 mm, 0.005 world units, in the surface's g; the head's is 0.02).
+    const at = (seconds) => evaluateFloats(page, async (t) => {
+      const d = window.demo;
+      d.foliage.setTime(t);
+      d.set('view', 'transmittance');
+      const image = await d.readHdr();
+      return { ...image, surface: await d.readSurface(), problems: [...d.sss.problems] };
+    }, seconds);
+    const measure = (r) => {
+      const leaf = new Uint8Array(r.width * r.height);
+      let n = 0;
+      let glowing = 0;
+      const sum = [0, 0, 0];
+      for (let i = 0; i < leaf.length; i++) {
+        if (Math.abs(r.surface[i * 4 + 1] / 0.005 - 1) > 0.02) continue; // interior leaf pixels (MSAA: full coverage)
+        leaf[i] = 1;
+        n++;
+        for (let c = 0; c < 3; c++) sum[c] += r.data[i * 4 + c];
+        if (r.data[i * 4 + 1] > 0.02) glowing++;
+      }
+      return { leaf, n, mean: sum.map((s) => s / n), glowing: glowing / n };
+    };
+    const still = measure(await at(0));
+    const swayed = measure(await at(0.9));
+    expect(still.n, 'leaf pixels').toBeGreaterThan(2000);
+    // It glows, green: the leaf's colour through no thickness.
+    expect(still.mean[1], 'mean transmitted green').toBeGreaterThan(0.1);
+    expect(still.mean[1]).toBeGreaterThan(2 * still.mean[0]);
+    expect(still.glowing, 'share of the leaf glowing').toBeGreaterThan(0.9);
+    // It sways: the leaves cover other pixels.
+    let moved = 0;
+    for (let i = 0; i < still.leaf.length; i++) if (still.leaf[i] !== swayed.leaf[i]) moved++;
+    expect(moved, 'pixels the leaves left or reached').toBeGreaterThan(200);
+    // It keeps its glow where it sways: the light's map follows the hook.
+    expect(swayed.glowing, 'share of the swayed leaf glowing').toBeGreaterThan(0.9);
+    expect(swayed.mean[1] / still.mean[1]).toBeGreaterThan(0.8);
+  });
+});

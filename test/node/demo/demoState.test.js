@@ -60,6 +60,7 @@ describe('demo URL state', () => {
       expect({ ...defaultState(), ...values }).toEqual(state);
     }
     expect(presetState('earLight')).toMatchObject({ pointLight: true, preset: 'earLight' });
-    expect(parseHash('#preset=nose').problems).toEqual(['Ignored preset=nose: it must be one of earLight.']);
+    expect(presetState('foliage')).toMatchObject({ foliage: true, preset: 'foliage' });
+    expect(parseHash('#preset=nose').problems).toEqual(['Ignored preset=nose: it must be one of earLight, foliage.']);
   });
 });
