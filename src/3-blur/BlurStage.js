@@ -63,8 +63,7 @@ export class BlurStage {
     this.profileLookup = profileLookup;
     /** The profiles' tables by slot; the first one's kernel is the fixed-tap methods'. */
     this.profileLookups = [profileLookup];
-    /** false turns the blur off (the orchestrator's `scattering`). */
-    this.scattering = true;
+    this._scattering = true;
     this._settings = { profile: profileLookup.profile, method: checkOption(PIPELINE_SCHEMA, 'method', method), samples, strength, falloff };
     this._kernels = new WeakMap(); // profile → computed kernels by their arguments: 'auto' switches between a few
     this._surface = surface;
@@ -150,6 +149,23 @@ export class BlurStage {
   /** The most groups a frame may take: MAX_KERNEL_GROUPS when the method and setting group, else 1 (one kernel). */
   get groupCapacity() {
     return METHOD_TABLE[this.method].blur === 'footprint' && this._kernelGroups !== 1 ? MAX_KERNEL_GROUPS : 1;
+  }
+
+  /**
+   * false turns the blur off (the orchestrator's `scattering`) and releases its targets (the
+   * horizontal pass's, the scattered light's, the groups'), which no frame reads until it is on
+   * again: three allocates them again on their next use, cleared as the scissor's first frame.
+   * @type {boolean}
+   */
+  get scattering() { return this._scattering; }
+
+  set scattering(on) {
+    this._scattering = on;
+    if (on) return;
+    this._blurTarget.dispose();
+    this.scatteredTarget.dispose();
+    if (this._groupTarget) this._freeGroupTarget();
+    this._scissorKey = null;
   }
 
   /**
