@@ -455,7 +455,8 @@ export class SubsurfaceScattering extends PassWithSettings {
    * ```
    * @param {import('three').WebGLRenderer} renderer
    * @param {import('three').WebGLRenderTarget|null} [readBuffer=null] what render() is given to
-   *   draw into (the composer's read buffer; `multisampling: 'auto'` follows its `samples`)
+   *   draw into (the composer's read buffer; `multisampling: 'auto'` follows its `samples`); null
+   *   where it is not at hand (renderer.setEffects): any target compiles the same programs
    * @returns {Promise<void>} resolved once every program is ready to draw with
    */
   compileAsync(renderer, readBuffer = null) {
@@ -468,7 +469,8 @@ export class SubsurfaceScattering extends PassWithSettings {
     const msaaSamples = this.multisampling === 'auto' ? (readBuffer?.samples ?? 0) : this.multisampling;
     if (this._scenePass.setSamples(msaaSamples)) this._blur.setMultisampled(msaaSamples > 0);
     this._composePass.setClear(this.clear, this.clearDepth);
-    const target = this.renderToScreen ? null : readBuffer;
+    // three keys a program by whether it draws to the screen, not by which target: any stands in.
+    const target = this.renderToScreen ? null : readBuffer ?? this._blur.scatteredTarget;
     return Promise.all([
       compileSceneInto(renderer, scene, camera, this._scenePass.renderTarget), // the split
       compileSceneInto(renderer, scene, camera, target), // a plain frame; the transparent objects

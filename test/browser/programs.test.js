@@ -89,7 +89,7 @@ describe('shader programs', () => {
  * `aways` times as far (fewer taps, 'auto' groups fewer); the slab off the screen (three's plain frame).
  * Returns the programs' cache keys after each step.
  */
-async function warmedPrograms({ settings, samples = 0, counts = [], aways = [2, 4, 8, 12, 16], withLight = false, threeOnly = false }) {
+async function warmedPrograms({ settings, samples = 0, counts = [], aways = [2, 4, 8, 12, 16], withLight = false, threeOnly = false, noReadBuffer = false }) {
   const { THREE, SSS, createRenderer, createComposer, buildScene, DEFAULTS } = window.lab;
   const keys = (renderer) => renderer.info.programs.map((p) => p.cacheKey);
   const renderer = createRenderer(DEFAULTS.width, DEFAULTS.height);
@@ -109,7 +109,7 @@ async function warmedPrograms({ settings, samples = 0, counts = [], aways = [2, 
   Object.assign(sss, settings);
   composer.addPass(sss);
   if (threeOnly) await renderer.compileAsync(scene, camera);
-  else await sss.compileAsync(renderer, composer.readBuffer);
+  else await sss.compileAsync(renderer, noReadBuffer ? undefined : composer.readBuffer);
   const warmed = keys(renderer);
   composer.render();
   const first = keys(renderer);
@@ -152,6 +152,7 @@ describe('warm-up (compileAsync)', () => {
     ['a light behind the slab (its depth pass)', {}, { withLight: true }],
     ["kernelGroups 'auto' (then each count it may switch to)", { kernelGroups: 'auto' }, { counts: [1, 2, 3, 4] }],
     ["method 'reference', debugView 'diffuse'", { method: 'reference', debugView: 'diffuse' }, {}],
+    ['no read buffer given (renderer.setEffects has none at hand)', {}, { noReadBuffer: true }],
   ];
   const added = (after, before) => after.filter((key) => !before.includes(key)).map((key) => key.slice(0, 60));
   for (const [label, settings, options] of cases) {
@@ -170,6 +171,21 @@ describe('warm-up (compileAsync)', () => {
       expect(added(r.plain, r.warmed), 'the plain frame compiled these').toEqual([]);
     });
   }
+
+  it('refuses what is not a WebGLRenderer, and a readBuffer that is not a render target, by name', async () => {
+    const messages = await page.evaluate(() => {
+      const { THREE, SSS } = window.lab;
+      const sss = new SSS.SubsurfaceScattering({ scene: new THREE.Scene(), camera: new THREE.PerspectiveCamera() });
+      const renderer = new THREE.WebGLRenderer();
+      const refused = (...args) => { try { sss.compileAsync(...args); return null; } catch (error) { return `${error.name}: ${error.message}`; } };
+      const result = [refused({}), refused(renderer, new THREE.Texture())];
+      sss.dispose();
+      renderer.dispose();
+      return result;
+    });
+    expect(messages[0]).toMatch(/^TypeError: SubsurfaceScattering\.compileAsync: renderer must be a THREE\.WebGLRenderer/);
+    expect(messages[1]).toMatch(/^TypeError: SubsurfaceScattering\.compileAsync: readBuffer must be a THREE\.WebGLRenderTarget or null, got /);
+  });
 
   it("three's renderer.compileAsync(scene, camera) alone leaves the pipeline's passes (and the split's target) to the first frame", async () => {
     const r = await page.evaluate(warmedPrograms, { settings: {}, threeOnly: true });
