@@ -59,10 +59,11 @@ describe('pass conventions', () => {
 
   it('scattering = false releases the blur\'s targets (2 textures); back on, they come back and the frame is as before', async () => {
     const r = await page.evaluate(async () => {
-      const { THREE, SSS, createRenderer, createComposer, read } = window.lab;
+      const { THREE, SSS, createRenderer, createComposer, read, dataTexture } = window.lab;
       const renderer = createRenderer(64, 36);
       const scene = new THREE.Scene();
-      const material = new THREE.MeshStandardMaterial({ color: 0xffccaa });
+      const checker = dataTexture(8, 8, (x, y) => ((x + y) % 2 ? [1, 1, 1] : [0.05, 0.05, 0.05])); // what the blur softens
+      const material = new THREE.MeshStandardMaterial({ color: 0xffccaa, map: checker });
       const disc = new THREE.Mesh(new THREE.CircleGeometry(1, 32), material);
       scene.add(disc, new THREE.AmbientLight(0xffffff, 1));
       const camera = new THREE.PerspectiveCamera(30, 16 / 9, 0.1, 50);
@@ -81,6 +82,7 @@ describe('pass conventions', () => {
       sss.dispose();
       composer.dispose();
       renderer.dispose();
+      checker.dispose();
       let most = 0;
       for (let i = 0; i < on.pixels.length; i++) most = Math.max(most, Math.abs(on.pixels[i] - again.pixels[i]));
       let changed = 0;
