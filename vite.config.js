@@ -19,6 +19,12 @@ const threeAliases = threeDir ? [
   { find: /^three\/addons\/(.*)$/, replacement: `${threeDir}/examples/jsm/$1` },
 ] : [];
 
+// The WebGPU bench's before and after (bench/webgpu/run.js --base): SSS_BASE_DIR names another
+// checkout whose library the bench page imports as three-separable-sss-base (without it, this
+// checkout's), its three and gl-matrix resolved to this checkout's.
+const baseDir = process.env.SSS_BASE_DIR;
+const baseSrc = baseDir ? `${baseDir}/src/` : `${root}src/`;
+
 export default defineConfig(({ mode }) => {
   if (mode === 'lib') {
     return {
@@ -68,7 +74,10 @@ export default defineConfig(({ mode }) => {
         { find: /^three-separable-sss\/postprocessing$/, replacement: `${root}src/integrations/postprocessing.js` },
         { find: /^three-separable-sss\/react$/, replacement: `${root}src/integrations/react.js` },
         { find: /^three-separable-sss\/webgpu$/, replacement: `${root}src/webgpu/index.js` },
+        { find: /^three-separable-sss-base$/, replacement: `${baseSrc}index.js` },
+        { find: /^three-separable-sss-base\/webgpu$/, replacement: `${baseSrc}webgpu/index.js` },
       ],
+      dedupe: baseDir ? ['three', 'gl-matrix'] : [],
     },
     // Not pre-bundled with another three: the pre-bundled dependencies import the aliased one.
     // three/webgpu and three/tsl (the WebGPU pages) pre-bundled from the start: found later, they
@@ -84,6 +93,7 @@ export default defineConfig(({ mode }) => {
     },
     server: {
       host: '127.0.0.1',
+      ...(baseDir ? { fs: { allow: [root, baseDir] } } : {}),
     },
   };
 });

@@ -296,31 +296,46 @@ function beyondDenseSection({ transfer, surfaceTruth } = {}) {
   return parts.join('\n');
 }
 
+/** The heading bench/webgpu/run.js finds its section by in docs/BENCH.md. */
+export const WEBGPU_HEADING = '## The WebGPURenderer node';
+
 /**
  * The WebGPURenderer node beside the composer path (bench/webgpu/run.js's results): each frame's
- * median and the node over each backend's plain WebGPURenderer frame, from the same rounds.
+ * median and each subsurface frame over the same renderer's plain frame, from the same rounds.
  * @param {object|null} webgpu bench/results/webgpu.json
  */
-function webgpuSection(webgpu) {
+export function webgpuSection(webgpu) {
   if (!webgpu?.medianMs) return '';
   const m = webgpu.medianMs;
+  // [label, median, the same renderer's plain frame (null: a plain frame itself)]; rows a run left out are left out.
   const rows = [
-    ['three.js `WebGLRenderer` + `EffectComposer`, the pipeline (`SubsurfaceScattering`)', m.composer, null],
+    ['three.js `WebGLRenderer` + `EffectComposer`, plain (`RenderPass`, `OutputPass`)', m.composerPlain, null],
+    ['the same, the pipeline (`SubsurfaceScattering`) in place of `RenderPass`', m.composer, m.composerPlain],
     ['`WebGPURenderer` on WebGPU, plain (`pass(scene, camera)` alone)', m.webgpuPlain, null],
-    ['`WebGPURenderer` on WebGPU, the node (`subsurfaceScattering(scenePass)`)', m.webgpuNode, m.webgpuNode / m.webgpuPlain],
+    ['`WebGPURenderer` on WebGPU, the node (`subsurfaceScattering(scenePass)`)', m.webgpuNode, m.webgpuPlain],
     ['`WebGPURenderer` on its WebGL 2 backend (`forceWebGL`), plain', m.webglPlain, null],
-    ['`WebGPURenderer` on its WebGL 2 backend, the node', m.webglNode, m.webglNode / m.webglPlain],
-  ];
+    ['`WebGPURenderer` on its WebGL 2 backend, the node', m.webglNode, m.webglPlain],
+    ['WebGPU, plain, the camera turned to the head\'s side (nothing subsurface on the screen)', m.webgpuPlainAway, null],
+    ['WebGPU, the node, the same view', m.webgpuNodeAway, m.webgpuPlainAway],
+    ['WebGL 2 backend, plain, the same view', m.webglPlainAway, null],
+    ['WebGL 2 backend, the node, the same view', m.webglNodeAway, m.webglPlainAway],
+    // With a base (run.js --base): its library's subsurface frames in the same rounds, over the same plain frames.
+    ['before: the pipeline', m.composerBase, m.composerPlain],
+    ['before: the node on WebGPU', m.webgpuNodeBase, m.webgpuPlain],
+    ['before: the node on the WebGL 2 backend', m.webglNodeBase, m.webglPlain],
+    ['before: the node on WebGPU, the camera turned', m.webgpuNodeAwayBase, m.webgpuPlainAway],
+    ['before: the node on the WebGL 2 backend, the camera turned', m.webglNodeAwayBase, m.webglPlainAway],
+  ].filter(([, t, plain]) => t !== undefined && plain !== undefined);
   // The isotropic blur (kernelGroups 'auto') on each path, against the same path with one kernel.
   const isotropic = m.composerIsotropic === undefined ? [] : [
     ['the pipeline with `kernelGroups: \'auto\'`', m.composerIsotropic, m.composerIsotropic / m.composer],
     ['the node on WebGPU with `kernelGroups: \'auto\'`', m.webgpuNodeIsotropic, m.webgpuNodeIsotropic / m.webgpuNode],
     ['the node on the WebGL 2 backend with `kernelGroups: \'auto\'`', m.webglNodeIsotropic, m.webglNodeIsotropic / m.webglNode],
   ];
-  return [`## The WebGPURenderer node (\`npm run bench:webgpu\`, ${webgpu.date.slice(0, 10)})`, '',
-    `The head at ${webgpu.width}×${webgpu.height} with the module's defaults, each frame closed by a read-back, in ${webgpu.rounds} interleaved rounds of ${webgpu.frames} frames (bench/webgpu/page.js), on SwiftShader (WebGPU on its Vulkan, WebGL 2 on ANGLE): wall times of software rendering, to compare as ratios within the run only.`, '',
-    '| frame | median ms | the node over its backend\'s plain frame |', '|---|---|---|',
-    ...rows.map(([name, t, r]) => `| ${name} | ${t.toFixed(0)} | ${r === null ? '—' : `×${r.toFixed(2)}`} |`),
+  return [`${WEBGPU_HEADING} (\`npm run bench:webgpu\`, ${webgpu.date.slice(0, 10)})`, '',
+    `The head at ${webgpu.width}×${webgpu.height} with the module's defaults, each frame closed by a read-back, in ${webgpu.rounds} interleaved rounds of ${webgpu.frames} frames (bench/webgpu/page.js), on SwiftShader (WebGPU on its Vulkan, WebGL 2 on ANGLE): wall times of software rendering, to compare as ratios within the run only.${webgpu.baseName ? ` After: ${webgpu.commit}; before: ${webgpu.baseName}, its library beside this one's in the same rounds.` : ''}`, '',
+    '| frame | median ms | over the same renderer\'s plain frame |', '|---|---|---|',
+    ...rows.map(([name, t, plain]) => `| ${name} | ${t.toFixed(0)} | ${plain === null ? '—' : `×${(t / plain).toFixed(2)}`} |`),
     ...(isotropic.length === 0 ? [] : ['', 'The isotropic blur (`kernelGroups: \'auto\'`) in the same rounds, each path against itself with one kernel (the default):', '',
       '| frame | median ms | over the same path with one kernel |', '|---|---|---|',
       ...isotropic.map(([name, t, r]) => `| ${name} | ${t.toFixed(0)} | ×${r.toFixed(2)} |`)])].join('\n');

@@ -292,7 +292,7 @@ async function start() {
   const webgpu = await webgpuModule();
   const renderer = webgpu ? await webgpu.createWebgpuRenderer(container) : createRenderer();
   const head = await loadHeadShowingProgress();
-  const parts = webgpu ? webgpu.createWebgpuPipeline(renderer, head, document.querySelector('#hud .hud-note')) : createPipeline(renderer, head);
+  const parts = webgpu ? webgpu.createWebgpuPipeline(renderer, head) : createPipeline(renderer, head);
   const demo = { ...withTimings(parts), ...stateFromHash(location.hash), kernelCanvas, shotButtons, rendererKind: webgpu ? 'webgpu' : 'webgl' };
   demo.resize = () => resize(demo);
   // The node shows one image: no divider on the WebGPU page.

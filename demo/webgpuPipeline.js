@@ -1,9 +1,9 @@
 // The demo on three's WebGPURenderer (index.html?renderer=webgpu): the same head, scene and state
 // as the WebGL page, drawn through three-separable-sss/webgpu's node in a RenderPipeline. It
 // returns the parts demo/main.js's createPipeline returns, so the panel, the hash, the appliers
-// (demo/appliers.js) and the test API drive it unchanged; what the node lacks (the divider's split,
-// the 'marginal' and 'reference' methods, a second profile for the marble piece, a second light,
-// per-pass GPU times) is left out and said so. Loaded only
+// (demo/appliers.js) and the test API drive it unchanged (the ear light preset's list of two lights
+// included); what the node lacks (the divider's split, the 'marginal' and 'reference' methods, a
+// second profile for the marble piece, per-pass GPU times) is left out and said so. Loaded only
 // when asked for (a dynamic import): the WebGL page does not fetch three/webgpu.
 import { ACESFilmicToneMapping } from 'three';
 import { RenderPipeline, WebGPURenderer } from 'three/webgpu';
@@ -37,17 +37,16 @@ export async function createWebgpuRenderer(container) {
 }
 
 /** The node's settings under the WebGL pipeline's names, as the appliers assign them. */
-const FORWARDED = ['scattering', 'profile', 'samples', 'kernelGroups', 'strength', 'followSurface', 'depthThresholdMm', 'transmittance', 'debugView', 'debugDepthRange'];
+const FORWARDED = ['scattering', 'profile', 'samples', 'kernelGroups', 'strength', 'followSurface', 'depthThresholdMm', 'light', 'lightDepthSize', 'transmittance', 'debugView', 'debugDepthRange'];
 
 /**
  * The node dressed as the WebGL pipeline for demo/appliers.js: the settings it has forwarded,
  * makeSubsurface setting the node material's options, and what it lacks taking no effect
  * (`unsupported` lists what was asked for).
  */
-function pipelineFacade(node, skin, lightNote) {
+function pipelineFacade(node, skin) {
   const facade = {
     node,
-    lightDepth: node.lightDepth,
     scenePass: node.scenePass,
     stageTimer: null,
     /** @type {Set<string>} settings the node does not have, asked for since the page opened */
@@ -69,15 +68,6 @@ function pipelineFacade(node, skin, lightNote) {
     if (NODE_METHODS.includes(method)) node.method = method;
     else facade.unsupported.add(`method '${method}'`);
   });
-  // The node transmits one light: a list's first (the key light); the others are hidden, not left
-  // lighting without their transmittance, and the HUD says so.
-  forward('light', (value) => {
-    const [first, ...others] = [value].flat();
-    node.light = first;
-    for (const other of others) other.visible = false;
-    lightNote.textContent = `WebGPU node: one light, the key light (${others.map((l) => l.name || l.type).join(', ')}: WebGL page only)`;
-    lightNote.hidden = others.length === 0;
-  });
   // No divider (the node shows one image) and no 'reference' kernel to shape.
   Object.defineProperty(facade, 'split', { get: () => 0, set() {}, enumerable: true });
   Object.defineProperty(facade, 'falloff', { get: () => undefined, set() {}, enumerable: true });
@@ -89,9 +79,8 @@ function pipelineFacade(node, skin, lightNote) {
  * main.js's createPipeline: `composer` renders the pipeline (it follows the renderer's size).
  * @param {import('three/webgpu').WebGPURenderer} renderer
  * @param {{ mesh: import('three').Mesh }} head
- * @param {HTMLElement} lightNote where the page says which lights the node leaves out
  */
-export function createWebgpuPipeline(renderer, head, lightNote) {
+export function createWebgpuPipeline(renderer, head) {
   const skin = subsurfaceMaterial(head.mesh.material);
   head.mesh.material = skin;
   const rig = createHeadScene(head.mesh);
@@ -109,5 +98,5 @@ export function createWebgpuPipeline(renderer, head, lightNote) {
   const pipeline = new RenderPipeline(renderer);
   pipeline.outputNode = node;
   const composer = { render: () => pipeline.render(), setSize() {}, setPixelRatio() {} };
-  return { renderer, head, rig, camera, light, material: skin, marble, foliage, controls, sss: pipelineFacade(node, skin, lightNote), composer, pipeline, outputPass: null };
+  return { renderer, head, rig, camera, light, material: skin, marble, foliage, controls, sss: pipelineFacade(node, skin), composer, pipeline, outputPass: null };
 }

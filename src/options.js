@@ -209,7 +209,7 @@ export const PIPELINE_SCHEMA = Object.freeze({
   },
   light: {
     default: null, type: "import('./options.js').TransmittingLight|import('./options.js').TransmittingLight[]|'castShadow'|null",
-    doc: `the spot, directional or point light (the node: spot or directional) shining through thin parts; the pipeline also takes a list of up to ${MAX_LIGHTS} or 'castShadow' (the scene's casters); null: none`,
+    doc: `the spot, directional or point light shining through thin parts, a list of up to ${MAX_LIGHTS} (their light adds up), or 'castShadow' (the scene's casters, found each frame); null: none`,
     check(light, name) {
       if (light === CAST_SHADOW) return light;
       if (!Array.isArray(light)) return checkOneLight(light, name);
@@ -460,7 +460,7 @@ export function checkMaterialOptions(options = {}, previous = MATERIAL_DEFAULTS)
  * @typedef {object} SubsurfaceScatteringOptions
  * @property {import('three').Scene} scene the scene drawn, read every frame
  * @property {import('three').Camera} camera the camera drawn with, read every frame
- * @property {TransmittingLight|TransmittingLight[]|'castShadow'|null} [light=null] the spot, directional or point light (the node: spot or directional) shining through thin parts; the pipeline also takes a list of up to 4 or 'castShadow' (the scene's casters); null: none
+ * @property {TransmittingLight|TransmittingLight[]|'castShadow'|null} [light=null] the spot, directional or point light shining through thin parts, a list of up to 4 (their light adds up), or 'castShadow' (the scene's casters, found each frame); null: none
  * @property {number} [worldUnitInMm=1000] millimetres per world unit (three.js: metres, 1000)
  * @property {ProfileName|object} [profile='skin'] a preset's name ('skin', 'skinBurley', 'marble', 'milk') or a profile object (burleyProfile, dipoleProfile, gaussianSumProfile)
  * @property {Method} [method='footprint'] how the blur weighs its taps: 'footprint' (each pixel's footprint, exactly), 'marginal' or 'reference' (fixed taps; Jimenez 2012's kernel); a switch to or from 'footprint' recompiles
@@ -485,7 +485,7 @@ export function checkMaterialOptions(options = {}, previous = MATERIAL_DEFAULTS)
 /**
  * subsurfaceScattering(scenePass, { ... }) (the WebGPU node): the defaults are NODE_DEFAULTS.
  * @typedef {object} SubsurfaceScatteringNodeOptions
- * @property {TransmittingLight|TransmittingLight[]|'castShadow'|null} [light=null] the spot, directional or point light (the node: spot or directional) shining through thin parts; the pipeline also takes a list of up to 4 or 'castShadow' (the scene's casters); null: none
+ * @property {TransmittingLight|TransmittingLight[]|'castShadow'|null} [light=null] the spot, directional or point light shining through thin parts, a list of up to 4 (their light adds up), or 'castShadow' (the scene's casters, found each frame); null: none
  * @property {number} [worldUnitInMm=1000] millimetres per world unit (three.js: metres, 1000)
  * @property {ProfileName|object} [profile='skin'] a preset's name ('skin', 'skinBurley', 'marble', 'milk') or a profile object (burleyProfile, dipoleProfile, gaussianSumProfile)
  * @property {Method} [method='footprint'] how the blur weighs its taps: 'footprint' (each pixel's footprint, exactly), 'marginal' or 'reference' (fixed taps; Jimenez 2012's kernel); a switch to or from 'footprint' recompiles
@@ -508,7 +508,7 @@ export function checkMaterialOptions(options = {}, previous = MATERIAL_DEFAULTS)
  * @typedef {object} PipelineSettings
  * @property {import('three').Scene} scene the scene drawn, read every frame
  * @property {import('three').Camera} camera the camera drawn with, read every frame
- * @property {TransmittingLight|TransmittingLight[]|'castShadow'|null} light the spot, directional or point light (the node: spot or directional) shining through thin parts; the pipeline also takes a list of up to 4 or 'castShadow' (the scene's casters); null: none
+ * @property {TransmittingLight|TransmittingLight[]|'castShadow'|null} light the spot, directional or point light shining through thin parts, a list of up to 4 (their light adds up), or 'castShadow' (the scene's casters, found each frame); null: none
  * @property {number} worldUnitInMm millimetres per world unit (three.js: metres, 1000)
  * @property {Method} method how the blur weighs its taps: 'footprint' (each pixel's footprint, exactly), 'marginal' or 'reference' (fixed taps; Jimenez 2012's kernel); a switch to or from 'footprint' recompiles
  * @property {number|'auto'} samples taps per direction, odd, 3..63 (a budget for 'footprint'); 'auto': as few as the on-screen scale needs
@@ -531,7 +531,7 @@ export function checkMaterialOptions(options = {}, previous = MATERIAL_DEFAULTS)
 /**
  * SubsurfaceScatteringNode's settings, as properties (assigning one checks it as the constructor does).
  * @typedef {object} NodeSettings
- * @property {TransmittingLight|TransmittingLight[]|'castShadow'|null} light the spot, directional or point light (the node: spot or directional) shining through thin parts; the pipeline also takes a list of up to 4 or 'castShadow' (the scene's casters); null: none
+ * @property {TransmittingLight|TransmittingLight[]|'castShadow'|null} light the spot, directional or point light shining through thin parts, a list of up to 4 (their light adds up), or 'castShadow' (the scene's casters, found each frame); null: none
  * @property {number} worldUnitInMm millimetres per world unit (three.js: metres, 1000)
  * @property {Method} method how the blur weighs its taps: 'footprint' (each pixel's footprint, exactly), 'marginal' or 'reference' (fixed taps; Jimenez 2012's kernel); a switch to or from 'footprint' recompiles
  * @property {number|'auto'} samples taps per direction, odd, 3..63 (a budget for 'footprint'); 'auto': as few as the on-screen scale needs

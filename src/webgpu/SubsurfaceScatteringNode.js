@@ -3,9 +3,9 @@
 // subsurface node materials write the diffuse light and the surface there); the node runs stage 3,
 // the two separable blur passes (with kernelGroups, the isotropic blur's groups: the horizontal
 // pass writes each to an attachment of its own, the vertical one sums them), before the frame
-// (updateBefore), and is itself stage 4, the compose. With a `light` it runs stage 1 too (./1-light-depth/LightStageNode.js): the light
-// depth pass for transmittance, and the subsurface materials' transmittance uniforms, before the
-// scene pass draws them. What the WebGL path's orchestrator does per frame
+// (updateBefore), and is itself stage 4, the compose. With a `light` (or several) it runs stage 1
+// too (./1-light-depth/LightStageNode.js): a light depth pass per light for transmittance, and the
+// subsurface materials' transmittance uniforms, before the scene pass draws them. What the WebGL path's orchestrator does per frame
 // (src/SubsurfaceScattering.js, steps 0 to 5) happens here in the same order, with the same CPU
 // side: the profile tables, the footprint tables, the frame plan, the light's checks and the
 // parameter checks are imported from src/, not copied.
@@ -14,27 +14,29 @@
 //   scenePass.setMRT(subsurfaceMRT());
 //   pipeline.outputNode = subsurfaceScattering(scenePass, { worldUnitInMm: 1000, light });
 import { Node, NodeMaterial, NodeUpdateType, QuadMesh, RenderTarget, RendererUtils } from 'three/webgpu';
-import { FloatType, HalfFloatType, Vector2, Vector3 } from 'three';
-import { passTexture, texture, uniform } from 'three/tsl';
+import { FloatType, HalfFloatType, RGFormat, Vector2, Vector3, Vector4 } from 'three';
+import { passTexture, uniform } from 'three/tsl';
 import { MAX_KERNEL_GROUPS } from '../3-blur/kernelGroups.js';
 import { ProfileLookup } from '../profiles/ProfileLookup.js';
 import { FootprintTable } from '../profiles/FootprintTable.js';
 import { AUTO_MAX_SAMPLES } from '../profiles/footprints.js';
 import { computeKernel } from '../profiles/kernel.js';
 import { estimatePixelsPerMm } from '../framePlan.js';
+import { subsurfaceScreenBox } from '../2-scene-split/subsurfaceScreenBox.js';
 import { planBlur } from '../3-blur/blurPlan.js';
 import { isPerspective } from '../support/screenScale.js';
 import { describe } from '../support/rendererSupport.js';
 import { LightStageNode } from './1-light-depth/LightStageNode.js';
 import { FrameMeshes } from '../frameMeshes.js';
 import {
-  CAST_SHADOW, NODE_SCHEMA, checkNodeOptions, lightsOf, propertiesOf,
+  NODE_SCHEMA, checkNodeOptions, lightsOf, propertiesOf,
 } from '../options.js';
 import { withSettings } from '../support/settings.js';
 import { FrameChecks } from '../support/frameChecks.js';
 import { WEBGPU_THREE, checkThreeRevision } from '../support/threeVersion.js';
 import { ATTACHMENT_NAMES } from './2-scene-split/attachments.js';
 import { subsurfaceBlurNode } from './3-blur/subsurfaceBlurTsl.js';
+import { texelTexture } from './common/surfaceTsl.js';
 import { GroupFractionTexture } from './3-blur/GroupFractionTexture.js';
 
 import { composeNode, debugViewUniform } from './4-compose/composeTsl.js';
@@ -42,15 +44,6 @@ import { DEBUG_VIEWS } from '../4-compose/debugViews.js';
 
 /** The methods the node has: the WebGL pipeline's default (the fixed-tap ones are the WebGL pipeline's only). */
 export const NODE_METHODS = Object.freeze(['footprint']);
-
-/** The node's one light (or none): a list of more is the WebGL pipeline's, refused naming it. */
-function nodeLight(light) {
-  if (light === CAST_SHADOW) throw new RangeError(`light: the WebGPU node takes one light, got '${CAST_SHADOW}' (the WebGL pipeline's)`);
-  const lights = lightsOf(light);
-  if (lights.length > 1) throw new RangeError(`light: the WebGPU node takes one light, got a list of ${lights.length} (several lights are the WebGL pipeline's)`);
-  if (lights[0]?.isPointLight) throw new TypeError('light: the WebGPU node takes a SpotLight or DirectionalLight, got a PointLight (the WebGL pipeline takes point lights)');
-  return lights[0] ?? null;
-}
 
 /** A method of the schema the node lacks is refused, naming the pipeline that has it. */
 function checkNodeMethod(method) {
@@ -92,7 +85,6 @@ export class SubsurfaceScatteringNode extends NodeWithSettings {
     if (!scenePass || scenePass.isPassNode !== true) throw new TypeError(`subsurfaceScattering: scenePass must be a PassNode (pass(scene, camera)), got ${describe(scenePass)}`);
     const o = checkNodeOptions(options); // every option checked here, once, against the schema
     checkNodeMethod(o.method);
-    nodeLight(o.light);
     /** @internal The settings' values (read and assigned through their properties). */
     this._settings = Object.fromEntries(propertiesOf(NODE_SCHEMA).map(({ name }) => [name, o[name]]));
     /** @internal Whether the user set `transmittance` true, for the frame's word when there is no light (as the WebGL pipeline). */
@@ -104,22 +96,25 @@ export class SubsurfaceScatteringNode extends NodeWithSettings {
       kernelRadiusMm: uniform(0), strength: uniform(new Vector3()), projectionScale: uniform(new Vector2(1, 1)),
       resolution: uniform(new Vector2(1, 1)), depthFalloff: uniform(1), perspective: uniform(1), mmToWorld: uniform(1e-3),
       marginalRangeMm: uniform(1), debugView: debugViewUniform(), debugDepthRange: uniform(1), debugThicknessRangeMm: uniform(1), scatteredShare: uniform(1),
-      lightShown: uniform(o.light === null ? 0 : 1), // the light's views show nothing without one (the WebGL materials write 0 there)
+      subsurfaceBox: uniform(new Vector4(0, 0, 1, 1)), // the subsurface pixels' box: x0, y0, x1, y1, pixels from the top left
+      lightShown: uniform(0), // the light's views show nothing without one (the WebGL materials write 0 there): set with the light stage's lights
     };
     /** What the frame covers (src/frameMeshes.js), made by the light stage each frame before the scene pass draws. */
     this.frame = new FrameMeshes();
     /** The frame's own checks (the light's are the light stage's), each warned about once. */
     this._checks = new FrameChecks('SubsurfaceScatteringNode');
     /** Stage 1 and the materials' transmittance uniforms, before the scene pass (built with or without a light: `light` is assignable). */
-    this._lightStage = new LightStageNode(this, nodeLight(o.light), o.lightDepthSize);
+    this._lightStage = new LightStageNode(this, o.lightDepthSize);
     for (const name of ['worldUnitInMm', 'samples', 'strength', 'debugView', 'debugDepthRange', 'debugThicknessRangeMm']) this._applySetting(name, o[name]);
     /** What the last frame ran: { samples, kernelPixels, blur, passes, groups, groupings } (see src/3-blur/blurPlan.js). */
     this.plan = { samples: 0, tapBlend: null, kernelPixels: 0, blur: false, fade: 0, passes: 'separable', groups: 1, groupings: null };
 
-    // The surface needs the 32-bit mantissa (mm differences at metres); the light is half float.
-    scenePass.getTexture(ATTACHMENT_NAMES.SURFACE).type = FloatType;
+    // The surface needs the 32-bit mantissa (mm differences at metres), two channels of it (every
+    // draw of the pass writes it: 8 B a pixel, not 16); the light is half float.
+    Object.assign(scenePass.getTexture(ATTACHMENT_NAMES.SURFACE), { type: FloatType, format: RGFormat });
     scenePass.getTexture(ATTACHMENT_NAMES.DIFFUSE).type = HalfFloatType;
-    this._horizontalTarget = new RenderTarget(1, 1, { type: HalfFloatType, depthBuffer: false });
+    // 32 bits: without MSAA it carries the depth to the vertical pass (the WebGL blur's target too).
+    this._horizontalTarget = new RenderTarget(1, 1, { type: FloatType, depthBuffer: false });
     this._horizontalTarget.texture.name = 'subsurface.horizontal';
     this._scatteredTarget = new RenderTarget(1, 1, { type: HalfFloatType, depthBuffer: false });
     this._scatteredTarget.texture.name = 'subsurface.scattered';
@@ -134,8 +129,8 @@ export class SubsurfaceScatteringNode extends NodeWithSettings {
     this._groupFractions = new GroupFractionTexture();
     this._groupFractionNode = null;
     this._groupEnergies = Array.from({ length: MAX_KERNEL_GROUPS }, () => uniform(new Vector3()));
-    this._profileNode = texture(this.profileLookup.texture);
-    this._footprintNode = texture(this.footprintTable.update(this.samples === 'auto' ? 'auto' : this.samples));
+    this._profileNode = texelTexture(this.profileLookup.texture);
+    this._footprintNode = texelTexture(this.footprintTable.update(this.samples === 'auto' ? 'auto' : this.samples));
     // Planned per render, not per frame: a setting changed between two renders of one animation
     // frame (scattering, samples) is this render's (the scene pass still draws once a frame).
     this.updateBeforeType = NodeUpdateType.RENDER;
@@ -171,8 +166,7 @@ export class SubsurfaceScatteringNode extends NodeWithSettings {
         return;
       case 'light': // as the WebGL pipeline: transmittance and debugView stay as set, acting through the light there is
         if (value === previous) return;
-        this._lightStage.setLight(nodeLight(value));
-        u.lightShown.value = value === null ? 0 : 1;
+        this._lightStage.setLights(lightsOf(value)); // 'castShadow': found each frame
         return;
       case 'debugView':
         u.debugView.value = DEBUG_VIEWS.indexOf(value);
@@ -181,7 +175,7 @@ export class SubsurfaceScatteringNode extends NodeWithSettings {
         u[name].value = value;
         return;
       case 'lightDepthSize':
-        this._lightStage?.lightDepth?.setSize(value); // kept while the light is null, for the next one
+        for (const lightDepth of this._lightStage?.lightDepths ?? []) lightDepth.setSize(value); // kept while the light is null, for the next one
         return;
       default:
     }
@@ -197,14 +191,21 @@ export class SubsurfaceScatteringNode extends NodeWithSettings {
   /** @param {import('../options.js').ProfileName|object} profile */
   set profile(profile) { super.profile = profile; }
 
-  /** What the last frame found wrong with the light or the camera, one message each (empty when all is well). @type {readonly string[]} */
+  /** What the last frame found wrong with the lights or the camera, one message each (empty when all is well). @type {readonly string[]} */
   get problems() {
     const [light, frame] = [this._lightStage.checks.current, this._checks.current];
     return frame.length === 0 ? light : Object.freeze([...light, ...frame]);
   }
 
-  /** Stage 1: the light depth map for transmittance, or null without a light. @type {import('./1-light-depth/LightDepthNodeTarget.js').LightDepthNodeTarget|null} */
-  get lightDepth() { return this.light === null ? null : this._lightStage.lightDepth; }
+  /**
+   * Stage 1: the light depth maps for transmittance, one per light (with `'castShadow'`: the last
+   * frame's casters), empty without a light.
+   * @type {readonly import('./1-light-depth/LightDepthNodeTarget.js').LightDepthNodeTarget[]}
+   */
+  get lightDepths() { return this._lightStage.lightDepths.slice(0, this._lightStage.count); }
+
+  /** The first light's map (the one the thickness view shows), or null without a light. @type {import('./1-light-depth/LightDepthNodeTarget.js').LightDepthNodeTarget|null} */
+  get lightDepth() { return this.lightDepths[0] ?? null; }
 
   /** @returns {import('three/webgpu').TextureNode} the scattered diffuse light, premultiplied by its coverage */
   getTextureNode() {
@@ -242,14 +243,17 @@ export class SubsurfaceScatteringNode extends NodeWithSettings {
     const material = (fragmentNode, name) => Object.assign(new NodeMaterial(), { fragmentNode, name });
     let materials;
     if (groups === 1) {
+      // Without MSAA the horizontal pass hands the depth on in its alpha (the coverage is 1 on the
+      // mask): the vertical pass's taps fetch one texel each, not two (carriedDepth.glsl).
+      const carried = !coverage;
       materials = [
-        material(subsurfaceBlurNode({ ...common, axis: 0, diffuse }), 'SubsurfaceBlur(horizontal)'),
-        material(subsurfaceBlurNode({ ...common, axis: 1, diffuse: texture(this._horizontalTarget.texture) }), 'SubsurfaceBlur(vertical)'),
+        material(subsurfaceBlurNode({ ...common, axis: 0, diffuse, carryDepth: carried }), 'SubsurfaceBlur(horizontal)'),
+        material(subsurfaceBlurNode({ ...common, axis: 1, diffuse: texelTexture(this._horizontalTarget.texture), carriesDepth: carried }), 'SubsurfaceBlur(vertical)'),
       ];
     } else {
-      this._groupFractionNode ??= texture(this._groupFractions.texture);
+      this._groupFractionNode ??= texelTexture(this._groupFractions.texture);
       const { textures } = this._groupTarget;
-      const lights = textures.map((t) => texture(t));
+      const lights = textures.map((t) => texelTexture(t));
       const split = { count: groups, fractions: this._groupFractionNode };
       materials = [
         material(subsurfaceBlurNode({ ...common, axis: 0, diffuse, groups: { ...split, names: textures.map((t) => t.name), energies: this._groupEnergies } }), `SubsurfaceBlur(horizontal, ${groups} groups)`),
@@ -319,11 +323,18 @@ export class SubsurfaceScatteringNode extends NodeWithSettings {
         'as three draws them; the WebGL pipeline (SubsurfaceScattering) blurs each view at its own scale');
     }
     this._checks.end();
-    this.plan = this._planFrame(views ? [] : this.frame.onScreen, camera, width, height); // the light stage's lists, this frame's
+    const meshes = views ? [] : this.frame.onScreen; // the light stage's lists, this frame's
+    this.plan = this._planFrame(meshes, camera, width, height);
     this._uniforms.scatteredShare.value = this.plan.blur ? this.plan.fade : 1; // the blur fading in (blurPlan.js)
     if (this.kernelGroups === 1) this._freeGroupTarget(); // back to one kernel: its 8 B per pixel and group go
+    // Where the subsurface pixels can be (the meshes' bounds; null: anywhere): the blur runs there
+    // only, and the compose reads the scattered light there only.
+    const box = subsurfaceScreenBox(meshes, camera, width, height);
+    const { x, y, width: w, height: h } = box ?? { x: 0, y: 0, width, height };
+    const top = height - y - h; // WebGPURenderer's scissors and the shaders' pixels count from the top left
+    this._uniforms.subsurfaceBox.value.set(x, top, x + w, top + h);
     const diffuse = scenePass.getTexture(ATTACHMENT_NAMES.DIFFUSE);
-    if (!this.plan.blur) {
+    if (!this.plan.blur || box?.width === 0) {
       this._scatteredNode.value = diffuse; // the compose reads the unblurred light: the output equals no SSS
       return undefined;
     }
@@ -341,9 +352,17 @@ export class SubsurfaceScatteringNode extends NodeWithSettings {
     if (groups > 1) this._groupFrame(this.plan.groupings[0], width, height);
     else this._horizontalTarget.setSize(width, height);
     this._scatteredTarget.setSize(width, height);
+    // The passes run in the box alone, their targets not cleared: a render pass's clear is its
+    // whole attachment's, whatever the scissor (on SwiftShader it cost more than a pass over the
+    // head). Every pixel of the box is written; outside it the taps and the compose read nothing.
+    for (const target of [groups > 1 ? this._groupTarget : this._horizontalTarget, this._scatteredTarget]) {
+      target.scissor.set(x, top, w, h);
+      target.scissorTest = box !== null;
+    }
     const [horizontal, vertical] = this._blurMaterials(this.plan.samples, coverage, groups);
 
     _rendererState = RendererUtils.resetRendererState(renderer, _rendererState);
+    renderer.autoClear = false;
     _quadMesh.material = horizontal;
     _quadMesh.name = 'Subsurface blur [ horizontal ]';
     renderer.setRenderTarget(groups > 1 ? this._groupTarget : this._horizontalTarget);
@@ -374,6 +393,7 @@ export class SubsurfaceScatteringNode extends NodeWithSettings {
       depthRange: this._uniforms.debugDepthRange,
       thicknessRangeMm: this._uniforms.debugThicknessRangeMm,
       share: this._uniforms.scatteredShare,
+      box: this._uniforms.subsurfaceBox,
       lightShown: this._uniforms.lightShown,
     });
   }

@@ -18,35 +18,11 @@ afterAll(() => closeCheckedPage(page));
  * with a plain RenderPass; reads the outputs, the scattered light and the diffuse attachment.
  */
 function renderVariants(variants) {
-  const { THREE, SSS, RenderPass, createRenderer, createComposer, read, dataTexture } = window.lab;
+  const { THREE, SSS, RenderPass, createRenderer, createComposer, read, spheresScene } = window.lab;
   const width = 192, height = 108;
   const renderer = createRenderer(width, height);
   renderer.shadowMap.enabled = true;
-  const scene = new THREE.Scene();
-  const camera = new THREE.PerspectiveCamera(30, width / height, 0.5, 50);
-  camera.position.set(0, 0.6, 8);
-  camera.lookAt(0, 0, 0);
-  let seed = 7;
-  const noise = () => ((seed = (seed * 16807) % 2147483647) / 2147483647);
-  const map = dataTexture(32, 32, () => { const v = 0.1 + 0.9 * noise(); return [v, 0.8 * v, 0.6 * v]; });
-  const skin = new THREE.MeshStandardMaterial({ color: 0xffffff, roughness: 0.6, map });
-  const skinBehind = new THREE.MeshStandardMaterial({ color: 0xffccaa, roughness: 0.8 });
-  const front = new THREE.Mesh(new THREE.SphereGeometry(0.9, 48, 32), skin);
-  const behind = new THREE.Mesh(new THREE.SphereGeometry(0.7, 32, 24), skinBehind);
-  behind.position.set(0.9, 0.3, -1.2);
-  const box = new THREE.Mesh(new THREE.BoxGeometry(0.5, 0.5, 0.5), new THREE.MeshStandardMaterial({ color: 0x3366cc }));
-  box.position.set(-0.7, -0.3, 1.2);
-  const floor = new THREE.Mesh(new THREE.PlaneGeometry(12, 12), new THREE.MeshStandardMaterial({ color: 0x999999 }));
-  floor.rotation.x = -Math.PI / 2;
-  floor.position.y = -1;
-  for (const m of [front, behind, box]) m.castShadow = m.receiveShadow = true;
-  floor.receiveShadow = true;
-  const light = new THREE.DirectionalLight(0xffffff, 3);
-  light.position.set(-3, 5, 4);
-  light.castShadow = true;
-  Object.assign(light.shadow.camera, { left: -4, right: 4, top: 4, bottom: -4, near: 0.5, far: 20 });
-  scene.add(front, behind, box, floor, light, light.target, new THREE.AmbientLight(0xffffff, 0.2));
-  const subsurface = [front, behind];
+  const { scene, camera, light, skin, skinBehind, subsurface } = spheresScene(width / height);
   const home = subsurface.map((m) => m.position.clone());
 
   // A transparent pane between the spheres (the MSAA variants but one): drawn after the compose and

@@ -33,3 +33,12 @@ export function countNonFinite(values) {
   for (const v of values) if (!Number.isFinite(v)) n++;
   return n;
 }
+
+/** Mean RGB over the middle `share` of a square image's width and height. */
+export function middle(rgba, size, share = 0.3) {
+  const lo = Math.round(size * (0.5 - share / 2));
+  const hi = Math.round(size * (0.5 + share / 2));
+  const sum = [0, 0, 0];
+  for (let y = lo; y < hi; y++) for (let x = lo; x < hi; x++) for (let c = 0; c < 3; c++) sum[c] += rgba[(y * size + x) * 4 + c];
+  return sum.map((v) => v / (hi - lo) ** 2);
+}

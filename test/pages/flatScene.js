@@ -59,3 +59,38 @@ export function flatScene({ width, height, pxPerMm, pattern, frequencies = [], p
   scene.add(plane, light, light.target);
   return { scene, camera, material, map, plane };
 }
+
+/**
+ * The frame test's scene (test/browser/pipelineFrame.test.js; the WebGPU node's box test, test/pages/webgpu.js's
+ * boxFrames): a sphere (`skin`: noise albedo, seeded) over an ordinary floor, a second one
+ * (`skinBehind`) half hidden behind it, an ordinary box in front of both; a directional light
+ * casting shadows; the camera at `aspect`. `subsurface`: the two spheres (three's materials:
+ * the caller makes them subsurface).
+ */
+export function spheresScene(aspect) {
+  const scene = new THREE.Scene();
+  const camera = new THREE.PerspectiveCamera(30, aspect, 0.5, 50);
+  camera.position.set(0, 0.6, 8);
+  camera.lookAt(0, 0, 0);
+  let seed = 7;
+  const noise = () => ((seed = (seed * 16807) % 2147483647) / 2147483647);
+  const map = dataTexture(32, 32, () => { const v = 0.1 + 0.9 * noise(); return [v, 0.8 * v, 0.6 * v]; });
+  const skin = new THREE.MeshStandardMaterial({ color: 0xffffff, roughness: 0.6, map });
+  const skinBehind = new THREE.MeshStandardMaterial({ color: 0xffccaa, roughness: 0.8 });
+  const front = new THREE.Mesh(new THREE.SphereGeometry(0.9, 48, 32), skin);
+  const behind = new THREE.Mesh(new THREE.SphereGeometry(0.7, 32, 24), skinBehind);
+  behind.position.set(0.9, 0.3, -1.2);
+  const box = new THREE.Mesh(new THREE.BoxGeometry(0.5, 0.5, 0.5), new THREE.MeshStandardMaterial({ color: 0x3366cc }));
+  box.position.set(-0.7, -0.3, 1.2);
+  const floor = new THREE.Mesh(new THREE.PlaneGeometry(12, 12), new THREE.MeshStandardMaterial({ color: 0x999999 }));
+  floor.rotation.x = -Math.PI / 2;
+  floor.position.y = -1;
+  for (const m of [front, behind, box]) m.castShadow = m.receiveShadow = true;
+  floor.receiveShadow = true;
+  const light = new THREE.DirectionalLight(0xffffff, 3);
+  light.position.set(-3, 5, 4);
+  light.castShadow = true;
+  Object.assign(light.shadow.camera, { left: -4, right: 4, top: 4, bottom: -4, near: 0.5, far: 20 });
+  scene.add(front, behind, box, floor, light, light.target, new THREE.AmbientLight(0xffffff, 0.2));
+  return { scene, camera, light, skin, skinBehind, subsurface: [front, behind], ordinary: [box, floor], map };
+}

@@ -11,7 +11,7 @@ import * as INTERNALS from '/src/internals.js';
 import { ATTACHMENTS } from '/src/2-scene-split/subsurfaceTarget.js';
 import { readRenderTargetFloats } from '/dev/readback.js';
 import { mulberry32 as random } from '/demo/seededRandom.js';
-import { dataTexture, flatScene } from './flatScene.js';
+import { dataTexture, flatScene, spheresScene } from './flatScene.js';
 import { leafScenes } from './leaves.js';
 
 /** A renderer drawing into an offscreen canvas of `width` × `height` device pixels. */
@@ -392,7 +392,7 @@ function buildScene(name, options = {}) {
 }
 
 window.lab = {
-  THREE, SSS, EffectComposer, RenderPass, ShaderPass, OutputPass, createRenderer, createComposer, read, dataTexture, run, buildScene, flat, disposeFlatRig, flatScene, DEFAULTS,
+  THREE, SSS, EffectComposer, RenderPass, ShaderPass, OutputPass, createRenderer, createComposer, read, dataTexture, run, buildScene, flat, disposeFlatRig, flatScene, spheresScene, DEFAULTS,
   lightDepthCards, cardDepths, cardCosines,
 };
 Object.assign(window.lab, leafScenes(window.lab));

@@ -3,14 +3,15 @@
 // picture drawn without it (`reference`: separate meshes for an InstancedMesh, the baked shape for
 // morph targets, layer 0 for layer 1...), then renders through a RenderPass and through the
 // pipeline, off (no scattering, no transmittance) and on, and reports the differences, the draw
-// calls and the light depth passes. The test file holds the assertions.
+// calls and the light depth passes. The test file holds the assertions. The WebGPU node's rows
+// (test/pages/webgpu.js's sceneGraphRow) draw these scenes too.
 import './lab.js';
 
 const { THREE, SSS, RenderPass, createComposer, read } = window.lab;
-const WIDTH = 96;
-const HEIGHT = 64;
+export const WIDTH = 96;
+export const HEIGHT = 64;
 /** Millimetres of material per profile mm: the 24 cm slab's texture edges blur over several pixels at 96 × 64. */
-const WIDTH_MM = 40;
+export const WIDTH_MM = 40;
 
 /** Stripes along x (nearest-filtered), so scattering shows at their edges. */
 function stripes() {
@@ -129,7 +130,7 @@ async function frame(renderer, built, pass, { frames = 2, pipelineOptions = {}, 
  * The largest difference of any channel, how many pixels differ by more than `over` (rgb, the
  * first few of them in `where`: x, y from the bottom, a's and b's red), and b's largest value.
  */
-function compare(a, b, over = 0.01) {
+export function compare(a, b, over = 0.01) {
   let worst = 0;
   let differing = 0;
   let nonFinite = 0;
@@ -200,7 +201,7 @@ function leftHalfPlane() {
 }
 
 /** The rows: each a feature scene and, where it has one, the reference drawn without the feature. */
-const ROWS = {
+export const ROWS = {
   /** A hidden subsurface mesh, and one under a hidden parent: the frame is three's plain frame. */
   visible: {
     feature: () => baseScene((scene) => {

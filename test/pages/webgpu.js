@@ -5,9 +5,11 @@
 import * as THREE from 'three/webgpu';
 import { cos, pass, positionLocal, uniform, vec3 } from 'three/tsl';
 import * as NODE from '/src/webgpu/index.js';
-import { flatScene } from './flatScene.js';
+import { flatScene, spheresScene } from './flatScene.js';
 import { HEAD_WORLD_UNIT_IN_MM, setLightDirection } from '/demo/headScene.js';
 import { headRig } from './headRig.js';
+import { ATTACHMENTS } from '/src/2-scene-split/subsurfaceTarget.js';
+import { ROWS as SCENE_GRAPH_ROWS, WIDTH as SCENE_GRAPH_WIDTH, HEIGHT as SCENE_GRAPH_HEIGHT, WIDTH_MM as SCENE_GRAPH_WIDTH_MM, compare } from './sceneGraph.js';
 import './lab.js'; // window.lab: the WebGL pipeline's side of the comparisons
 import { estimatePixelsPerMm } from '/src/framePlan.js';
 import { distanceForScale, dollyDirection, placeOnDolly, scatteringSignal, dollyDepartures } from './dolly.js';
@@ -621,6 +623,280 @@ async function sameFrame({ backend = 'webgpu', width = 96, height = 54 }) {
 }
 
 /**
+ * The WebGL pipeline frame test's scene (test/browser/pipelineFrame.test.js) through the node: a
+ * subsurface sphere (noise albedo) over an ordinary floor, a second one half hidden behind it, an
+ * ordinary box in front; a directional light casting shadows; 192 × 108, float. Each variant is a
+ * fresh node (`sss`: its options; `samples`: the scene pass's MSAA); `moved`: one frame with the
+ * spheres higher and to the right first, so the subsurface box moves between frames (the blur's targets are not
+ * cleared outside it). Returns each variant's output, its scattered light inside the box, the box
+ * (x0, y0, x1, y1 from the top left), the plan, and the diffuse attachment's alpha of the first.
+ */
+async function boxFrames({ backend = 'webgpu', variants }) {
+  const width = 192;
+  const height = 108;
+  const renderer = await sharedRenderer(backend, width, height);
+  renderer.shadowMap.enabled = true;
+  const { scene, camera, light, subsurface: spheres, map } = spheresScene(width / height);
+  const three = spheres.map((m) => m.material);
+  for (const m of spheres) m.material = NODE.subsurfaceMaterial(m.material);
+  const home = spheres.map((m) => m.position.clone());
+  const target = new THREE.RenderTarget(width, height, { type: THREE.FloatType });
+  const render = (pipeline) => {
+    renderer.setRenderTarget(target);
+    pipeline.render();
+    renderer.setRenderTarget(null);
+  };
+  const out = {};
+  for (const [name, { sss = {}, samples = 0, moved = false }] of Object.entries(variants)) {
+    const built = subsurfacePipeline(renderer, scene, camera, { type: THREE.FloatType, samples, sss: { worldUnitInMm: 100, light, ...sss } });
+    if (moved) {
+      spheres.forEach((m) => { m.position.x += 0.4; m.position.y += 0.6; }); // up: the vertical pass's taps reach the rows left behind
+      render(built.pipeline);
+      spheres.forEach((m, i) => m.position.copy(home[i]));
+      await new Promise((resolve) => { requestAnimationFrame(() => resolve()); }); // the light stage runs once a frame
+    }
+    render(built.pipeline);
+    const [x0, y0, x1, y1] = built.node._uniforms.subsurfaceBox.value.toArray();
+    const scattered = await readFloats(renderer, built.node._scatteredTarget);
+    // Rows bottom-up (readFloats): the box's rows from the top are height − 1 − y.
+    const inBox = scattered.map((v, i) => { const x = (i >> 2) % width; const y = height - 1 - Math.floor((i >> 2) / width); return x >= x0 && x < x1 && y >= y0 && y < y1 ? v : 0; });
+    const { groupings, ...plan } = built.node.plan;
+    out[name] = { output: await readFloats(renderer, target), scattered: inBox, box: [x0, y0, x1, y1], plan };
+    if (name === Object.keys(variants)[0] && samples === 0) out[name].mask = (await readFloats(renderer, built.scenePass.renderTarget, 'diffuse')).filter((_, i) => i % 4 === 3);
+    built.node.dispose();
+    built.pipeline.dispose();
+    built.scenePass.dispose();
+    await new Promise((resolve) => { requestAnimationFrame(() => resolve()); });
+  }
+  renderer.shadowMap.enabled = false;
+  target.dispose();
+  scene.traverse((object) => object.material?.dispose());
+  for (const m of three) m.dispose();
+  map.dispose();
+  return { width, height, ...out };
+}
+
+/**
+ * The lights of issue 43 on the node, the WebGL lights test's scene (test/browser/1-light-depth/
+ * lights.test.js): a white slab `thicknessMm` thick (metres, 0.2 m wide) seen from the front at
+ * 0.3 m, lit from behind only, `size` pixels square. `lights(THREE)` names the lights (added to the
+ * scene), `steps(node, lights, parts)` the [label, action] pairs, each followed by a frame (an
+ * animation frame apart: the scene pass draws once a frame) whose diffuse attachment (float) is
+ * returned under its label with `node.light` (a light's name, 'castShadow', null or 'a list') and
+ * the frame's problems. With `webgl`, the labels it lists are drawn by the WebGL pipeline too,
+ * with the node's `light` of that step, into `webgl[label]`.
+ */
+async function slabLightFrames({ backend = 'webgpu', thicknessMm = 1, size = 48, lights: makeLights, steps, webgl = [] }) {
+  const renderer = await sharedRenderer(backend, size, size);
+  const scene = new THREE.Scene();
+  const camera = new THREE.PerspectiveCamera(30, 1, 0.01, 10);
+  camera.position.set(0, 0, 0.3);
+  const plain = new THREE.MeshStandardMaterial({ color: 0xffffff, roughness: 1, metalness: 0 });
+  const skin = NODE.subsurfaceMaterial(plain, { widthMm: 1, shrinkMm: 0.6 });
+  const slab = new THREE.Mesh(new THREE.BoxGeometry(0.2, 0.2, thicknessMm / 1000), skin);
+  slab.name = 'slab';
+  scene.add(slab);
+  const lights = makeLights(THREE);
+  for (const light of Object.values(lights)) scene.add(light, ...(light.target ? [light.target] : []));
+  const { scenePass, node, pipeline } = subsurfacePipeline(renderer, scene, camera, { type: THREE.FloatType, sss: { worldUnitInMm: 1000 } });
+  const nameOf = (light) => Object.entries(lights).find(([, l]) => l === light)?.[0] ?? (light === null || typeof light === 'string' ? light : 'a list');
+  const out = { webgl: {} };
+  for (const [label, action] of steps(node, lights, { scene, camera, slab, skin })) {
+    await new Promise((resolve) => { requestAnimationFrame(() => resolve()); });
+    action();
+    pipeline.render();
+    out[label] = { diffuse: await readFloats(renderer, scenePass.renderTarget, 'diffuse'), light: nameOf(node.light), problems: [...node.problems], cubes: node.lightDepths.map((map) => map.isCube) };
+    if (webgl.includes(label)) out.webgl[label] = await webglSlabFrame(scene, camera, slab, plain, node.light, size);
+  }
+  node.dispose();
+  pipeline.dispose();
+  scenePass.dispose();
+  skin.dispose();
+  plain.dispose();
+  slab.geometry.dispose();
+  return out;
+}
+
+/** The WebGL pipeline's diffuse attachment (float) of the same scene with `light`, `plain` (three's material) on the slab. */
+async function webglSlabFrame(scene, camera, slab, plain, light, size) {
+  const L = window.lab;
+  const skin = slab.material;
+  slab.material = plain;
+  const gl = L.createRenderer(size, size);
+  const sss = new L.SSS.SubsurfaceScattering({ scene, camera, light, worldUnitInMm: 1000, type: THREE.FloatType });
+  sss.makeSubsurface(plain, { widthMm: 1, shrinkMm: 0.6 });
+  const composer = L.createComposer(gl, { type: THREE.FloatType });
+  composer.addPass(sss);
+  composer.render();
+  const diffuse = await L.read(gl, sss._scenePass.renderTarget, ATTACHMENTS.DIFFUSE);
+  sss.dispose();
+  composer.dispose();
+  gl.dispose();
+  gl.forceContextLoss();
+  slab.material = skin;
+  return diffuse;
+}
+
+/** The four lights of the list test: two directional, a spot, a point light aimed at the slab (its bounds fit 120°). */
+const FOUR_LIGHTS = (T) => {
+  const behind = new T.DirectionalLight(0xffffff, Math.PI);
+  behind.position.set(0, 0, -2);
+  const oblique = new T.DirectionalLight(0xffccaa, 2);
+  oblique.position.set(1.2, 0.3, -1.5);
+  const spot = new T.SpotLight(0xaaccff, 6 * Math.PI, 0, Math.PI / 10, 0.3, 2);
+  spot.position.set(-0.1, 0.05, -1.2);
+  const bulb = new T.PointLight(0xffeecc, 3 * Math.PI, 0, 2);
+  bulb.position.set(0.05, -0.3, -0.8);
+  for (const light of [behind, oblique]) Object.assign(light.shadow.camera, { left: -0.15, right: 0.15, bottom: -0.15, top: 0.15 });
+  return { behind, oblique, spot, bulb };
+};
+
+/** Each of FOUR_LIGHTS alone, all four, two, then a list read back; 'all' also through the WebGL pipeline. */
+const nodeLightList = ({ backend }) => slabLightFrames({
+  backend, thicknessMm: 1.5, lights: FOUR_LIGHTS, webgl: ['all'],
+  steps: (node, l) => [
+    ['behind', () => { node.light = l.behind; }], ['oblique', () => { node.light = [l.oblique]; }],
+    ['spot', () => { node.light = l.spot; }], ['bulb', () => { node.light = l.bulb; }],
+    ['all', () => { node.light = [l.behind, l.oblique, l.spot, l.bulb]; }],
+    ['two', () => { node.light = [l.spot, l.behind]; }],
+  ],
+});
+
+/**
+ * A spot light straight behind the 1 mm slab, 2 m away (intensity 4π, decay 2: irradiance π; the
+ * slab well inside its cone); a point light there, among transmitting meshes (a box beyond it:
+ * its map takes six faces), the slab turned to face +z, +x, −y and −z in turn (the camera before
+ * it); then aimed (the box gone): the slab turned 45° to it, and a spot light in its place.
+ */
+const nodePointLight = ({ backend }) => slabLightFrames({
+  backend, thicknessMm: 1,
+  lights: (T) => {
+    const bulb = new T.PointLight(0xffffff, Math.PI * 4, 0, 2);
+    const spot = new T.SpotLight(0xffffff, Math.PI * 4, 0, Math.PI / 8, 0, 2);
+    spot.position.set(0, 0, -2);
+    bulb.visible = false;
+    return { bulb, spot };
+  },
+  steps: (node, { bulb, spot }, { scene, camera, slab, skin }) => {
+    const beyond = new THREE.Mesh(new THREE.BoxGeometry(0.1, 0.1, 0.1), skin);
+    beyond.position.set(0, 0, -4); // behind the spot light
+    scene.add(beyond);
+    const facing = (n) => () => {
+      const normal = new THREE.Vector3(...n);
+      slab.quaternion.setFromUnitVectors(new THREE.Vector3(0, 0, 1), normal);
+      camera.up.set(0, n[1] === 0 ? 1 : 0, n[1] === 0 ? 0 : 1);
+      camera.position.copy(normal).multiplyScalar(0.3);
+      camera.lookAt(0, 0, 0);
+      bulb.position.copy(normal).multiplyScalar(-2);
+      beyond.position.copy(normal).multiplyScalar(-4);
+    };
+    const aimed = () => {
+      scene.remove(beyond);
+      slab.quaternion.identity();
+      slab.rotation.y = Math.PI / 4;
+      camera.up.set(0, 1, 0);
+      camera.position.set(0, 0, 0.3);
+      camera.lookAt(0, 0, 0);
+      bulb.position.set(-0.5, 0, -0.5);
+      bulb.intensity = 2;
+    };
+    return [
+      ['spot behind', () => { node.light = spot; }],
+      ['+z', () => { spot.visible = false; bulb.visible = true; node.light = bulb; facing([0, 0, 1])(); }], ['+x', facing([1, 0, 0])], ['-y', facing([0, -1, 0])], ['-z', facing([0, 0, -1])],
+      ['aimed', aimed],
+      ['spot', () => { // its cone edge outside the slab
+        Object.assign(spot, { visible: true, intensity: 2, angle: Math.PI / 4 });
+        spot.position.copy(bulb.position);
+        bulb.visible = false;
+        node.light = spot;
+      }],
+    ];
+  },
+});
+
+/** `light: 'castShadow'` on the node: the casters listed, found, one fewer, five. */
+const nodeCastShadow = ({ backend }) => slabLightFrames({
+  backend, thicknessMm: 1.5,
+  lights: (T) => {
+    const { behind: sun, spot, bulb } = FOUR_LIGHTS(T);
+    sun.castShadow = spot.castShadow = true; // the bulb casts none
+    return { sun, spot, bulb };
+  },
+  steps: (node, l, { scene }) => {
+    const extra = Array.from({ length: 3 }, () => Object.assign(new THREE.SpotLight(0xffffff, 0), { castShadow: true }));
+    return [
+      ['listed', () => { node.light = [l.sun, l.spot]; }],
+      ['castShadow', () => { node.light = 'castShadow'; }],
+      ['one casts', () => { l.spot.castShadow = false; }],
+      ['sun', () => { node.light = l.sun; }],
+      ['bulb casts', () => { l.bulb.castShadow = true; node.light = 'castShadow'; }],
+      ['six cast', () => { l.spot.castShadow = true; scene.add(...extra); }],
+      ['none cast', () => { for (const light of [l.sun, l.spot, l.bulb, ...extra]) light.castShadow = false; }],
+    ];
+  },
+});
+
+/**
+ * A row of the WebGL scene graph matrix through the node: test/pages/sceneGraph.js's scenes (the
+ * feature, and where the row has one the same picture drawn without it), drawn by three's own
+ * RenderPipeline ('plain': the scene pass alone) and by the node with scattering and transmittance
+ * off and on (its materials: the scene's 'skin' ones made subsurface), each the second of two
+ * frames, read as floats. Returns the comparisons (sceneGraph.js's compare) and each frame's render
+ * and draw calls, the light maps drawn, the node's plan, its meshes on the screen and problems.
+ */
+async function sceneGraphRow({ backend = 'webgpu', name }) {
+  const [width, height] = [SCENE_GRAPH_WIDTH, SCENE_GRAPH_HEIGHT];
+  const renderer = await sharedRenderer(backend, width, height);
+  const target = new THREE.RenderTarget(width, height, { type: THREE.FloatType });
+  const { feature, reference, referenceOptions } = SCENE_GRAPH_ROWS[name];
+  const frame = async ({ scene, camera, light }, mode, options = {}) => {
+    const made = new Map(); // one subsurface material per 'skin' material (clones keep sharing theirs)
+    scene.traverse((object) => {
+      if (object.material?.name !== 'skin') return;
+      if (!made.has(object.material)) made.set(object.material, NODE.subsurfaceMaterial(object.material, { widthMm: SCENE_GRAPH_WIDTH_MM }));
+      object.material = made.get(object.material);
+    });
+    const on = mode === 'on';
+    const built = mode === 'plain' ? { scenePass: pass(scene, camera, { type: THREE.HalfFloatType }), pipeline: new THREE.RenderPipeline(renderer), node: null }
+      : subsurfacePipeline(renderer, scene, camera, { sss: { light, worldUnitInMm: 1000, lightDepthSize: 256, scattering: on, transmittance: on, ...options.pipelineOptions } });
+    const { scenePass, pipeline, node } = built;
+    if (!node) Object.assign(pipeline, { outputColorTransform: false, outputNode: scenePass });
+    let counts;
+    for (let i = 0; i < 2; i++) {
+      renderer.info.reset();
+      renderer.setRenderTarget(target);
+      pipeline.render();
+      renderer.setRenderTarget(null);
+      counts = { calls: renderer.info.render.frameCalls, draws: renderer.info.render.drawCalls };
+      await new Promise((resolve) => { requestAnimationFrame(() => resolve()); }); // the light stage runs once a frame
+    }
+    const result = {
+      pixels: await readFloats(renderer, target), ...counts,
+      lightMaps: node ? node.lightDepths.filter((d) => d.valid).length : 0,
+      plan: node ? { blur: node.plan.blur, samples: node.plan.samples } : null,
+      onScreen: node ? node.frame.onScreen.length : 0,
+      problems: node ? [...node.problems] : [],
+    };
+    node?.dispose();
+    pipeline.dispose();
+    scenePass.dispose();
+    scene.traverse((object) => { object.geometry?.dispose(); object.material?.dispose?.(); object.material?.map?.dispose(); });
+    for (const [material, subsurface] of made) { material.dispose(); subsurface.dispose(); }
+    return result;
+  };
+  const plain = await frame(feature(), 'plain');
+  const off = await frame(feature(), 'off');
+  const on = await frame(feature(), 'on');
+  const ref = reference ? await frame(reference(), 'on', referenceOptions) : null;
+  target.dispose();
+  const strip = ({ pixels, ...rest }) => rest;
+  return {
+    offVsPlain: compare(off.pixels, plain.pixels), onVsOff: compare(on.pixels, off.pixels), onVsReference: ref ? compare(on.pixels, ref.pixels) : null,
+    plain: strip(plain), off: strip(off), on: strip(on), reference: ref ? strip(ref) : null,
+  };
+}
+
+/**
  * The lab's two leaves (test/pages/leaves.js, straight behind a directional light) as node
  * materials bent by a position node of their own (the node's counterpart of a user's vertex hook:
  * the right one a clone of the left, tinted 0.5), at a `time` uniform set after the first frame;
@@ -668,6 +944,6 @@ async function swayingLeaves({ backend = 'webgpu', width = 96, height = 54, time
 
 window.wgpu = {
   THREE, NODE, pass, createRenderer, readFloats, subsurfacePipeline, flat, disposeFlatRig, head, disposal, plainDraw, debugViews, labScene, labScenePlain, lightDepthCards,
-  dollyOpen, dollyFrames, dollyClose, lightAssigned, lightKeyOrder, sameFrame, nearLight, arrayCamera, swayingLeaves,
+  dollyOpen, dollyFrames, dollyClose, lightAssigned, lightKeyOrder, sameFrame, nearLight, arrayCamera, swayingLeaves, nodeLightList, nodePointLight, nodeCastShadow, boxFrames, sceneGraphRow,
 };
 window.testReady = true;

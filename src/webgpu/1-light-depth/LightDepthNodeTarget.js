@@ -40,10 +40,14 @@ const positionNodeOf = (material) => [material.castShadowPositionNode, material.
 /** A depth material's settings: both sides (thin open shells still record their nearest surface), no fog (it would blend the depths). */
 const asDepthMaterial = (material, name) => Object.assign(material, { name, side: DoubleSide, fog: false });
 
-/** Renders the scene from a SpotLight or DirectionalLight into linear light depth (see the file's header). */
+/**
+ * Renders the scene from a SpotLight, DirectionalLight or PointLight into linear light depth (see
+ * the file's header); a point light's six faces side by side (LightDepthView.pointFace) where it
+ * is not aimed.
+ */
 export class LightDepthNodeTarget extends LightDepthView {
   /**
-   * @param {import('three').SpotLight | import('three').DirectionalLight} light
+   * @param {import('three').SpotLight | import('three').DirectionalLight | import('three').PointLight} light
    * @param {{ size?: number, near?: number, far?: number }} [options] see LightDepthView
    */
   constructor(light, options = {}) {
@@ -83,10 +87,31 @@ export class LightDepthNodeTarget extends LightDepthView {
       });
       renderer.setRenderTarget(this.renderTarget);
       renderer.setClearColor(0x000000, 0); // 0 = no surface
-      holdingLevels(frame ? frame.lods : [], () => renderer.render(scene, this.camera));
+      holdingLevels(frame ? frame.lods : [], () => (this.isCube ? this._renderFaces(renderer, scene) : renderer.render(scene, this.camera)));
       this.valid = true;
     } finally {
       RendererUtils.restoreRendererAndSceneState(renderer, scene, _state);
+    }
+  }
+
+  /**
+   * A point light's six faces, each into its viewport of the target (LightDepthView.pointFace; y
+   * counts from the top here, as WebGPURenderer's viewports and TSL's reads both do), after one
+   * clear of the whole target: a render pass's clear is the whole target's, not its viewport's.
+   */
+  _renderFaces(renderer, scene) {
+    const { renderTarget, camera } = this;
+    renderer.clear();
+    renderer.autoClear = false;
+    camera.matrixWorldAutoUpdate = false; // the faces' turns are set by hand
+    try {
+      for (let k = 0; k < 6; k++) {
+        renderTarget.viewport.set(...this.pointFace(k));
+        renderer.render(scene, camera);
+      }
+    } finally {
+      camera.matrixWorldAutoUpdate = true;
+      renderTarget.viewport.set(0, 0, renderTarget.width, renderTarget.height);
     }
   }
 

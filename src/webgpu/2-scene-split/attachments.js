@@ -3,7 +3,7 @@
 // location). What each channel holds:
 //   output   three's colour: specular + emissive of subsurface materials, full colour elsewhere
 //   diffuse  rgb: the diffuse light (half float, linear HDR); a: 1 on subsurface pixels (the mask)
-//   surface  r: linear view depth (world units, 32-bit float: mm differences at metres need the
+//   surface  (two channels) r: linear view depth (world units, 32-bit float: mm differences at metres need the
 //            mantissa); g: the material's widthMm (profile mm per mm; the WebGL path stores world
 //            units per profile mm: here the node divides by its worldUnitInMm)
 export const ATTACHMENT_NAMES = Object.freeze({ COLOR: 'output', DIFFUSE: 'diffuse', SURFACE: 'surface' });

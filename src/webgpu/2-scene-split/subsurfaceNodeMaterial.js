@@ -85,12 +85,13 @@ function withSubsurface(Base) {
     set shrinkMm(mm) { this._subsurface.shrinkMm = checkOption(MATERIAL_SCHEMA, 'shrinkMm', mm); }
 
     /**
-     * The transmittance uniforms a node with a light writes each frame, made on the first call
-     * (the material is rebuilt once to read them).
-     * @param {{ lightDepthMap: import('three').Texture, profileLookup: import('three').Texture }} textures
+     * The transmittance uniforms a node with lights writes each frame, one set per light map
+     * (the writer points each at its map): made on the first call and again when the number of
+     * maps changes (the material is rebuilt once to read them: the number of lights recompiles it).
+     * @param {{ lightDepthMaps: import('three').Texture[], profileLookup: import('three').Texture }} textures
      */
     useTransmittance(textures) {
-      if (!this.transmittanceNodes) {
+      if (this.transmittanceNodes?.lights.length !== textures.lightDepthMaps.length) {
         this.transmittanceNodes = transmittanceUniformNodes(textures);
         this.needsUpdate = true;
       }

@@ -9,11 +9,14 @@ import { along, finite1, withAlong } from '../common/surfaceTsl.js';
 /**
  * addTap: adds one tap at `offsetPx` along the axis, each sum with its part (`parts`) of the kernel
  * weight; the tap's two texels (centres at integer + 0.5, clamped) are compared with the depth the
- * centre's plane predicts there: centreDepth + slope * (texel offset).
- * @param {{ axis: 0|1, lights: object[], lightOf: (k: number) => number, tapWeight: Function, resolutionAlong: object }} o
+ * centre's plane predicts there: centreDepth + slope * (texel offset). A texel outside the
+ * subsurface pixels' box (`boxAlong`: its first and last + 1 along the axis) is off the mask: it
+ * weighs 0 unread, as it would read (the node's blur targets are not cleared outside the box).
+ * @param {{ axis: 0|1, lights: object[], lightOf: (k: number) => number, tapWeight: Function, resolutionAlong: object, boxAlong: object[] }} o
  *   lightOf: the light sum k blurs; tapWeight: surfaceTsl.js's surfaceTap
  */
-export function tapAdder({ axis, lights, lightOf, tapWeight, resolutionAlong }) {
+export function tapAdder({ axis, lights, lightOf, tapWeight, resolutionAlong, boxAlong: [boxStart, boxEnd] }) {
+  const inBox = (at) => at.greaterThanEqual(int(boxStart)).and(at.lessThan(int(boxEnd)));
   return (offsetPx, parts, pixel, centreDepth, slope, centres, sums, weightSums) => {
     const position = float(along(pixel, axis)).add(0.5).add(offsetPx).toVar();
     If(position.greaterThanEqual(0).and(position.lessThan(resolutionAlong)), () => {
@@ -23,21 +26,22 @@ export function tapAdder({ axis, lights, lightOf, tapWeight, resolutionAlong }) 
       const last = int(resolutionAlong).sub(1);
       const at0 = clamp(int(below), 0, last).toVar();
       const at1 = clamp(int(below).add(1), 0, last).toVar();
-      const offset0 = float(at0.sub(along(pixel, axis)));
-      const offset1 = float(at1.sub(along(pixel, axis)));
-      const tap0 = tapWeight(withAlong(pixel, axis, at0), centreDepth.add(slope.mul(offset0)), centres);
-      const weight0 = fraction.oneMinus().mul(tap0.weight).toVar();
-      // A tap on a texel centre weighs its second texel 0: not fetched (the same sums).
+      const weight0 = float(0).toVar();
+      const colours0 = lights.map(() => vec3(0).toVar());
       const weight1 = float(0).toVar();
       const colours1 = lights.map(() => vec3(0).toVar());
-      If(fraction.greaterThan(0), () => {
-        const tap1 = tapWeight(withAlong(pixel, axis, at1), centreDepth.add(slope.mul(offset1)), centres);
-        weight1.assign(fraction.mul(tap1.weight));
-        colours1.forEach((colour, k) => colour.assign(tap1.colours[k]));
-      });
+      /** Texel `at`'s weight (times `share`) and colours into `weight` and `colours`, where it is in the box. */
+      const read = (at, share, weight, colours) => {
+        const tap = tapWeight(withAlong(pixel, axis, at), centreDepth.add(slope.mul(float(at.sub(along(pixel, axis))))), centres);
+        weight.assign(share.mul(tap.weight));
+        colours.forEach((colour, k) => colour.assign(tap.colours[k]));
+      };
+      If(inBox(at0), () => read(at0, fraction.oneMinus(), weight0, colours0));
+      // A tap on a texel centre weighs its second texel 0: not fetched (the same sums).
+      If(fraction.greaterThan(0).and(inBox(at1)), () => read(at1, fraction, weight1, colours1));
       const kept = weight0.add(weight1);
       If(kept.greaterThan(0), () => {
-        sums.forEach((sum, k) => sum.addAssign(parts[k].mul(tap0.colours[lightOf(k)].mul(weight0).add(colours1[lightOf(k)].mul(weight1)))));
+        sums.forEach((sum, k) => sum.addAssign(parts[k].mul(colours0[lightOf(k)].mul(weight0).add(colours1[lightOf(k)].mul(weight1)))));
         weightSums.forEach((weightSum, k) => weightSum.addAssign(parts[k].mul(kept)));
       });
     });

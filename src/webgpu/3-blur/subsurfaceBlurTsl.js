@@ -17,7 +17,7 @@ import {
 import { FOOTPRINT_ROWS } from '../../profiles/footprints.js';
 import { ENERGY_LEFT, MIN_KERNEL_PIXELS } from '../../3-blur/samplingModel.js';
 import {
-  along, finite3, readProfile, screenScale, surfaceSample, surfaceSlope, surfaceTap,
+  along, carriedDepth, finite3, readProfile, screenScale, surfaceSample, surfaceSlope, surfaceTap,
 } from '../common/surfaceTsl.js';
 import { axisStep, footprintRow, footprintStep, tapAdder } from './blurTapsTsl.js';
 
@@ -39,12 +39,17 @@ const normalised = (sum, weightSum, fallback) => vec3(
  * @param {'off'|'drop'|'lerp'} o.followSurface
  * @param {boolean} o.foreshorten the grazing-angle correction
  * @param {boolean} o.coverage the inputs were resolved from MSAA
- * @param {object} o.diffuse texture node: the light to blur (a: the mask)
+ * @param {object} o.diffuse texture node: the light to blur (a: the mask, or the depth with `carriesDepth`)
+ * @param {boolean} [o.carriesDepth] `diffuse` carries the surface's depth in its alpha (the
+ *   horizontal pass's output with `carryDepth`): the taps read no surface (carriedDepth.glsl)
+ * @param {boolean} [o.carryDepth] the output carries the centre's depth in its alpha, not the
+ *   coverage (one kernel without MSAA: the coverage is 1 on the mask)
  * @param {object} o.surface texture node: r linear view depth, g widthMm
  * @param {object} o.profile texture node of ProfileLookup.texture
  * @param {number} o.profileSize its texels per row
  * @param {object} o.footprints texture node of FootprintTable.texture
- * @param {object} o.uniforms { kernelRadiusMm, strength, projectionScale, resolution, depthFalloff, perspective, mmToWorld, marginalRangeMm }
+ * @param {object} o.uniforms { kernelRadiusMm, strength, projectionScale, resolution, depthFalloff, perspective, mmToWorld, marginalRangeMm,
+ *   subsurfaceBox (x0, y0, x1, y1: the subsurface pixels' box, from the top left; the passes run in it) }
  * @param {object} [o.groups] the isotropic blur (absent: one kernel): { count, fractions: texture
  *   node of GroupFractionTexture; horizontal: names (the multi-target's attachment of each group,
  *   its light times the group's planned share) and energies (uniform vec3s: each group's share of
@@ -70,7 +75,8 @@ export function subsurfaceBlurNode(o) {
   const partsOf = (weight, column, row) => sumGroups.map((g) => (g === null ? weight
     : weight.mul(textureLoad(groups.fractions, ivec2(column, row.add(g * FOOTPRINT_ROWS))).rgb)));
 
-  const addTap = tapAdder({ axis, lights, lightOf, tapWeight, resolutionAlong });
+  const boxAlong = axis === 0 ? [u.subsurfaceBox.x, u.subsurfaceBox.z] : [u.subsurfaceBox.y, u.subsurfaceBox.w];
+  const addTap = tapAdder({ axis, lights, lightOf, tapWeight, resolutionAlong, boxAlong });
   const stepAt = axisStep({ axis, scale, slopeAt, foreshorten: o.foreshorten });
   const footprintAt = footprintStep({ footprints: o.footprints, profileAt, marginalRangeMm: u.marginalRangeMm, blocks });
 
@@ -92,9 +98,11 @@ export function subsurfaceBlurNode(o) {
     // Not a subsurface pixel: pass through so the next pass sees the same mask.
     const results = unsplit.map((light) => vec4(light, 0).toVar());
     If(coverage.greaterThan(0), () => {
-      const surface = centre.surface;
+      const surface = centre.surface();
+      // The output, premultiplied by the coverage, or carrying the depth (SSS_DEPTH_ZERO for 0: still on the mask).
+      const out = o.carryDepth ? (light) => vec4(light, carriedDepth(surface.x)) : (light) => sample.covered(light, coverage);
       const { stepPx, slope } = stepAt(pixel, surface); // slope: depth change per pixel along the axis, world units
-      results.forEach((result, k) => result.assign(sample.covered(unsplit[k], coverage)));
+      results.forEach((result, k) => result.assign(out(unsplit[k])));
       // Below half a pixel the kernel cannot move light to another pixel: no work.
       If(stepPx.mul(u.kernelRadiusMm).greaterThanEqual(MIN_KERNEL_PIXELS), () => {
         const row = footprintRow(stepPx);
@@ -133,7 +141,7 @@ export function subsurfaceBlurNode(o) {
         // Not finite: the light unblurred (every group's share of it at once, so the groups still sum to the light).
         const values = blurred.map((light) => vec3(light).toVar());
         const finite = finite3(values.slice(1).reduce((sum, v) => sum.add(v), values[0])).toVar();
-        values.forEach((value, k) => results[k].assign(sample.covered(select(finite, value, unsplit[k]), coverage)));
+        values.forEach((value, k) => results[k].assign(out(select(finite, value, unsplit[k]))));
       });
     });
     // The horizontal group pass's outputs as a matrix's columns (one value out of a TSL function).

@@ -5,11 +5,27 @@
 // Each builder takes the pass's inputs ({ diffuse, surface }: texture nodes read with
 // textureLoad), its uniforms and its compile-time switches (axis, followSurface, coverage).
 import {
-  abs, all, bitAnd, clamp, float, floatBitsToUint, int, ivec2, max, min, mix, notEqual, select, sqrt, textureLoad, uvec3, vec2, vec3, vec4,
+  abs, all, bitAnd, clamp, float, floatBitsToUint, int, ivec2, max, min, mix, notEqual, select, sqrt, texture as textureNode, textureLoad, uvec3, vec2, vec3, vec4,
 } from 'three/tsl';
 import { MAX_PLANE_SLOPE, MAX_SLOPE, PLANE_SLOPE_AGREEMENT } from '../../3-blur/samplingModel.js';
 
 const EXPONENT = 0x7f800000;
+
+/**
+ * shaders/common/carriedDepth.glsl's SSS_DEPTH_ZERO: the alpha carrying a depth of 0 (normal, far
+ * below any threshold), so a carried depth marks the mask by being non-zero whatever its sign.
+ */
+export const DEPTH_ZERO = 1e-30;
+
+/** carriedDepth.glsl's sssCarriedDepth: the alpha that carries `depth` on the mask. */
+export const carriedDepth = (depth) => select(depth.equal(0), float(DEPTH_ZERO), depth);
+
+/**
+ * A texture node for textureLoad alone: without the uv transform three applies to a texture node
+ * made without uvs (a mat3 product and two conversions per fetch, for coordinates that are texels).
+ * @param {import('three').Texture} texture
+ */
+export const texelTexture = (texture) => textureNode(texture).setUpdateMatrix(false);
 
 /**
  * finite.glsl's sssFinite: no component NaN or Inf. WGSL has no isnan and compilers may fold
@@ -49,7 +65,7 @@ export function screenScale(u) {
  * surfaceSample.glsl: reading the surface and the diffuse light at a texel, coverage divided out
  * when the inputs were resolved from MSAA (`coverage`).
  */
-export function surfaceSample({ diffuse, surface, coverage }) {
+export function surfaceSample({ diffuse, surface, coverage, carriesDepth = false }) {
   const uncovered = (value, c) => (coverage ? select(c.greaterThan(0), value.div(c), vec2(0)) : value);
   const surfaceAt = (texel) => {
     const s = textureLoad(surface, texel).xy;
@@ -60,11 +76,16 @@ export function surfaceSample({ diffuse, surface, coverage }) {
     const colour = select(finite3(rgb), rgb, vec3(0));
     return (coverage ? select(cover.greaterThan(0), colour.div(cover), colour) : colour).toVar();
   };
-  /** The pixel a surface pass shades: { colour, coverage, surface } (see SssCentre), and its texel's `rgb` as read. */
+  /**
+   * The pixel a surface pass shades: { colour, coverage, surface() } (see SssCentre), and its
+   * texel's `rgb` as read; `surface()` reads the surface where it is called (on the mask only: a
+   * pixel off it needs none).
+   */
   const centreAt = (pixel) => {
     const light = textureLoad(diffuse, pixel).toVar();
-    const cover = select(light.a.greaterThan(0), light.a, float(0)).toVar();
-    return { colour: colourOf(light.rgb, cover), coverage: cover, surface: uncovered(textureLoad(surface, pixel).xy, cover).toVar(), rgb: light.rgb };
+    // A carried depth (carriedDepth.glsl) marks the mask by being non-zero; the coverage is 1 there.
+    const cover = (carriesDepth ? select(light.a.notEqual(0), float(1), float(0)) : select(light.a.greaterThan(0), light.a, float(0))).toVar();
+    return { colour: colourOf(light.rgb, cover), coverage: cover, surface: () => uncovered(textureLoad(surface, pixel).xy, cover).toVar(), rgb: light.rgb };
   };
   /** A surface pass's output: premultiplied by the centre's coverage, as its input was. */
   const covered = (colour, c) => vec4(vec3(colour).mul(c), c);
@@ -110,15 +131,16 @@ export function surfaceSlope(sample, u, axis) {
  * @param {{ lights: object[], surface, followSurface: 'off'|'drop'|'lerp', coverage: boolean }} inputs
  *   lights: texture nodes of the light to blur (a: the mask, the same in each)
  */
-export function surfaceTap(sample, u, { lights, surface, followSurface, coverage }) {
+export function surfaceTap(sample, u, { lights, surface, followSurface, coverage, carriesDepth = false }) {
   return (texel, expectedDepth, centres) => {
     const texels = lights.map((light) => textureLoad(light, texel).toVar());
     const alpha = texels[0].a;
-    const kept = alpha.greaterThan(0).and(finite3(texels.slice(1).reduce((sum, t) => sum.add(t.rgb), texels[0].rgb)));
+    const kept = (carriesDepth ? alpha.notEqual(0) : alpha.greaterThan(0)).and(finite3(texels.slice(1).reduce((sum, t) => sum.add(t.rgb), texels[0].rgb)));
     let weight = coverage ? alpha : float(1);
     let farness = null;
     if (followSurface !== 'off') {
-      const depth = sample.uncovered(textureLoad(surface, texel).xy, alpha).x;
+      // The light carrying the depth in its alpha: one fetch a texel, not two (carriedDepth.glsl).
+      const depth = carriesDepth ? alpha : sample.uncovered(textureLoad(surface, texel).xy, alpha).x;
       farness = clamp(abs(depth.sub(expectedDepth)).mul(u.depthFalloff), 0, 1);
       if (followSurface === 'drop') weight = weight.mul(farness.oneMinus());
     }

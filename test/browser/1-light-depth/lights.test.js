@@ -5,6 +5,7 @@
 import { describe, it, expect, beforeAll, afterAll } from 'vitest';
 import { evaluateFloats, openPage, closeCheckedPage } from '../../harness/page.js';
 import { transmittedFractionOracle } from '../../oracle/transmittance.js';
+import { middle } from '../../harness/images.js';
 
 let page;
 beforeAll(async () => { page = await openPage('/test/pages/lab.html'); });
@@ -54,15 +55,6 @@ function slabFrames(options) {
     renderer.dispose();
     return out;
   }, { ...options, lightsSource: options.lights.toString(), stepsSource: (options.steps ?? (() => [['made', () => {}]])).toString() });
-}
-
-/** Mean RGB over the middle `share` of a square image's width and height. */
-function middle(rgba, size, share = 0.3) {
-  const lo = Math.round(size * (0.5 - share / 2));
-  const hi = Math.round(size * (0.5 + share / 2));
-  const sum = [0, 0, 0];
-  for (let y = lo; y < hi; y++) for (let x = lo; x < hi; x++) for (let c = 0; c < 3; c++) sum[c] += rgba[(y * size + x) * 4 + c];
-  return sum.map((v) => v / (hi - lo) ** 2);
 }
 
 const worst = (a, b) => a.reduce((m, v, i) => (i % 4 === 3 ? m : Math.max(m, Math.abs(v - b[i]))), 0);

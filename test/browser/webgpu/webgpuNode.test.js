@@ -11,6 +11,9 @@
 //   kernel and with the isotropic blur's two, three and four groups; on WebGPU
 //   (its surface attachment in half float: WebGPU multisamples no 32-bit float format) as close
 //   to it as WebGPU's own MSAA frame is to WebGLRenderer's;
+// - the subsurface box (the blur runs there only, its targets not cleared outside it): every
+//   subsurface pixel inside it, and a box that moved between frames leaves the same floats, with
+//   one kernel, four groups and MSAA (the WebGL pipeline's test/browser/pipelineFrame.test.js);
 // - dispose, after frames with one kernel, with scattering off, in four, three and two groups and
 //   in one kernel again (each count's target and materials built, the previous freed), returns the
 //   renderer to its baseline (renderer.info.memory: geometries, textures, render targets, programs; one attribute stays, the full-screen quad's geometry that the node,
@@ -40,8 +43,36 @@ const run = (name, options) => page.evaluate(async (n, o) => {
   return Object.fromEntries(Object.entries(r).map(([k, v]) => [k, v instanceof Uint8Array ? Array.from(v) : v]));
 }, name, options).then(bytes);
 
+const maxDifference = (a, b) => a.reduce((worst, v, i) => Math.max(worst, Math.abs(v - b[i])), 0);
+
 for (const backend of BACKENDS) {
   describe(`the node on ${backend}`, () => {
+    it('blurs in the subsurface box alone: every subsurface pixel in it, and a box that moved between frames leaves the same floats (one kernel, four groups, MSAA)', async () => {
+      const r = await evaluateFloats(page, (o) => window.wgpu.boxFrames(o), {
+        backend,
+        variants: {
+          base: {}, moved: { moved: true }, isotropic: { sss: { kernelGroups: 4 } }, isotropicMoved: { sss: { kernelGroups: 4 }, moved: true },
+          msaa: { samples: 4 }, msaaMoved: { samples: 4, moved: true },
+        },
+      });
+      const [x0, y0, x1, y1] = r.base.box;
+      expect(r.base.plan).toMatchObject({ blur: true, groups: 1 });
+      expect(r.isotropic.plan.groups).toBe(4);
+      // A box smaller than the frame (the whole frame would test nothing), holding every subsurface pixel.
+      expect((x1 - x0) * (y1 - y0)).toBeLessThan(0.6 * r.width * r.height);
+      expect((x1 - x0) * (y1 - y0)).toBeGreaterThan(0.05 * r.width * r.height);
+      r.base.mask.forEach((alpha, i) => {
+        const x = i % r.width;
+        const y = r.height - 1 - Math.floor(i / r.width); // rows bottom-up; the box's from the top
+        if (alpha !== 0) expect(x >= x0 && x < x1 && y >= y0 && y < y1, `pixel ${x}, ${y}`).toBe(true);
+      });
+      for (const [moved, base] of [['moved', 'base'], ['isotropicMoved', 'isotropic'], ['msaaMoved', 'msaa']]) {
+        expect(maxDifference(r[moved].output, r[base].output), moved).toBe(0);
+        expect(maxDifference(r[moved].scattered, r[base].scattered), moved).toBe(0);
+      }
+    });
+
+
     it('draws the head as the EffectComposer path does: mean |difference| ≤ 1/255, 99th percentile ≤ 4/255', async () => {
       // The demo's framing, and a close-up (8°: about 3 px per mm) where the scattering shows.
       for (const fovDeg of [25, 8]) {
@@ -151,6 +182,60 @@ for (const backend of BACKENDS) {
       expect(blurred).toBe(true); // one kernel, no blur with scattering off, four, three and two groups, one kernel
       expect(during.textures).toBeGreaterThan(before.textures); // the node's targets and tables were counted
       for (const key of ['geometries', 'textures', 'renderTargets', 'programs']) expect(after[key], key).toBe(before[key]);
+    });
+  });
+}
+
+// The rows of the WebGL scene graph matrix (test/browser/sceneGraph.test.js, its scenes
+// test/pages/sceneGraph.js) that the node's renderer has, with the same oracles: off (no
+// scattering, no transmittance), three's own RenderPipeline frame; on, the same picture drawn
+// without the feature; its cost what is on the screen (render and draw calls, light maps drawn).
+const sceneGraphRow = (backend, name) => page.evaluate((o) => window.wgpu.sceneGraphRow(o), { backend, name });
+/** Within half-float rounding of the reference's largest value (as the WebGL matrix). */
+const within = (comparison, relative = 2e-3) => comparison.worst <= relative * Math.max(1, comparison.level);
+
+/** What every row holds: no NaN, and off equal to three's frame. */
+function expectOffAsThree(r) {
+  expect(r.offVsPlain.nonFinite + r.onVsOff.nonFinite).toBe(0);
+  expect(within(r.offVsPlain), JSON.stringify(r.offVsPlain)).toBe(true);
+}
+
+for (const backend of BACKENDS) {
+  describe(`the node on ${backend} and three's scene graph: off, as three; on, as the same picture without the feature; costs what is on the screen`, () => {
+    for (const name of ['visible', 'behindCamera']) {
+      it(`${name}: no subsurface mesh on the screen, so the frame is three's own, render and draw call for call, with no light map`, async () => {
+        const r = await sceneGraphRow(backend, name);
+        expectOffAsThree(r);
+        expect(r.on.onScreen).toBe(0);
+        expect(r.onVsOff.worst).toBe(0);
+        expect([r.on.calls, r.on.draws]).toEqual([r.plain.calls, r.plain.draws]);
+        expect(r.on.lightMaps).toBe(0);
+        expect(r.on.plan.blur).toBe(false);
+      });
+    }
+
+    const equivalent = {
+      cameraLayers: 'the subsurface mesh on layer 1 of a camera seeing 0 and 1: as on layer 0, transmittance included',
+      instancedMesh: 'an InstancedMesh with a colour per instance: as separate meshes',
+    };
+    for (const [name, title] of Object.entries(equivalent)) {
+      it(title, async () => {
+        const r = await sceneGraphRow(backend, name);
+        expectOffAsThree(r);
+        expect(within(r.onVsReference), JSON.stringify(r.onVsReference)).toBe(true);
+        expect(r.on.onScreen).toBeGreaterThan(0);
+        expect(r.onVsOff.differing).toBeGreaterThan(100); // scattered and transmitted: hundreds of the slab's pixels
+        expect(r.on.lightMaps).toBe(1);
+        expect(r.on.problems).toEqual([]);
+      });
+    }
+
+    it("the light's shadow camera on layer 2 only: its pass leaves the mesh on layer 0 out (three's shadow rule), so it scatters without transmittance", async () => {
+      const r = await sceneGraphRow(backend, 'lightLayers');
+      expectOffAsThree(r);
+      expect(within(r.onVsReference), JSON.stringify(r.onVsReference)).toBe(true); // the reference: transmittance off
+      expect(r.on.lightMaps).toBe(0);
+      expect(r.onVsOff.differing).toBeGreaterThan(100); // scattered
     });
   });
 }

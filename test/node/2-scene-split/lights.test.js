@@ -28,7 +28,7 @@ describe('the settings a light needs, set at once in any key order (issue 40)', 
   };
   /** The same of the WebGPU node: its light stage's light, whether the light's views show, the compose's view. */
   const nodeState = (node) => ({
-    light: node.light === null ? null : node._lightStage.lightDepth.light.uuid,
+    lights: node.lightDepths.map((d) => d.light.uuid),
     shown: node._uniforms.lightShown.value,
     view: node._uniforms.debugView.value,
   });

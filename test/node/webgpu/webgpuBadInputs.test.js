@@ -82,10 +82,15 @@ const NODE_CASES = [
   ["a WebGL pipeline's option", (t) => t.NODE.subsurfaceScattering(pass(t.scene, t.camera), { multisampling: 4 }), 'TypeError', /unknown option "multisampling"/],
   ["method: 'marginal' (WebGL only)", (t) => t.make({ method: 'marginal' }), 'RangeError', /method 'marginal' is not available on the WebGPU node \(only 'footprint'/],
   ["method = 'reference'", (t) => { t.sss.method = 'reference'; }, 'RangeError', /^method 'reference' is not available on the WebGPU node/],
-  ['light: a PointLight (the WebGL pipeline only)', (t) => t.make({ light: new t.THREE.PointLight() }), 'TypeError', /^light: the WebGPU node takes a SpotLight or DirectionalLight, got a PointLight/],
-  ['light = two lights (the WebGL pipeline only)', (t) => { t.sss.light = [t.light, new t.THREE.SpotLight()]; }, 'RangeError', /^light: the WebGPU node takes one light, got a list of 2/],
-  ["light: 'castShadow' (the WebGL pipeline only)", (t) => t.make({ light: 'castShadow' }), 'RangeError', /^light: the WebGPU node takes one light, got 'castShadow'/],
+  // The WebGL pipeline's lights and refusals (test/browser/1-light-depth/lights.test.js asks the same of it).
+  ['light: a PointLight: taken', (t) => t.make({ light: new t.THREE.PointLight() }), 'ok'],
+  ['light = two lights: taken', (t) => { t.sss.light = [t.light, new t.THREE.PointLight()]; }, 'ok'],
+  ["light: 'castShadow': taken", (t) => t.make({ light: 'castShadow' }), 'ok'],
   ['light = [one light]: taken', (t) => { t.sss.light = [t.light]; }, 'ok'],
+  ['light = a light twice', (t) => { t.sss.light = [t.light, t.light]; }, 'RangeError', /^light lists a light twice$/],
+  ['light = five lights', (t) => { t.sss.light = Array.from({ length: 5 }, () => new t.THREE.SpotLight()); }, 'RangeError', /^light must list 1 to 4 lights, got 5$/],
+  ['light: []', (t) => t.make({ light: [] }), 'RangeError', /^light must list 1 to 4 lights, got 0$/],
+  ['light = [a light, an AmbientLight]', (t) => { t.sss.light = [t.light, new t.THREE.AmbientLight()]; }, 'TypeError', /^light\[1\] must be a THREE\.SpotLight, THREE\.DirectionalLight or THREE\.PointLight, got an AmbientLight$/],
   ["debugView = 'thickness' with a light: taken", (t) => { t.make({ light: t.light }).debugView = 'thickness'; }, 'ok'],
   ['subsurfaceMaterial(null)', (t) => t.NODE.subsurfaceMaterial(null), 'TypeError', /subsurfaceMaterial: material must be a THREE\.MeshStandardMaterial or MeshPhysicalMaterial \(or its node version\), got null/],
   ['subsurfaceMaterial(a MeshBasicMaterial)', (t) => t.NODE.subsurfaceMaterial(new t.THREE.MeshBasicMaterial()), 'TypeError', /material must be .*got a MeshBasicMaterial/],
@@ -111,6 +116,25 @@ describe("the node's own bad inputs", () => {
       const skin = t.NODE.subsurfaceMaterial(new t.THREE.MeshPhysicalMaterial({ clearcoat: 1 }), { widthMm: 2 });
       expect(skin.isSubsurfaceNodeMaterial && skin.isMeshPhysicalNodeMaterial).toBe(true);
       expect(skin.widthMm).toBe(2);
+    } finally {
+      t.dispose();
+    }
+  });
+
+  it("a list of lights reads back as given, frozen, a map per light (a point light's of six faces where it is not aimed yet); 'castShadow' reads back, its maps found each frame", () => {
+    const t = nodeFixture();
+    try {
+      const bulb = new t.THREE.PointLight();
+      const node = t.make({ light: [t.light, bulb], lightDepthSize: 64 });
+      expect(node.light).toEqual([t.light, bulb]);
+      expect(Object.isFrozen(node.light)).toBe(true);
+      expect(node.transmittance).toBe(true);
+      expect(node.lightDepths.map((map) => [map.light, map.isCube, map.renderTarget.width, map.renderTarget.height])).toEqual([[t.light, false, 64, 64], [bulb, true, 96, 64]]);
+      expect(node.lightDepth.light).toBe(t.light);
+      node.light = 'castShadow';
+      expect([node.light, node.lightDepths.length, node.lightDepth]).toEqual(['castShadow', 0, null]);
+      node.light = bulb;
+      expect(node.lightDepths.map((map) => map.light)).toEqual([bulb]);
     } finally {
       t.dispose();
     }
