@@ -362,5 +362,11 @@ async function peerCoverage() {
   return { pixels: width * height, subsurfacePixels, boxPixels: box ? box.width * box.height : width * height, box, taps: await autoTaps() };
 }
 
-window.bench = { info, open, close, reference, measure, readDense, timeSss, peerImages, peerFloorImages, peerMeasure, peerCoverage, drawChart };
+/** The memory the pipeline allocates with `options` (bench/memory.js), on a renderer of its own. */
+async function memory(options) {
+  const { measureMemory } = await import('./memory.js');
+  return measureMemory(options);
+}
+
+window.bench = { info, open, close, reference, measure, readDense, timeSss, peerImages, peerFloorImages, peerMeasure, peerCoverage, drawChart, memory };
 window.testReady = true;

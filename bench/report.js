@@ -413,9 +413,52 @@ export function withBenchSection(markdown, heading, section) {
   return `${markdown.slice(0, from)}${section}\n\n${markdown.slice(end)}`;
 }
 
+export const WARM_UP_HEADING = '## The first frame: warmed up or not';
+
+/**
+ * The first frame against a steady one on a fresh browser (bench/warmUp.js's results): after the
+ * pipeline's compileAsync, after three's renderer.compileAsync alone, and without a warm-up.
+ * @param {object|null} warmUp bench/results/warm-up.json
+ */
+export function warmUpSection(warmUp) {
+  if (!warmUp?.summary) return '';
+  const names = (list) => (list.length ? ` (${list.map((name) => name || 'unnamed').join(', ')})` : '');
+  const row = (name, label) => {
+    const r = warmUp.summary[name];
+    return `| ${label} | ${r.warmUpMs.toFixed(0)} | ${r.programsWarmed} | ${r.programsFirstFrame}${names(r.firstPrograms)} | ${r.firstMs.toFixed(0)} | ${r.secondMs.toFixed(0)} | ${r.steadyMs.toFixed(0)} | ×${r.firstOverSteady.toFixed(2)} |`;
+  };
+  return [`${WARM_UP_HEADING} (\`${warmUp.command}\`, ${warmUp.date.slice(0, 10)})`, '',
+    `The head at ${warmUp.width}×${warmUp.height} with the defaults and its transmitting light (its depth pass drawn; the light casts three's shadow), on a fresh browser each time (no program compiled, no shader cache), in ${warmUp.rounds} interleaved rounds (bench/warmUpPage.js); the first frame, the second, and the median of ${warmUp.frames} steady frames, each closed by a read-back, on SwiftShader (KHR_parallel_shader_compile ${warmUp.parallelCompile ? 'present' : 'absent'}): CPU times, to compare as ratios within the run. Medians over the rounds; the programs of the first round, by material name (unnamed: the head's material or three's shadow map depth material; what the warm-up leaves is the latter, by elimination: a subsurface material's is warmed, as test/browser/programs.test.js checks, and three draws its shadow maps inside render(), out of any compileAsync's reach).`, '',
+    '| warm-up | its ms | programs it compiled | programs the first frame compiled | first frame ms | second | steady | first over steady |', '|---|---|---|---|---|---|---|---|',
+    row('pipeline', '`await sss.compileAsync(renderer, composer.readBuffer)`'),
+    row('uploads', 'the same, then the textures uploaded (`renderer.initTexture`)'),
+    row('three', '`await renderer.compileAsync(scene, camera)` (three\'s alone)'),
+    row('none', 'none'),
+  ].join('\n');
+}
+
+export const MEMORY_HEADING = '## Memory: what the pipeline allocates';
+
+/**
+ * The bytes the pipeline allocates per setting (bench/memoryRun.js's results), counted from the
+ * storage calls of its targets: per pixel, the light maps, the tables.
+ * @param {object|null} memory bench/results/memory.json
+ */
+export function memorySection(memory) {
+  if (!memory?.results) return '';
+  const [first] = memory.results;
+  const mib = (bytes) => (bytes / 2 ** 20).toFixed(1);
+  const rows = memory.results.map((r) => `| ${r.label} | ${r.bytesPerPixel.toFixed(0)} | ${mib(r.bytesPerPixel * r.width * r.height)} | ${mib(r.lightMapBytes)} | ${(r.tableBytes / 2 ** 10).toFixed(0)} |`);
+  return [`${MEMORY_HEADING} (\`${memory.command}\`, ${memory.date.slice(0, 10)})`, '',
+    `The head at ${first.width}×${first.height}, the pipeline in place of a RenderPass in one composer (half-float buffers; MSAA as the row says, \`multisampling: 'auto'\` following it): what its frames add to what the plain frame allocated, counted from the sizes of the texture and renderbuffer storage calls (dev/glAllocations.js; a multisampled buffer counts each sample). Per pixel: the targets of the frame's size; light maps: lightDepthSize² each (RG float and its depth, 12 B a texel; the point light behind the ear six faces, 3 × 2 of them); tables: the profiles', footprints' and kernels'. Not counted: the composer's own two buffers and three's (${first.plainBytesPerPixel.toFixed(0)} B per pixel without MSAA). \`scattering\` false releases the blur's targets (before this release they stayed allocated: the defaults' bytes).`, '',
+    '| setting | bytes per pixel | MiB at this size | light maps, MiB | tables, KiB |', '|---|---|---|---|---|',
+    ...rows,
+  ].join('\n');
+}
+
 /**
  * @param {object} json bench/results/<name>.json
- * @param {{ transfer?: object, surfaceTruth?: object, webgpu?: object, lights?: object, sceneGraph?: object }} [beyond] the other runs' results (see beyondDenseSection, webgpuSection, lightsSection, sceneGraphSection)
+ * @param {{ transfer?: object, surfaceTruth?: object, webgpu?: object, lights?: object, sceneGraph?: object, warmUp?: object, memory?: object }} [beyond] the other runs' results (see beyondDenseSection, webgpuSection, lightsSection, sceneGraphSection, warmUpSection, memorySection)
  */
 export function benchMarkdown(json, beyond = {}) {
   const { results } = json;
@@ -478,6 +521,10 @@ ${webgpuSection(beyond.webgpu)}
 ${lightsSection(beyond.lights)}
 
 ${sceneGraphSection(beyond.sceneGraph)}
+
+${warmUpSection(beyond.warmUp)}
+
+${memorySection(beyond.memory)}
 
 ${issueTableSection(json)}
 

@@ -323,7 +323,7 @@ async function main() {
   // The full run's report is docs/BENCH.md; a quick or GPU run's goes beside its results.
   const markdownPath = quick || gpu ? join(outDir, `${name}.md`) : join(root, 'docs/BENCH.md');
   const resultOf = async (file) => JSON.parse(await readFile(join(root, 'bench/results', file), 'utf8').catch(() => 'null'));
-  await writeFile(markdownPath, benchMarkdown(json, { transfer: await resultOf('transfer.json'), surfaceTruth: await resultOf('surface-truth.json'), webgpu: await resultOf('webgpu.json'), lights: await resultOf('lights.json'), sceneGraph: await resultOf('scene-graph.json') }));
+  await writeFile(markdownPath, benchMarkdown(json, { transfer: await resultOf('transfer.json'), surfaceTruth: await resultOf('surface-truth.json'), webgpu: await resultOf('webgpu.json'), lights: await resultOf('lights.json'), sceneGraph: await resultOf('scene-graph.json'), warmUp: await resultOf('warm-up.json'), memory: await resultOf('memory.json') }));
   log(`wrote ${relative(root, markdownPath)}`);
   for (const p of json.peers ?? []) {
     const { overhead } = p.summary;

@@ -44,6 +44,7 @@ import { SubsurfaceScenePass } from './2-scene-split/SubsurfaceScenePass.js';
 import { BlurStage } from './3-blur/BlurStage.js';
 import { SubsurfaceComposePass } from './4-compose/SubsurfaceComposePass.js';
 import { materialOutputOf } from './4-compose/debugViews.js';
+import { compilePassPrograms, compileSceneInto } from './support/compilePrograms.js';
 import { holdingMatrices, preservingRendererState } from './support/rendererState.js';
 import { nameClass } from './support/className.js';
 
@@ -439,6 +440,44 @@ export class SubsurfaceScattering extends PassWithSettings {
       else if (this.clearDepth) renderer.clearDepth();
       holdingMatrices(scene, () => renderer.render(scene, camera)); // updated by collect
     });
+  }
+
+  /**
+   * Compiles every shader program the next frames draw with, before they draw (no first-frame
+   * stall), in parallel where the browser has KHR_parallel_shader_compile: the scene's materials as
+   * the split and a plain frame draw them, each light's depth materials, and the pipeline's passes
+   * with the variants a frame switches between as the view moves (kernelGroups 'auto''s counts,
+   * the output's depth). three's own `renderer.compileAsync(scene, camera)` compiles the scene's
+   * materials for the screen only. Call it again after a setting that recompiles (README).
+   * ```js
+   * await sss.compileAsync(renderer, composer.readBuffer);
+   * renderer.setAnimationLoop(() => composer.render());
+   * ```
+   * @param {import('three').WebGLRenderer} renderer
+   * @param {import('three').WebGLRenderTarget|null} [readBuffer=null] what render() is given to
+   *   draw into (the composer's read buffer; `multisampling: 'auto'` follows its `samples`); null
+   *   where it is not at hand (renderer.setEffects): any target compiles the same programs
+   * @returns {Promise<void>} resolved once every program is ready to draw with
+   */
+  compileAsync(renderer, readBuffer = null) {
+    assertFloatRenderTargets(renderer, 'SubsurfaceScattering.compileAsync');
+    if (readBuffer !== null && readBuffer?.isRenderTarget !== true) {
+      throw new TypeError(`SubsurfaceScattering.compileAsync: readBuffer must be a THREE.WebGLRenderTarget or null, got ${describe(readBuffer)}`);
+    }
+    const { scene, camera } = this;
+    if (this.light === CAST_SHADOW) this._useLights(lightsOf(CAST_SHADOW, scene));
+    const msaaSamples = this.multisampling === 'auto' ? (readBuffer?.samples ?? 0) : this.multisampling;
+    if (this._scenePass.setSamples(msaaSamples)) this._blur.setMultisampled(msaaSamples > 0);
+    this._composePass.setClear(this.clear, this.clearDepth);
+    // three keys a program by whether it draws to the screen, not by which target: any stands in.
+    const target = this.renderToScreen ? null : readBuffer ?? this._blur.scatteredTarget;
+    return Promise.all([
+      compileSceneInto(renderer, scene, camera, this._scenePass.renderTarget), // the split
+      compileSceneInto(renderer, scene, camera, target), // a plain frame; the transparent objects
+      ...this._lightDepths.map((lightDepth) => lightDepth.compileAsync(renderer, scene)),
+      compilePassPrograms(renderer, this._blur.warmUpMaterials(), this._blur.scatteredTarget),
+      compilePassPrograms(renderer, this._composePass.warmUpMaterials(target), target),
+    ]).then(() => undefined);
   }
 
   /**

@@ -12,6 +12,7 @@ import { preservingRendererState } from '../support/rendererState.js';
 import { LightDepthView, boundsNoVolume } from './LightDepthView.js';
 import { holdingLevels, isDrawable, renderingOnly } from '../frameMeshes.js';
 import { nameClass } from '../support/className.js';
+import { compileSceneInto } from '../support/compilePrograms.js';
 
 /** The drawable objects of `scene` visible with their ancestors (a LightDepthTarget used alone). */
 function visibleObjects(scene) {
@@ -205,16 +206,9 @@ export class LightDepthTarget extends LightDepthView {
     const shadowsNeedUpdate = renderer.shadowMap.needsUpdate;
     preservingRendererState(renderer, scene, () => {
       try {
-        // Per mesh, not scene.overrideMaterial, which would draw a leaf card's cut-away corners
-        // and a glass pane as solid (three's shadow maps do the same). What three culls from the
-        // light's view keeps its material: it is not drawn.
-        const drawn = frame ? this.inView : this.inViewOf(visibleObjects(scene).filter((object) => object.layers.test(camera.layers)));
-        for (const object of drawn) {
-          const depthMaterial = this.depthMaterialOf(object);
-          if (depthMaterial === null) continue;
-          swapped.push([object, object.material]);
-          object.material = depthMaterial;
-        }
+        // What three culls from the light's view keeps its material: it is not drawn.
+        const drawn = frame ? this.inView : this.inViewOf(this._candidates(scene));
+        this._wearDepthMaterials(drawn, swapped);
         scene.overrideMaterial = null;
         scene.background = null;
         renderer.shadowMap.autoUpdate = false;
@@ -235,6 +229,44 @@ export class LightDepthTarget extends LightDepthView {
         renderer.shadowMap.needsUpdate = shadowsNeedUpdate;
       }
     });
+  }
+
+  /**
+   * Compiles the programs render() draws `scene` with (each object's depth material, for every
+   * visible object on the light's layers: whichever the light's view holds when it draws), through
+   * three's renderer.compileAsync, in parallel where KHR_parallel_shader_compile exists.
+   * @param {import('three').WebGLRenderer} renderer
+   * @param {import('three').Scene} scene
+   * @returns {Promise<void>} resolved once they are ready to draw with
+   */
+  compileAsync(renderer, scene) {
+    this.camera.layers.mask = this.layers.mask;
+    const swapped = [];
+    try {
+      this._wearDepthMaterials(this._candidates(scene), swapped);
+      return compileSceneInto(renderer, scene, this.camera, this.renderTarget);
+    } finally {
+      for (const [object, material] of swapped) object.material = material;
+    }
+  }
+
+  /** The visible drawable objects of `scene` on the light's layers (its view decides which it draws). */
+  _candidates(scene) {
+    return visibleObjects(scene).filter((object) => object.layers.test(this.camera.layers));
+  }
+
+  /**
+   * Gives each of `objects` its depth material, listing [object, its material] in `swapped` for the
+   * caller to put back. Per mesh, not scene.overrideMaterial, which would draw a leaf card's
+   * cut-away corners and a glass pane as solid (three's shadow maps do the same).
+   */
+  _wearDepthMaterials(objects, swapped) {
+    for (const object of objects) {
+      const depthMaterial = this.depthMaterialOf(object);
+      if (depthMaterial === null) continue;
+      swapped.push([object, object.material]);
+      object.material = depthMaterial;
+    }
   }
 }
 

@@ -15,7 +15,7 @@ import { AUTO_SAMPLES, METHOD_TABLE, PIPELINE_SCHEMA, checkOption } from '../opt
 import { blendKernels, blurModeOf, checkProfileCount, planBlur } from './blurPlan.js';
 import { SubsurfaceBlurPass } from './SubsurfaceBlurPass.js';
 import { KernelGroupTable } from './KernelGroupTable.js';
-import { MAX_KERNEL_GROUPS, checkKernelGroups } from './kernelGroups.js';
+import { MAX_KERNEL_GROUPS, checkKernelGroups, possibleGroupCounts } from './kernelGroups.js';
 import { tableOf } from '../profiles/FootprintTable.js';
 
 const TRANSPARENT_BLACK = new Float32Array(4);
@@ -63,8 +63,7 @@ export class BlurStage {
     this.profileLookup = profileLookup;
     /** The profiles' tables by slot; the first one's kernel is the fixed-tap methods'. */
     this.profileLookups = [profileLookup];
-    /** false turns the blur off (the orchestrator's `scattering`). */
-    this.scattering = true;
+    this._scattering = true;
     this._settings = { profile: profileLookup.profile, method: checkOption(PIPELINE_SCHEMA, 'method', method), samples, strength, falloff };
     this._kernels = new WeakMap(); // profile → computed kernels by their arguments: 'auto' switches between a few
     this._surface = surface;
@@ -150,6 +149,35 @@ export class BlurStage {
   /** The most groups a frame may take: MAX_KERNEL_GROUPS when the method and setting group, else 1 (one kernel). */
   get groupCapacity() {
     return METHOD_TABLE[this.method].blur === 'footprint' && this._kernelGroups !== 1 ? MAX_KERNEL_GROUPS : 1;
+  }
+
+  /**
+   * false turns the blur off (the orchestrator's `scattering`) and releases its targets (the
+   * horizontal pass's, the scattered light's, the groups'), which no frame reads until it is on
+   * again: three allocates them again on their next use, cleared as the scissor's first frame.
+   * @type {boolean}
+   */
+  get scattering() { return this._scattering; }
+
+  set scattering(on) {
+    this._scattering = on;
+    if (on) return;
+    this._blurTarget.dispose();
+    this.scatteredTarget.dispose();
+    if (this._groupTarget) this._freeGroupTarget();
+    this._scissorKey = null;
+  }
+
+  /**
+   * The materials the blur's next frames may draw with under the current settings (warm-up,
+   * SubsurfaceScattering.compileAsync): both passes' for one kernel, or for each count of groups a
+   * frame may take (kernelGroups.js's possibleGroupCounts), and the dense reference's where it is on.
+   * @returns {import('three').ShaderMaterial[]}
+   */
+  warmUpMaterials() {
+    if (this._dense) return [this.densePass.material];
+    const counts = this.groupCapacity === 1 ? [1] : possibleGroupCounts(this.profileLookups.map((lookup) => lookup.profile), this._kernelGroups);
+    return counts.flatMap((count) => [this.horizontalPass.groupMaterial(count), this.verticalPass.groupMaterial(count)]);
   }
 
   /** The dense 2D reference (useDenseReference), built on first use. */

@@ -170,20 +170,24 @@ export class SubsurfaceBlurPass extends SurfacePass {
     this.uniforms.tGroups1.value = groups[1] ?? null;
   }
 
-  /** The material of this frame's groups: `material`, or its variant for the count (defines synced, uniforms shared). */
-  _groupMaterial() {
-    if (this.groups === 1) return this.material;
-    let variant = this._groupMaterials.get(this.groups);
+  /**
+   * The material `count` groups draw with: `material`, or its variant for the count (defines
+   * synced, uniforms shared; kept, so that its program stays compiled: BlurStage.warmUpMaterials).
+   * @param {number} [count=this.groups]
+   */
+  groupMaterial(count = this.groups) {
+    if (count === 1) return this.material;
+    let variant = this._groupMaterials.get(count);
     if (!variant) {
       // As ShaderPass builds `material`, from the groups' shader, sharing its uniforms (clone()
       // would copy them, and warns at render targets' textures).
       const { name, vertexShader, glslVersion, uniforms } = this.material;
       this._groupShader ??= assembleSurfaceGlsl(name, kernelGroupsBlurGlsl, GROUP_CHUNKS);
       variant = new ShaderMaterial({ name, vertexShader, fragmentShader: this._groupShader, glslVersion, uniforms, defines: { ...this.material.defines } });
-      this._groupMaterials.set(this.groups, variant);
+      this._groupMaterials.set(count, variant);
     }
     // The groups have their own target: the vertical pass reads them, not the carried light.
-    setDefines(variant, { ...this.material.defines, SSS_GROUPS: this.groups, SSS_MAX_GROUPS: MAX_KERNEL_GROUPS, ...(this.direction === 'vertical' ? { SSS_LIGHT_CARRIES_DEPTH: 0 } : {}) });
+    setDefines(variant, { ...this.material.defines, SSS_GROUPS: count, SSS_MAX_GROUPS: MAX_KERNEL_GROUPS, ...(this.direction === 'vertical' ? { SSS_LIGHT_CARRIES_DEPTH: 0 } : {}) });
     return variant;
   }
 
@@ -301,7 +305,7 @@ export class SubsurfaceBlurPass extends SurfacePass {
     this.uniforms.kernelRadiusMm.value = this.radiusMm;
     // ShaderPass draws `material`: this frame's groups' variant stands in for the draw.
     const base = this.material;
-    this.material = this._groupMaterial();
+    this.material = this.groupMaterial();
     try {
       super.render(renderer, writeBuffer, readBuffer, deltaTime, maskActive);
     } finally {

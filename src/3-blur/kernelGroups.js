@@ -327,6 +327,19 @@ export function kernelGroupsAt(profile, pxPerMm, setting = 'auto') {
   return byRow.get(key);
 }
 
+/**
+ * The counts of groups a frame may take with `setting` over `profiles` (the frame takes the most
+ * of its profiles'; no profile more than its Gaussians): the programs a warm-up compiles.
+ * @param {readonly object[]} profiles @param {'auto'|number} setting
+ * @returns {number[]}
+ */
+export function possibleGroupCounts(profiles, setting) {
+  checkKernelGroups(setting);
+  const most = Math.max(1, ...profiles.map((profile) => gaussianSumOf(profile).gaussians.length));
+  const top = Math.min(setting === 'auto' ? MAX_KERNEL_GROUPS : setting, most);
+  return setting === 'auto' ? Array.from({ length: top }, (_, i) => i + 1) : [top];
+}
+
 /** 'auto' groups at `pxPerMm` (kernelGroupsAt with 'auto'). @param {object} profile @param {number} pxPerMm */
 export const autoKernelGroups = (profile, pxPerMm) => kernelGroupsAt(profile, pxPerMm, 'auto');
 

@@ -7,6 +7,7 @@ import composeGlsl from '../../shaders/4-compose/compose.frag.glsl?raw';
 import finiteGlsl from '../../shaders/common/finite.glsl?raw';
 import carriedDepthGlsl from '../../shaders/common/carriedDepth.glsl?raw';
 import { assembleGlsl, enumDefines, setDefines } from '../support/glsl.js';
+import { definesVariant } from '../support/compilePrograms.js';
 import { describe } from '../support/rendererSupport.js';
 import { checkBoolean, checkOneOf, checkNumber, checkOptions } from '../support/parameterChecks.js';
 import { PASS_BOOLEANS, booleanFields } from '../support/booleanFields.js';
@@ -200,8 +201,25 @@ export class SubsurfaceComposePass extends ShaderPass {
   }
 
   /** Frees the pass; an output that took the scene split's depth gets its own back. */
+  /**
+   * The materials the next frame may draw with into `target` (SubsurfaceScattering.compileAsync):
+   * `material`, and where render() may hand the split's depth on (a multisampled output, clear) its
+   * copy with the depth written the other way, kept so that its program stays compiled.
+   * @param {import('three').WebGLRenderTarget|null} target the output (null: the screen)
+   * @returns {import('three').ShaderMaterial[]}
+   */
+  warmUpMaterials(target) {
+    this._twin?.dispose();
+    this._twin = null;
+    if (!this._clear || !(target?.samples > 0)) return [this.material];
+    this._twin = definesVariant(this.material, { WRITE_DEPTH: this.material.defines.WRITE_DEPTH ? 0 : 1 });
+    return [this.material, this._twin];
+  }
+
   dispose() {
     this._depthShare.release();
+    this._twin?.dispose();
+    this._twin = null;
     super.dispose();
   }
 

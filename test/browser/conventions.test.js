@@ -57,6 +57,45 @@ describe('pass conventions', () => {
     expect(r.unhooked).toBe(true); // dispose also gives the material back its own shader
   });
 
+  it('scattering = false releases the blur\'s targets (2 textures); back on, they come back and the frame is as before', async () => {
+    const r = await page.evaluate(async () => {
+      const { THREE, SSS, createRenderer, createComposer, read, dataTexture } = window.lab;
+      const renderer = createRenderer(64, 36);
+      const scene = new THREE.Scene();
+      const checker = dataTexture(8, 8, (x, y) => ((x + y) % 2 ? [1, 1, 1] : [0.05, 0.05, 0.05])); // what the blur softens
+      const material = new THREE.MeshStandardMaterial({ color: 0xffccaa, map: checker });
+      const disc = new THREE.Mesh(new THREE.CircleGeometry(1, 32), material);
+      scene.add(disc, new THREE.AmbientLight(0xffffff, 1));
+      const camera = new THREE.PerspectiveCamera(30, 16 / 9, 0.1, 50);
+      camera.position.z = 5;
+      const sss = new SSS.SubsurfaceScattering({ scene, camera, worldUnitInMm: 10 });
+      sss.makeSubsurface(material, { widthMm: 8 });
+      const composer = createComposer(renderer, { type: THREE.FloatType });
+      composer.addPass(sss);
+      const frame = async () => { composer.render(); return { textures: renderer.info.memory.textures, pixels: await read(renderer, composer.readBuffer) }; };
+      const on = await frame();
+      sss.scattering = false;
+      const off = await frame();
+      sss.scattering = true;
+      const again = await frame();
+      const blurred = sss.plan.blur;
+      sss.dispose();
+      composer.dispose();
+      renderer.dispose();
+      checker.dispose();
+      let most = 0;
+      for (let i = 0; i < on.pixels.length; i++) most = Math.max(most, Math.abs(on.pixels[i] - again.pixels[i]));
+      let changed = 0;
+      for (let i = 0; i < on.pixels.length; i++) changed = Math.max(changed, Math.abs(on.pixels[i] - off.pixels[i]));
+      return { textures: [on.textures, off.textures, again.textures], most, changed, blurred };
+    });
+    expect(r.blurred).toBe(true);
+    expect(r.changed).toBeGreaterThan(1e-3); // the blur showed
+    expect(r.textures[1]).toBe(r.textures[0] - 2); // the horizontal pass's and the scattered light's
+    expect(r.textures[2]).toBe(r.textures[0]);
+    expect(r.most).toBe(0);
+  });
+
   it('restores the renderer state it touches and works before OutputPass', async () => {
     const r = await page.evaluate(async () => {
       const { THREE, SSS, createRenderer, OutputPass, EffectComposer } = window.lab;

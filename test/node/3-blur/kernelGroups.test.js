@@ -6,7 +6,8 @@ import { describe, it, expect } from 'vitest';
 import { DEON, GAUSSIANS, transferOf, erfc } from '../../oracle/closedForms.js';
 import { profiles } from '../../../src/profiles/presets.js';
 import { gaussianSumOf, nonNegativeLeastSquares } from '../../../src/profiles/gaussianFit.js';
-import { ISOTROPY_ERROR, MAX_KERNEL_GROUPS, autoKernelGroups, checkKernelGroups, footprintGroupFractions, groupEnergies, kernelGroups } from '../../../src/3-blur/kernelGroups.js';
+import { ISOTROPY_ERROR, MAX_KERNEL_GROUPS, autoKernelGroups, checkKernelGroups, footprintGroupFractions, groupEnergies, kernelGroups, kernelGroupsAt, possibleGroupCounts } from '../../../src/3-blur/kernelGroups.js';
+import { gaussianSumProfile } from '../../../src/profiles/gaussianSum.js';
 import { KernelGroupTable, splitFractions } from '../../../src/3-blur/KernelGroupTable.js';
 import { GroupFractionTexture } from '../../../src/webgpu/3-blur/GroupFractionTexture.js';
 import { FOOTPRINT_ROWS, footprintRowOf, footprintRowScale, footprintTable } from '../../../src/profiles/footprints.js';
@@ -317,5 +318,27 @@ describe("what the blur reads of a grouping (KernelGroupTable, shaders/3-blur/ke
     expect(groupEnergies(groupings[0]).map((e) => e[1])).toEqual(groupings[0].members[1].map((m) => m.reduce((s2, f, i) => s2 + f * groupings[0].gaussians[i].weights[1], 0)).map((e, _, all) => e / all.reduce((a, b) => a + b, 0)));
     t.dispose();
     expect(t.texture).toBe(null);
+  });
+});
+
+describe('possibleGroupCounts (the warm-up compiles these)', () => {
+  // Every count a frame takes, found by choosing at scales a half octave apart over 0.01..100 px/mm.
+  const taken = (profile, setting) => {
+    const counts = new Set();
+    for (let k = -14; k <= 14; k++) counts.add(kernelGroupsAt(profile, 10 ** (k / 7), setting).count);
+    return [...counts].sort();
+  };
+  const two = gaussianSumProfile('two', [{ varianceMm2: 0.05, weights: [0.5, 0.6, 0.7] }, { varianceMm2: 2, weights: [0.5, 0.4, 0.3] }]);
+  it.each([
+    ['skin', profiles.skin, 'auto'], ['skin', profiles.skin, 3], ['marble', profiles.marble, 'auto'], ['two Gaussians', two, 'auto'], ['two Gaussians', two, 4],
+  ])('%s, kernelGroups %s: every count a frame takes at any scale is listed', (_, profile, setting) => {
+    const listed = possibleGroupCounts([profile], setting);
+    for (const count of taken(profile, setting)) expect(listed).toContain(count);
+  });
+  it("a profile of two Gaussians takes at most 2 ('auto': 1 or 2; 4 asked: 2); the most of several profiles'", () => {
+    expect(possibleGroupCounts([two], 'auto')).toEqual([1, 2]);
+    expect(possibleGroupCounts([two], 4)).toEqual([2]);
+    expect(possibleGroupCounts([two, profiles.skin], 4)).toEqual([4]);
+    expect(possibleGroupCounts([profiles.skin], 'auto')).toEqual([1, 2, 3, 4]);
   });
 });
