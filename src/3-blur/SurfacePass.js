@@ -17,7 +17,7 @@ import { describe } from '../support/rendererSupport.js';
 import { PASS_BOOLEANS, booleanFields } from '../support/booleanFields.js';
 import { isPerspective } from '../support/screenScale.js';
 import { FOLLOW_SURFACE_MODES, MAX_MULTISAMPLING } from '../options.js';
-import { ENERGY_LEFT, MAX_PLANE_SLOPE, MAX_SLOPE, MIN_KERNEL_PIXELS, PLANE_SLOPE_AGREEMENT } from './samplingModel.js';
+import { ENERGY_LEFT, MAX_PLANE_SLOPE, MAX_SLOPE, MIN_KERNEL_PIXELS, PLANE_SLOPE_AGREEMENT, SLOPE_FADE } from './samplingModel.js';
 
 /** samplingModel.js's numbers as the GLSL defines the shaders read. */
 const SAMPLING_DEFINES = Object.freeze({
@@ -25,6 +25,7 @@ const SAMPLING_DEFINES = Object.freeze({
   SSS_MAX_SLOPE: glslFloat(MAX_SLOPE),
   SSS_PLANE_SLOPE_AGREEMENT: glslFloat(PLANE_SLOPE_AGREEMENT),
   SSS_MAX_PLANE_SLOPE: glslFloat(MAX_PLANE_SLOPE),
+  SSS_SLOPE_FADE: glslFloat(SLOPE_FADE),
   SSS_ENERGY_LEFT: glslFloat(ENERGY_LEFT),
   // Several profiles: a texel is on a slot within half the smallest step a resolve makes between
   // two slots (1 / MAX_MULTISAMPLING), so a pixel two profiles share is on neither (surfaceSample.glsl).

@@ -29,6 +29,17 @@ export const PLANE_SLOPE_AGREEMENT = 0.25;
 export const MAX_PLANE_SLOPE = 57;
 
 /**
+ * The slope estimate's three limits (PLANE_SLOPE_AGREEMENT, MAX_PLANE_SLOPE, MAX_SLOPE) each fade
+ * linearly over a band below the limit, from the limit divided by this to the limit, instead of
+ * switching there: at creases (eyelids, nostrils, lips) a neighbour's depth crosses a limit from
+ * one frame to the next under the slightest motion, and a switch there changed the pixel's
+ * foreshortening, and so its whole kernel, in one step: single pixels popped (the dolly of
+ * test/browser/creases.test.js). Nothing beyond a limit counts, as before: a band above it let
+ * the ears' depth edges count as slopes (docs/ARCHITECTURE.md, "Steady at creases").
+ */
+export const SLOPE_FADE = 4;
+
+/**
  * 'footprint' kernels stop once each side has less energy left than this: invisible even at
  * radiance 1e4 in a half-float target (whose step there is about 8).
  */

@@ -36,10 +36,46 @@ import { getProfile } from '../../src/profiles/presets.js';
 import { kernelRadiusMm } from '../../src/profiles/kernel.js';
 
 // The sampling model's numbers (not its code) are shared with the shaders: MIN_KERNEL_PIXELS (pixel
-// skip), MAX_SLOPE (steeper neighbours count as another surface), ENERGY_LEFT ('footprint' stop).
-import { ENERGY_LEFT, MAX_PLANE_SLOPE, MAX_SLOPE, MIN_KERNEL_PIXELS, PLANE_SLOPE_AGREEMENT } from '../../src/3-blur/samplingModel.js';
+// skip), MAX_SLOPE (steeper neighbours count as another surface), PLANE_SLOPE_AGREEMENT and
+// MAX_PLANE_SLOPE (one plane), SLOPE_FADE (the band over which each of those limits fades),
+// ENERGY_LEFT ('footprint' stop).
+import { ENERGY_LEFT, MAX_PLANE_SLOPE, MAX_SLOPE, MIN_KERNEL_PIXELS, PLANE_SLOPE_AGREEMENT, SLOPE_FADE } from '../../src/3-blur/samplingModel.js';
 
 const FOLLOW_SURFACE_MODES = ['drop', 'lerp', 'off'];
+
+/**
+ * The sampling model's item 3 (shaders/common/surfaceSlope.glsl's rule): the depth change per pixel
+ * along axis `axisIndex` at pixel (i, j), from its two neighbours: one plane (however steep) by how
+ * well their one-sided slopes agree, else the one-sided slopes of the neighbours not steeper than
+ * MAX_SLOPE; each limit fades over its band (fadeBelow). A neighbour counts where it is in the image
+ * and on the surface (widthWorld > 0).
+ * @param {{ width: number, height: number, depth: ArrayLike<number>, widthWorld: ArrayLike<number> }} image
+ * @param {number} pixelWorld world units one pixel spans across the view at the pixel's depth
+ */
+export function surfaceSlopeOracle({ width, height, depth, widthWorld }, i, j, axisIndex, pixelWorld) {
+  const centre = j * width + i;
+  const side = (k) => {
+    const [ii, jj] = axisIndex === 0 ? [Math.min(Math.max(i + k, 0), width - 1), j] : [i, Math.min(Math.max(j + k, 0), height - 1)];
+    const t = jj * width + ii;
+    return { slope: k < 0 ? depth[centre] - depth[t] : depth[t] - depth[centre], on: t !== centre && widthWorld[t] > 0 };
+  };
+  const [before, after] = [side(-1), side(1)];
+  const steeper = Math.max(Math.abs(before.slope), Math.abs(after.slope));
+  const plane = before.on && after.on ? fadeBelow(Math.abs(after.slope - before.slope), PLANE_SLOPE_AGREEMENT * steeper) * fadeBelow(steeper, MAX_PLANE_SLOPE * pixelWorld) : 0;
+  const weight = (n) => (n.on ? fadeBelow(Math.abs(n.slope), MAX_SLOPE * pixelWorld) : 0);
+  const [weightBefore, weightAfter] = [weight(before), weight(after)];
+  // Their mean where both count; below a sum of 1 their weighted sum, which fades to 0 with them.
+  const oneSided = (weightBefore * before.slope + weightAfter * after.slope) / Math.max(weightBefore + weightAfter, 1);
+  return plane * 0.5 * (before.slope + after.slope) + (1 - plane) * oneSided;
+}
+
+/** The slope rule's fade (item 3): 1 up to limit / SLOPE_FADE, 0 from the limit, linear between; a limit of 0 is 1 at 0 only. */
+function fadeBelow(value, limit) {
+  const lo = limit / SLOPE_FADE;
+  const hi = limit;
+  if (hi <= lo) return value > 0 ? 0 : 1;
+  return Math.min(Math.max((hi - value) / (hi - lo), 0), 1);
+}
 
 const newVec2 = () => new Float64Array(2); // gl-matrix's create() would give float32 storage
 const newVec3 = () => new Float64Array(3);
@@ -162,24 +198,7 @@ function blurPass(args, src, axisIndex) {
       let slope = 0;
       if (foreshorten && wc !== 0) {
         const pixelWorld = (2 * zc) / (P * resolution);
-        const at = (k) => {
-          const [ii, jj] = axisIndex === 0 ? [Math.min(Math.max(i + k, 0), width - 1), j] : [i, Math.min(Math.max(j + k, 0), height - 1)];
-          return { idx: jj * width + ii, moved: axisIndex === 0 ? ii !== i : jj !== j };
-        };
-        const before = at(-1);
-        const after = at(1);
-        const slopeBefore = zc - depth[before.idx];
-        const slopeAfter = depth[after.idx] - zc;
-        const onBefore = before.moved && widthWorld[before.idx] > 0;
-        const onAfter = after.moved && widthWorld[after.idx] > 0;
-        const steeper = Math.max(Math.abs(slopeBefore), Math.abs(slopeAfter));
-        if (onBefore && onAfter && Math.abs(slopeAfter - slopeBefore) <= PLANE_SLOPE_AGREEMENT * steeper && steeper <= MAX_PLANE_SLOPE * pixelWorld) {
-          slope = 0.5 * (slopeBefore + slopeAfter); // one plane, however steep
-        } else {
-          const useBefore = onBefore && Math.abs(slopeBefore) <= MAX_SLOPE * pixelWorld;
-          const useAfter = onAfter && Math.abs(slopeAfter) <= MAX_SLOPE * pixelWorld;
-          slope = useBefore && useAfter ? 0.5 * (slopeBefore + slopeAfter) : useBefore ? slopeBefore : useAfter ? slopeAfter : 0;
-        }
+        slope = surfaceSlopeOracle({ width, height, depth, widthWorld }, i, j, axisIndex, pixelWorld);
         const tilt = slope / pixelWorld;
         stepPx /= Math.sqrt(1 + tilt * tilt);
       }

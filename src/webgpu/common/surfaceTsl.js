@@ -7,7 +7,7 @@
 import {
   abs, all, bitAnd, clamp, float, floatBitsToUint, int, ivec2, max, min, mix, notEqual, select, sqrt, texture as textureNode, textureLoad, uvec3, vec2, vec3, vec4,
 } from 'three/tsl';
-import { MAX_PLANE_SLOPE, MAX_SLOPE, PLANE_SLOPE_AGREEMENT } from '../../3-blur/samplingModel.js';
+import { MAX_PLANE_SLOPE, MAX_SLOPE, PLANE_SLOPE_AGREEMENT, SLOPE_FADE } from '../../3-blur/samplingModel.js';
 
 const EXPONENT = 0x7f800000;
 
@@ -93,7 +93,17 @@ export function surfaceSample({ diffuse, surface, coverage, carriesDepth = false
 }
 
 /**
- * surfaceSlope.glsl: the surface's depth slope at a pixel along the axis, world units per pixel.
+ * surfaceSlope.glsl's sssFadeBelow: 1 up to limit / SLOPE_FADE, 0 from the limit, linear between
+ * (a limit of 0: 1 at 0 only).
+ */
+export function fadeBelow(value, limit) {
+  const band = limit.mul(1 - 1 / SLOPE_FADE);
+  return select(band.greaterThan(0), clamp(limit.sub(value).div(band), 0, 1), select(value.greaterThan(0), float(0), float(1)));
+}
+
+/**
+ * surfaceSlope.glsl: the surface's depth slope at a pixel along the axis, world units per pixel;
+ * each of its limits fades over a band (fadeBelow).
  * @param {ReturnType<typeof surfaceSample>} sample
  * @param {{ resolution }} u
  * @param {0|1} axis
@@ -107,16 +117,17 @@ export function surfaceSlope(sample, u, axis) {
     const surfaceAfter = sample.surfaceAt(withAlong(pixel, axis, afterAt));
     const slopeBefore = surface.x.sub(surfaceBefore.x).toVar();
     const slopeAfter = surfaceAfter.x.sub(surface.x).toVar();
-    const onBefore = surfaceBefore.y.greaterThan(0).and(beforeAt.notEqual(at));
-    const onAfter = surfaceAfter.y.greaterThan(0).and(afterAt.notEqual(at));
-    const steeper = max(abs(slopeBefore), abs(slopeAfter));
-    const plane = onBefore.and(onAfter)
-      .and(abs(slopeAfter.sub(slopeBefore)).lessThanEqual(steeper.mul(PLANE_SLOPE_AGREEMENT)))
-      .and(steeper.lessThanEqual(pixelWorld.mul(MAX_PLANE_SLOPE)));
-    const useBefore = onBefore.and(abs(slopeBefore).lessThanEqual(pixelWorld.mul(MAX_SLOPE)));
-    const useAfter = onAfter.and(abs(slopeAfter).lessThanEqual(pixelWorld.mul(MAX_SLOPE)));
-    const both = slopeBefore.add(slopeAfter).mul(0.5);
-    return select(plane.or(useBefore.and(useAfter)), both, select(useBefore, slopeBefore, select(useAfter, slopeAfter, float(0))));
+    const onBefore = select(surfaceBefore.y.greaterThan(0).and(beforeAt.notEqual(at)), float(1), float(0));
+    const onAfter = select(surfaceAfter.y.greaterThan(0).and(afterAt.notEqual(at)), float(1), float(0));
+    const steeper = max(abs(slopeBefore), abs(slopeAfter)).toVar();
+    const plane = onBefore.mul(onAfter)
+      .mul(fadeBelow(abs(slopeAfter.sub(slopeBefore)), steeper.mul(PLANE_SLOPE_AGREEMENT)))
+      .mul(fadeBelow(steeper, pixelWorld.mul(MAX_PLANE_SLOPE)));
+    const weightBefore = onBefore.mul(fadeBelow(abs(slopeBefore), pixelWorld.mul(MAX_SLOPE))).toVar();
+    const weightAfter = onAfter.mul(fadeBelow(abs(slopeAfter), pixelWorld.mul(MAX_SLOPE))).toVar();
+    // Their mean where both count; below a sum of 1 their weighted sum, which fades to 0 with them.
+    const oneSided = weightBefore.mul(slopeBefore).add(weightAfter.mul(slopeAfter)).div(max(weightBefore.add(weightAfter), 1));
+    return mix(oneSided, slopeBefore.add(slopeAfter).mul(0.5), plane);
   };
 }
 

@@ -4,9 +4,9 @@
 import { describe, it, expect, beforeAll, afterAll } from 'vitest';
 import { openPage, evaluateFloats } from '../../harness/page.js';
 import { rgb, channel } from '../../harness/images.js';
-import { denseConvolutionOracle } from '../../oracle/convolution.js';
+import { denseConvolutionOracle, surfaceSlopeOracle } from '../../oracle/convolution.js';
 import { getProfile } from '../../../src/profiles/presets.js';
-import { MAX_PLANE_SLOPE, MAX_SLOPE, PLANE_SLOPE_AGREEMENT } from '../../../src/3-blur/samplingModel.js';
+import { MAX_SLOPE } from '../../../src/3-blur/samplingModel.js';
 
 const W = 96;
 const H = 54;
@@ -91,25 +91,6 @@ describe('DenseSubsurfacePass (no grazing-angle correction) matches the float64 
   });
 });
 
-/** shaders/common/surfaceSlope.glsl's rule: depth change per pixel along `axis` from the neighbours. */
-function surfaceSlope({ depth, widthWorld }, i, j, axis, pixelWorld) {
-  const index = (k) => (axis === 0 ? j * W + Math.min(Math.max(i + k, 0), W - 1) : Math.min(Math.max(j + k, 0), H - 1) * W + i);
-  const centre = j * W + i;
-  const side = (k) => {
-    const t = index(k);
-    const slope = k < 0 ? depth[centre] - depth[t] : depth[t] - depth[centre];
-    return { slope, on: t !== centre && widthWorld[t] > 0 };
-  };
-  const [before, after] = [side(-1), side(1)];
-  const steeper = Math.max(Math.abs(before.slope), Math.abs(after.slope));
-  if (before.on && after.on && Math.abs(after.slope - before.slope) <= PLANE_SLOPE_AGREEMENT * steeper && steeper <= MAX_PLANE_SLOPE * pixelWorld) {
-    return (before.slope + after.slope) / 2; // one plane
-  }
-  const use = (n) => n.on && Math.abs(n.slope) <= MAX_SLOPE * pixelWorld;
-  if (use(before) && use(after)) return (before.slope + after.slope) / 2;
-  return use(before) ? before.slope : use(after) ? after.slope : 0;
-}
-
 describe('DenseSubsurfacePass with the grazing-angle correction (the bench\'s setting)', () => {
   // 84°: past the 76° of MAX_SLOPE, where the slope rule used to take the plane for a depth edge.
   for (const tiltDeg of [75, 84]) it(`on a plane tilted ${tiltDeg}°, each pixel matches the oracle run with its foreshortened scales and plane-relative depths`, async () => {
@@ -129,7 +110,7 @@ describe('DenseSubsurfacePass with the grazing-angle correction (the bench\'s se
         // The pixel's scales and slopes as the shader finds them.
         const zc = image.depth[c];
         const pixelWorld = [(2 * zc) / (P0 * W), (2 * zc) / (P5 * H)];
-        const slope = [0, 1].map((axis) => surfaceSlope(image, i, j, axis, pixelWorld[axis]));
+        const slope = [0, 1].map((axis) => surfaceSlopeOracle({ width: W, height: H, ...image }, i, j, axis, pixelWorld[axis]));
         const cos = slope.map((s, axis) => 1 / Math.sqrt(1 + (s / pixelWorld[axis]) ** 2));
         smallestCos = Math.min(smallestCos, ...cos);
         if (slope.some((sl, axis) => Math.abs(sl) > MAX_SLOPE * pixelWorld[axis])) steeperThanMaxSlope++;
